@@ -1,0 +1,57 @@
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "app/args.hpp"
+#include "app/commands.hpp"
+#include "core/context.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(const std::vector<std::string>&);
+  const char* summary;
+};
+
+const Command kCommands[] = {
+    {"render", pbr::runRender, "render a scene headlessly, print per-pass timings, write PNG/EXR/PFM captures"},
+};
+
+void printUsage(FILE* out) {
+  std::fprintf(out, "usage: pbr <command> [options]\n\nA clustered deferred renderer (OpenGL 4.5, headless EGL).\n\ncommands:\n");
+  for (const Command& c : kCommands) std::fprintf(out, "  %-10s %s\n", c.name, c.summary);
+  std::fprintf(out, "\n'pbr <command> --help' describes a command's options.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> all(argv + 1, argv + argc);
+  if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
+    printUsage(all.empty() ? stderr : stdout);
+    return all.empty() ? 2 : 0;
+  }
+  for (const Command& c : kCommands) {
+    if (all[0] != c.name) continue;
+    const std::vector<std::string> rest(all.begin() + 1, all.end());
+    try {
+      return c.run(rest);
+    } catch (const pbr::UsageError& e) {
+      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, e.what(), c.name);
+      return 2;
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, e.what(), c.name);
+      return 2;
+    } catch (const pbr::ContextError& e) {
+      std::fprintf(stderr, "pbr %s: no OpenGL 4.5 context: %s\n", c.name, e.what());
+      return 3;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pbr %s: %s\n", c.name, e.what());
+      return 1;
+    }
+  }
+  std::fprintf(stderr, "pbr: unknown command '%s' (see 'pbr --help')\n", all[0].c_str());
+  return 2;
+}

@@ -1,0 +1,110 @@
+#include <cstdio>
+#include <iostream>
+
+#include "app/args.hpp"
+#include "app/commands.hpp"
+#include "app/frame_stats.hpp"
+#include "app/renderer.hpp"
+#include "core/builtin_scenes.hpp"
+#include "core/context.hpp"
+
+namespace pbr {
+
+namespace {
+
+const std::vector<OptionSpec>& renderOptions() {
+  static const std::vector<OptionSpec> specs = {
+      {"--scene", "NAME", "scene to render (built-in: default)"},
+      {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
+      {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated) or hammon (fast form)"},
+      {"--lights", "N", "number of random point lights (default 256)"},
+      {"--size", "WxH", "frame size in pixels (default 1280x720)"},
+      {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
+      {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
+      {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
+      {"--frames", "K", "render K frames and report median pass times over frames 2..K (default 1)"},
+      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
+      {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+  };
+  return specs;
+}
+
+void printTimings(const std::vector<FrameTiming>& frames, TimingMode mode) {
+  // The first frame pays for shader compilation and first-touch allocations: leave it out when there are others.
+  std::vector<FrameTiming> warm(frames.size() > 1 ? frames.begin() + 1 : frames.begin(), frames.end());
+  std::printf("timing: %s, median of %zu frame%s%s\n", describe(mode), warm.size(), warm.size() == 1 ? "" : "s",
+              frames.size() > 1 ? " after 1 warm-up" : "");
+  for (const PassTiming& p : medianPassTimes(warm)) std::printf("  %-10s %9.3f ms\n", p.name.c_str(), p.ms);
+  std::vector<double> gpu, cpu;
+  for (const FrameTiming& f : warm) {
+    gpu.push_back(f.gpuMs);
+    cpu.push_back(f.cpuMs);
+  }
+  std::printf("  %-10s %9.3f ms\n", "frame", median(gpu));
+  std::printf("  %-10s %9.3f ms (CPU clock)\n", "wall", median(cpu));
+}
+
+}  // namespace
+
+int runRender(const std::vector<std::string>& argv) {
+  const auto& specs = renderOptions();
+  Args args(specs, argv);
+  if (args.helpRequested()) {
+    std::cout << Args::helpText("pbr render [options]",
+                                "Renders a scene headlessly (EGL) through G-buffer, deferred lighting and post, "
+                                "prints per-pass timings and writes captures.",
+                                specs);
+    return 0;
+  }
+  const std::string sceneName = args.get("--scene", "default");
+  const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
+  const Visibility visibility = parseVisibility(args.get("--visibility", "exact"));
+  const int lightCount = args.getInt("--lights", 256, 0, 1 << 20);
+  const glm::ivec2 size = args.getSize("--size", {1280, 720});
+  const int frames = args.getInt("--frames", 1, 1, 100000);
+  const std::string outPng = args.get("--out", "");
+  const std::string outHdr = args.get("--hdr", "");
+  const std::string timing = args.get("--timing", "auto");
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  chooseTimingMode(timing, "");  // reject a bad mode before making a context
+
+  Scene scene = makeBuiltinScene(sceneName, lightCount);
+  const float exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  validateScene(scene, sceneName);
+
+  auto context = createHeadlessContext(platform);
+  const ContextInfo& info = context->info();
+  std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
+  std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling none\n", scene.name.c_str(), size.x, size.y,
+              scene.lights.size(), toString(model),
+              model == ShadingModel::Pbr ? (std::string(" (visibility ") + toString(visibility) + ")").c_str() : "");
+
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, size.x, size.y);
+  Profiler profiler(chooseTimingMode(timing, info.renderer));
+  const FrameOptions options{model, visibility, exposure};
+  ImageRgba8 ldr;
+  ImageRgbaF hdr;
+  for (int i = 0; i < frames; ++i) {
+    FrameCapture capture;
+    if (i == frames - 1) {
+      capture.ldr = outPng.empty() ? nullptr : &ldr;
+      capture.hdr = outHdr.empty() ? nullptr : &hdr;
+    }
+    renderer.renderFrame(options, profiler, capture);
+  }
+  printTimings(profiler.takeResults(true), profiler.mode());
+  checkGlError("rendering");
+
+  if (!outPng.empty()) {
+    writePng(outPng, ldr);
+    std::printf("wrote %s\n", outPng.c_str());
+  }
+  if (!outHdr.empty()) {
+    writeHdr(outHdr, hdr);
+    std::printf("wrote %s\n", outHdr.c_str());
+  }
+  return 0;
+}
+
+}  // namespace pbr

@@ -1,0 +1,13 @@
+#pragma once
+// Binding points shared by C++ and GLSL; shaders/common/bindings.glsl mirrors these numbers.
+namespace pbr::binding {
+constexpr unsigned kFrameUbo = 0;
+constexpr unsigned kObjectUbo = 1;
+constexpr unsigned kLightingUbo = 2;
+constexpr unsigned kPostUbo = 3;
+constexpr unsigned kLightSsbo = 0;
+constexpr unsigned kClusterSsbo = 1;
+constexpr unsigned kLightIndexSsbo = 2;
+constexpr unsigned kStatsSsbo = 3;
+constexpr unsigned kClusterBoundsSsbo = 4;
+}  // namespace pbr::binding

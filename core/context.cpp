@@ -1,0 +1,63 @@
+#include "core/context.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/gl.hpp"
+
+namespace pbr {
+
+EglPlatform parseEglPlatform(const std::string& name) {
+  if (name == "auto") return EglPlatform::Auto;
+  if (name == "surfaceless") return EglPlatform::Surfaceless;
+  if (name == "device") return EglPlatform::Device;
+  throw std::invalid_argument("unknown EGL platform '" + name + "' (expected auto, surfaceless or device)");
+}
+
+const char* toString(EglPlatform platform) {
+  switch (platform) {
+    case EglPlatform::Auto: return "auto";
+    case EglPlatform::Surfaceless: return "surfaceless";
+    case EglPlatform::Device: return "device";
+  }
+  return "?";
+}
+
+bool glDebugRequested() {
+  const char* env = std::getenv("PBR_GL_DEBUG");
+  if (env) return std::strcmp(env, "0") != 0;
+#ifdef NDEBUG
+  return false;
+#else
+  return true;
+#endif
+}
+
+static void GLAD_API_PTR forwardDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
+                                         const GLchar* message, const void*) {
+  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+  const char* kind = type == GL_DEBUG_TYPE_ERROR ? "error" : type == GL_DEBUG_TYPE_PERFORMANCE ? "performance" : "message";
+  std::fprintf(stderr, "gl %s: %s\n", kind, message);
+}
+
+void Context::initializeGl(const std::string& platform, void* (*getProc)(const char*), bool debug) {
+  int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(getProc));
+  if (version == 0) throw ContextError("could not load OpenGL entry points");
+  if (GLAD_VERSION_MAJOR(version) < 4 || (GLAD_VERSION_MAJOR(version) == 4 && GLAD_VERSION_MINOR(version) < 5)) {
+    throw ContextError("OpenGL 4.5 core is required, the context offers " + std::to_string(GLAD_VERSION_MAJOR(version)) +
+                       "." + std::to_string(GLAD_VERSION_MINOR(version)));
+  }
+  auto str = [](GLenum name) {
+    const GLubyte* s = glGetString(name);
+    return s ? std::string(reinterpret_cast<const char*>(s)) : std::string();
+  };
+  info_ = {platform, str(GL_RENDERER), str(GL_VERSION), str(GL_VENDOR)};
+  if (debug) {
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(forwardDebugMessage, nullptr);
+  }
+}
+
+}  // namespace pbr

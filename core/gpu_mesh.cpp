@@ -1,0 +1,31 @@
+#include "core/gpu_mesh.hpp"
+
+#include <cstddef>
+
+namespace pbr {
+
+GpuMesh::GpuMesh(const MeshData& data)
+    : vertices_(data.vertices.size() * sizeof(Vertex), data.vertices.data(), 0),
+      indices_(data.indices.size() * sizeof(uint32_t), data.indices.data(), 0),
+      indexCount_(static_cast<GLsizei>(data.indices.size())) {
+  const GLuint vao = vao_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  const struct {
+    GLuint location;
+    GLint components;
+    size_t offset;
+  } attributes[] = {{0, 3, offsetof(Vertex, position)}, {1, 3, offsetof(Vertex, normal)}, {2, 2, offsetof(Vertex, uv)}};
+  for (const auto& a : attributes) {
+    glEnableVertexArrayAttrib(vao, a.location);
+    glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+    glVertexArrayAttribBinding(vao, a.location, 0);
+  }
+}
+
+void GpuMesh::draw() const {
+  glBindVertexArray(vao_.id());
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace pbr

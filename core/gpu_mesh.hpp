@@ -1,0 +1,20 @@
+#pragma once
+#include "core/gl_objects.hpp"
+#include "core/mesh.hpp"
+
+namespace pbr {
+
+// A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv) and 32-bit indices.
+class GpuMesh {
+ public:
+  explicit GpuMesh(const MeshData& data);
+  void draw() const;
+
+ private:
+  Buffer vertices_;
+  Buffer indices_;
+  VertexArray vao_;
+  GLsizei indexCount_;
+};
+
+}  // namespace pbr

@@ -1,0 +1,60 @@
+#include "core/mesh.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace pbr {
+
+MeshData makePlaneMesh() {
+  MeshData m;
+  const glm::vec3 n(0, 1, 0);
+  m.vertices = {{{-0.5f, 0, 0.5f}, n, {0, 0}},
+                {{0.5f, 0, 0.5f}, n, {1, 0}},
+                {{0.5f, 0, -0.5f}, n, {1, 1}},
+                {{-0.5f, 0, -0.5f}, n, {0, 1}}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+MeshData makeSphereMesh(int segments, int rings) {
+  MeshData m;
+  const float pi = 3.14159265358979f;
+  for (int r = 0; r <= rings; ++r) {
+    const float v = static_cast<float>(r) / rings;
+    const float theta = v * pi;
+    for (int s = 0; s <= segments; ++s) {
+      const float u = static_cast<float>(s) / segments;
+      const float phi = u * 2.0f * pi;
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      m.vertices.push_back({0.5f * n, n, {u, 1.0f - v}});
+    }
+  }
+  const uint32_t stride = static_cast<uint32_t>(segments + 1);
+  for (uint32_t r = 0; r < static_cast<uint32_t>(rings); ++r) {
+    for (uint32_t s = 0; s < static_cast<uint32_t>(segments); ++s) {
+      const uint32_t a = r * stride + s, b = a + stride;
+      m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+    }
+  }
+  return m;
+}
+
+MeshData makeBoxMesh() {
+  MeshData m;
+  const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const glm::vec3& n : normals) {
+    // Two tangents whose cross product is n, so the quad winds counter-clockwise seen from outside.
+    const glm::vec3 t = std::abs(n.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 b = glm::cross(n, t);
+    const uint32_t base = static_cast<uint32_t>(m.vertices.size());
+    const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const glm::vec2& c : corners) {
+      m.vertices.push_back({0.5f * (n + c.x * b + c.y * t), n, (c + 1.0f) * 0.5f});
+    }
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  return m;
+}
+
+}  // namespace pbr

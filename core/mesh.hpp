@@ -1,0 +1,26 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace pbr {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+
+struct MeshData {
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;  // triangle list, counter-clockwise front faces
+};
+
+// Each shape fits the unit cube centred at the origin.
+MeshData makePlaneMesh();                      // the square y = 0, x and z in [-0.5, 0.5], normal +Y
+MeshData makeSphereMesh(int segments = 64, int rings = 32);  // radius 0.5
+MeshData makeBoxMesh();                        // the unit cube, flat normals per face
+
+}  // namespace pbr

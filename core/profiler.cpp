@@ -1,0 +1,112 @@
+#include "core/profiler.hpp"
+
+#include <stdexcept>
+
+namespace pbr {
+
+bool isSoftwareRenderer(const std::string& r) {
+  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
+         r.find("SWR") != std::string::npos || r.find("Software Rasterizer") != std::string::npos;
+}
+
+TimingMode chooseTimingMode(const std::string& requested, const std::string& glRenderer) {
+  if (requested == "gpu") return TimingMode::GpuQueries;
+  if (requested == "serial") return TimingMode::Serializing;
+  if (requested == "auto") return isSoftwareRenderer(glRenderer) ? TimingMode::Serializing : TimingMode::GpuQueries;
+  throw std::invalid_argument("unknown timing mode '" + requested + "' (expected auto, gpu or serial)");
+}
+
+const char* describe(TimingMode mode) {
+  return mode == TimingMode::GpuQueries ? "gpu timer queries" : "serializing (glFinish + CPU clock)";
+}
+
+double FrameTiming::pass(const std::string& name) const {
+  double total = 0.0;
+  for (const PassTiming& p : passes) {
+    if (p.name == name) total += p.ms;
+  }
+  return total;
+}
+
+void Profiler::beginFrame() {
+  current_ = Frame{};
+  current_.timing.frame = frameCounter_++;
+  if (!spareQueries_.empty()) {
+    current_.queries = std::move(spareQueries_.back());
+    spareQueries_.pop_back();
+  }
+  frameStart_ = Clock::now();
+}
+
+Query& Profiler::nextQuery() {
+  if (current_.used == current_.queries.size()) current_.queries.emplace_back();
+  return current_.queries[current_.used++];
+}
+
+void Profiler::beginPass(const char* name) {
+  current_.timing.passes.push_back({name, 0.0});
+  if (mode_ == TimingMode::GpuQueries) {
+    glQueryCounter(nextQuery().id(), GL_TIMESTAMP);
+  } else {
+    glFinish();
+    current_.cpuStamps.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart_).count());
+  }
+}
+
+void Profiler::endPass() {
+  if (mode_ == TimingMode::GpuQueries) {
+    glQueryCounter(nextQuery().id(), GL_TIMESTAMP);
+  } else {
+    glFinish();
+    current_.cpuStamps.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart_).count());
+  }
+}
+
+void Profiler::endFrame() {
+  current_.timing.cpuMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart_).count();
+  inFlight_.push_back(std::move(current_));
+  current_ = Frame{};
+  drain(false);
+}
+
+void Profiler::drain(bool wait) {
+  while (!inFlight_.empty() && resolve(inFlight_.front(), wait)) {
+    done_.push_back(std::move(inFlight_.front().timing));
+    spareQueries_.push_back(std::move(inFlight_.front().queries));
+    inFlight_.pop_front();
+  }
+}
+
+bool Profiler::resolve(Frame& frame, bool wait) {
+  std::vector<double> stamps;
+  if (mode_ == TimingMode::Serializing) {
+    stamps = frame.cpuStamps;
+  } else {
+    if (frame.used > 0 && !wait) {
+      GLint available = GL_FALSE;
+      glGetQueryObjectiv(frame.queries[frame.used - 1].id(), GL_QUERY_RESULT_AVAILABLE, &available);
+      if (!available) return false;
+    }
+    for (size_t i = 0; i < frame.used; ++i) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(frame.queries[i].id(), GL_QUERY_RESULT, &ns);
+      stamps.push_back(static_cast<double>(ns) * 1e-6);
+    }
+  }
+  FrameTiming& t = frame.timing;
+  for (size_t p = 0; p < t.passes.size(); ++p) {
+    const double ms = stamps[2 * p + 1] - stamps[2 * p];
+    t.passes[p].ms = ms > 0.0 ? ms : 0.0;
+  }
+  t.gpuMs = stamps.empty() ? 0.0 : stamps.back() - stamps.front();
+  return true;
+}
+
+std::vector<FrameTiming> Profiler::takeResults(bool wait) {
+  drain(wait);
+  std::vector<FrameTiming> out;
+  out.swap(done_);
+  return out;
+}
+
+}  // namespace pbr

@@ -1,0 +1,81 @@
+#pragma once
+#include <chrono>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "core/gl_objects.hpp"
+
+namespace pbr {
+
+// GpuQueries: GL_TIMESTAMP queries around each pass, read back frames later without stalling.
+// Serializing: glFinish before and after each pass and a monotonic CPU clock. Software rasterizers (llvmpipe)
+// report near-zero timer-query times for draw calls, so passes there are timed this way, and say so.
+enum class TimingMode { GpuQueries, Serializing };
+
+// `requested` is "auto", "gpu" or "serial"; auto serializes on software rasterizers.
+TimingMode chooseTimingMode(const std::string& requested, const std::string& glRenderer);
+bool isSoftwareRenderer(const std::string& glRenderer);
+const char* describe(TimingMode mode);
+
+struct PassTiming {
+  std::string name;
+  double ms = 0.0;
+};
+
+struct FrameTiming {
+  int frame = 0;
+  std::vector<PassTiming> passes;
+  double gpuMs = 0.0;  // first pass start to last pass end
+  double cpuMs = 0.0;  // beginFrame to endFrame on the CPU clock
+  double pass(const std::string& name) const;
+};
+
+class Profiler {
+ public:
+  explicit Profiler(TimingMode mode) : mode_(mode) {}
+  TimingMode mode() const { return mode_; }
+
+  void beginFrame();
+  void beginPass(const char* name);
+  void endPass();
+  void endFrame();
+
+  // Frames whose results are in, oldest first. With wait = false it never blocks on an unfinished query.
+  std::vector<FrameTiming> takeResults(bool wait);
+  size_t framesInFlight() const { return inFlight_.size(); }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Frame {
+    FrameTiming timing;
+    std::vector<Query> queries;  // begin/end timestamp per pass
+    std::vector<double> cpuStamps;
+    size_t used = 0;
+  };
+  Query& nextQuery();
+  bool resolve(Frame& frame, bool wait);
+  void drain(bool wait);
+
+  TimingMode mode_;
+  int frameCounter_ = 0;
+  Frame current_;
+  Clock::time_point frameStart_;
+  std::deque<Frame> inFlight_;
+  std::vector<std::vector<Query>> spareQueries_;
+  std::vector<FrameTiming> done_;
+};
+
+// Times one pass for the lifetime of the object.
+class ScopedPass {
+ public:
+  ScopedPass(Profiler& profiler, const char* name) : profiler_(profiler) { profiler_.beginPass(name); }
+  ~ScopedPass() { profiler_.endPass(); }
+  ScopedPass(const ScopedPass&) = delete;
+  ScopedPass& operator=(const ScopedPass&) = delete;
+
+ private:
+  Profiler& profiler_;
+};
+
+}  // namespace pbr

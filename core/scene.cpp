@@ -1,0 +1,89 @@
+#include "core/scene.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace pbr {
+
+SceneObject& Scene::addShape(Shape shape, const glm::mat4& transform, const Material& material) {
+  int mesh = -1;
+  for (const SceneObject& o : objects) {
+    if (o.shape == shape) mesh = o.mesh;
+  }
+  if (mesh < 0) {
+    meshes.push_back(shape == Shape::Plane ? makePlaneMesh() : shape == Shape::Sphere ? makeSphereMesh() : makeBoxMesh());
+    mesh = static_cast<int>(meshes.size()) - 1;
+  }
+  objects.push_back({shape, mesh, transform, material});
+  return objects.back();
+}
+
+namespace {
+
+class Checker {
+ public:
+  explicit Checker(const std::string& source) : source_(source) {}
+
+  void finite(const std::string& field, float v) const {
+    if (!std::isfinite(v)) fail(field, "must be a finite number", v);
+  }
+  void finite(const std::string& field, const glm::vec3& v) const {
+    for (int i = 0; i < 3; ++i) finite(field + "[" + std::to_string(i) + "]", v[i]);
+  }
+  void atLeast(const std::string& field, float v, float lo) const {
+    finite(field, v);
+    if (v < lo) fail(field, "must be >= " + number(lo), v);
+  }
+  void inRange(const std::string& field, float v, float lo, float hi) const {
+    finite(field, v);
+    if (v < lo || v > hi) fail(field, "must be in [" + number(lo) + ", " + number(hi) + "]", v);
+  }
+  void color(const std::string& field, const glm::vec3& v) const {
+    for (int i = 0; i < 3; ++i) atLeast(field + "[" + std::to_string(i) + "]", v[i], 0.0f);
+  }
+  [[noreturn]] void fail(const std::string& field, const std::string& what, float got) const {
+    throw SceneError(source_ + ": " + field + ": " + what + " (got " + number(got) + ")");
+  }
+
+ private:
+  static std::string number(float v) {
+    std::ostringstream ss;
+    ss << v;
+    return ss.str();
+  }
+  std::string source_;
+};
+
+}  // namespace
+
+void validateScene(const Scene& scene, const std::string& source) {
+  const Checker c(source);
+  const Camera& cam = scene.camera;
+  c.finite("camera.position", cam.position);
+  c.finite("camera.target", cam.target);
+  c.finite("camera.up", cam.up);
+  c.inRange("camera.fov_y_deg", cam.fovYDeg, 1.0f, 179.0f);
+  c.atLeast("camera.near", cam.nearPlane, 1e-6f);
+  if (!(cam.farPlane > cam.nearPlane)) c.fail("camera.far", "must be greater than camera.near", cam.farPlane);
+  c.atLeast("exposure", scene.exposure, 0.0f);
+  c.color("ambient", scene.ambient);
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const std::string base = "objects[" + std::to_string(i) + "]";
+    const SceneObject& o = scene.objects[i];
+    if (o.mesh < 0 || o.mesh >= static_cast<int>(scene.meshes.size())) c.fail(base + ".mesh", "no such mesh", float(o.mesh));
+    for (int col = 0; col < 4; ++col) c.finite(base + ".transform", glm::vec3(o.transform[col]));
+    c.color(base + ".material.base_color", o.material.baseColor);
+    c.inRange(base + ".material.roughness", o.material.roughness, 0.0f, 1.0f);
+    c.inRange(base + ".material.metalness", o.material.metalness, 0.0f, 1.0f);
+  }
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const std::string base = "lights[" + std::to_string(i) + "]";
+    const PointLight& l = scene.lights[i];
+    c.finite(base + ".position", l.position);
+    c.atLeast(base + ".radius", l.radius, 0.0f);
+    c.color(base + ".color", l.color);
+    c.atLeast(base + ".luminous_power", l.luminousPower, 0.0f);
+  }
+}
+
+}  // namespace pbr

@@ -1,0 +1,60 @@
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/camera.hpp"
+#include "core/mesh.hpp"
+
+namespace pbr {
+
+// The glTF metal-rough material; Blinn-Phong parameters are derived from it at shading time.
+struct Material {
+  glm::vec3 baseColor{0.8f};  // linear
+  float roughness = 0.5f;     // perceptual roughness in [0,1]
+  float metalness = 0.0f;
+};
+
+// Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.
+enum class Shape { Plane, Sphere, Box, Mesh };
+
+struct SceneObject {
+  Shape shape = Shape::Mesh;
+  int mesh = -1;  // index into Scene::meshes
+  glm::mat4 transform{1.0f};
+  Material material;
+};
+
+struct PointLight {
+  glm::vec3 position{0.0f};
+  float radius = 1.0f;  // influence radius R of the windowed attenuation
+  glm::vec3 color{1.0f};
+  float luminousPower = 100.0f;  // P in lumens; intensity I = P / (4 pi)
+};
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  float exposure = 1.0f;
+  glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model
+  std::vector<MeshData> meshes;
+  std::vector<SceneObject> objects;
+  std::vector<PointLight> lights;
+
+  // Adds the mesh of an analytic shape once and an object that uses it.
+  SceneObject& addShape(Shape shape, const glm::mat4& transform, const Material& material);
+};
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Rejects what must never be rendered (NaN/Inf, negative radius or power, roughness outside [0,1]) with one
+// line naming `source` and the field, e.g. "scene.json: lights[3].radius: must be finite and >= 0 (got -1)".
+void validateScene(const Scene& scene, const std::string& source);
+
+}  // namespace pbr

@@ -1,0 +1,196 @@
+#include "core/shader_library.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <algorithm>
+#include <functional>
+#include <sstream>
+
+namespace pbr {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ShaderError(path.string() + ": cannot open shader file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class Expander {
+ public:
+  Expander(const fs::path& root, ExpandedShader& out) : root_(root), out_(out) {}
+
+  void root(const std::string& displayName, const fs::path& dir, const std::string& text,
+            const ShaderDefines& defines) {
+    std::istringstream in(text);
+    std::string first;
+    std::getline(in, first);
+    if (first.rfind("#version", 0) != 0) throw ShaderError(displayName + ":1: the first line must be #version");
+    out_.text += first + "\n";
+    for (const ShaderDefine& d : defines) out_.text += "#define " + d.name + " " + d.value + "\n";
+    const int index = addFile(displayName);
+    out_.text += "#line 2 " + std::to_string(index) + "\n";
+    body(in, dir, index, 2);
+  }
+
+ private:
+  int addFile(const std::string& name) {
+    out_.files.push_back(name);
+    return static_cast<int>(out_.files.size()) - 1;
+  }
+
+  std::string display(const fs::path& path) const {
+    const fs::path rel = path.lexically_relative(root_);
+    return (root_.filename() / rel).generic_string();
+  }
+
+  void body(std::istream& in, const fs::path& dir, int index, int firstLine) {
+    static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    std::string line;
+    int lineNo = firstLine;
+    for (; std::getline(in, line); ++lineNo) {
+      std::smatch m;
+      if (!std::regex_match(line, m, includeRe)) {
+        out_.text += line + "\n";
+        continue;
+      }
+      fs::path target = (dir / m[1].str()).lexically_normal();
+      if (!fs::exists(target)) target = (root_ / m[1].str()).lexically_normal();
+      if (!fs::exists(target)) {
+        throw ShaderError(out_.files[static_cast<size_t>(index)] + ":" + std::to_string(lineNo) +
+                          ": cannot find included file \"" + m[1].str() + "\"");
+      }
+      const std::string key = fs::weakly_canonical(target).string();
+      if (std::find(stack_.begin(), stack_.end(), key) != stack_.end()) {
+        throw ShaderError(out_.files[static_cast<size_t>(index)] + ":" + std::to_string(lineNo) +
+                          ": \"" + m[1].str() + "\" includes itself");
+      }
+      // A guard per file instead of skipping repeats here: the expander does not evaluate #if, so only the
+      // preprocessor can tell which of two conditional includes of the same file comes first.
+      const std::string guard = "PBR_INCLUDED_" + std::to_string(std::hash<std::string>{}(key));
+      const int child = addFile(display(target));
+      out_.text += "#ifndef " + guard + "\n#define " + guard + "\n#line 1 " + std::to_string(child) + "\n";
+      stack_.push_back(key);
+      std::istringstream childIn(readFile(target));
+      body(childIn, target.parent_path(), child, 1);
+      stack_.pop_back();
+      out_.text += "#endif\n";
+      out_.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+    }
+  }
+
+  fs::path root_;
+  ExpandedShader& out_;
+  std::vector<std::string> stack_;
+};
+
+GLuint compileStage(GLenum stage, const ExpandedShader& src) {
+  GLuint shader = glCreateShader(stage);
+  const char* text = src.text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+    std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
+    glGetShaderInfoLog(shader, len, nullptr, log.data());
+    glDeleteShader(shader);
+    throw ShaderError(remapShaderLog(log.c_str(), src.files));
+  }
+  return shader;
+}
+
+Program link(const std::vector<GLuint>& shaders, const std::string& what) {
+  Program program(glCreateProgram());
+  for (GLuint s : shaders) glAttachShader(program.id(), s);
+  glLinkProgram(program.id());
+  for (GLuint s : shaders) {
+    glDetachShader(program.id(), s);
+    glDeleteShader(s);
+  }
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
+    std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
+    glGetProgramInfoLog(program.id(), len, nullptr, log.data());
+    throw ShaderError(what + ": link failed: " + log.c_str());
+  }
+  return program;
+}
+
+}  // namespace
+
+fs::path ShaderLibrary::defaultRoot() {
+  if (const char* env = std::getenv("PBR_SHADER_DIR"); env && *env) return fs::path(env);
+  return fs::path(PBR_SHADER_DIR);
+}
+
+ShaderLibrary::ShaderLibrary(fs::path root) : root_(fs::absolute(std::move(root)).lexically_normal()) {
+  if (!root_.has_filename()) root_ = root_.parent_path();
+}
+
+ExpandedShader ShaderLibrary::expand(const std::string& file, const ShaderDefines& defines) const {
+  const fs::path path = (root_ / file).lexically_normal();
+  ExpandedShader out;
+  Expander(root_, out).root((root_.filename() / file).generic_string(), path.parent_path(), readFile(path), defines);
+  return out;
+}
+
+ExpandedShader ShaderLibrary::expandSource(const std::string& name, const std::string& text,
+                                           const ShaderDefines& defines) const {
+  ExpandedShader out;
+  Expander(root_, out).root(name, root_, text, defines);
+  return out;
+}
+
+Program ShaderLibrary::compute(const std::string& file, const ShaderDefines& defines) const {
+  return link({compileStage(GL_COMPUTE_SHADER, expand(file, defines))}, file);
+}
+
+Program ShaderLibrary::computeFromSource(const std::string& name, const std::string& text,
+                                         const ShaderDefines& defines) const {
+  return link({compileStage(GL_COMPUTE_SHADER, expandSource(name, text, defines))}, name);
+}
+
+Program ShaderLibrary::graphics(const std::string& vertexFile, const std::string& fragmentFile,
+                                const ShaderDefines& defines) const {
+  GLuint vs = compileStage(GL_VERTEX_SHADER, expand(vertexFile, defines));
+  GLuint fs = 0;
+  try {
+    fs = compileStage(GL_FRAGMENT_SHADER, expand(fragmentFile, defines));
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  return link({vs, fs}, vertexFile + " + " + fragmentFile);
+}
+
+std::string remapShaderLog(const std::string& log, const std::vector<std::string>& files) {
+  static const std::regex mesaRe(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
+  static const std::regex nvidiaRe(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+  std::istringstream in(log);
+  std::string line, result;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (line.empty()) continue;
+    if (std::regex_match(line, m, mesaRe) || std::regex_match(line, m, nvidiaRe)) {
+      const size_t index = std::stoul(m[1].str());
+      const std::string file = index < files.size() ? files[index] : "<source " + m[1].str() + ">";
+      result += file + ":" + m[2].str() + ": " + m[3].str() + "\n";
+    } else {
+      result += line + "\n";
+    }
+  }
+  if (!result.empty() && result.back() == '\n') result.pop_back();
+  return result;
+}
+
+}  // namespace pbr

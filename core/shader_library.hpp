@@ -1,0 +1,54 @@
+#pragma once
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/gl_objects.hpp"
+
+namespace pbr {
+
+struct ShaderDefine {
+  std::string name;
+  std::string value;
+};
+using ShaderDefines = std::vector<ShaderDefine>;
+
+// Compile and link failures, with every log line mapped back to "file:line: message" of the original file.
+class ShaderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One GLSL translation unit after #include resolution: `files[i]` is the file behind `#line n i`.
+struct ExpandedShader {
+  std::string text;
+  std::vector<std::string> files;
+};
+
+// Loads GLSL from a directory tree: resolves `#include "path"` (relative to the including file, then to the
+// root; each file once), injects `#define`s after `#version`, and compiles programs.
+class ShaderLibrary {
+ public:
+  // PBR_SHADER_DIR in the environment, else the source tree's shaders/ folder.
+  static std::filesystem::path defaultRoot();
+
+  explicit ShaderLibrary(std::filesystem::path root = defaultRoot());
+  const std::filesystem::path& root() const { return root_; }
+
+  ExpandedShader expand(const std::string& file, const ShaderDefines& defines = {}) const;
+  ExpandedShader expandSource(const std::string& name, const std::string& text, const ShaderDefines& defines = {}) const;
+
+  Program compute(const std::string& file, const ShaderDefines& defines = {}) const;
+  Program computeFromSource(const std::string& name, const std::string& text, const ShaderDefines& defines = {}) const;
+  Program graphics(const std::string& vertexFile, const std::string& fragmentFile,
+                   const ShaderDefines& defines = {}) const;
+
+ private:
+  std::filesystem::path root_;
+};
+
+// Rewrites a driver's compile log (Mesa "0:12(5): ..." or NVIDIA "0(12) : ...") to "file:line: ...".
+std::string remapShaderLog(const std::string& log, const std::vector<std::string>& files);
+
+}  // namespace pbr

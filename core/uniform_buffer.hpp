@@ -1,0 +1,24 @@
+#pragma once
+#include <type_traits>
+
+#include "core/gl_objects.hpp"
+
+namespace pbr {
+
+// A uniform buffer holding exactly one std140 block mirrored by the C++ struct T.
+template <class T>
+class UniformBuffer {
+  static_assert(std::is_trivially_copyable_v<T>, "std140 mirrors must be plain data");
+  static_assert(sizeof(T) % 16 == 0, "std140 blocks are padded to a multiple of 16 bytes");
+
+ public:
+  UniformBuffer() : buffer_(sizeof(T)) {}
+  explicit UniformBuffer(const T& value) : buffer_(sizeof(T), &value) {}
+  void update(const T& value) { buffer_.upload(&value, sizeof(T)); }
+  void bind(GLuint binding) const { buffer_.bindBase(GL_UNIFORM_BUFFER, binding); }
+
+ private:
+  Buffer buffer_;
+};
+
+}  // namespace pbr

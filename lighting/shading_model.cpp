@@ -1,0 +1,23 @@
+#include "lighting/shading_model.hpp"
+
+#include <stdexcept>
+
+namespace pbr {
+
+ShadingModel parseShadingModel(const std::string& name) {
+  if (name == "pbr") return ShadingModel::Pbr;
+  if (name == "blinn-phong") return ShadingModel::BlinnPhong;
+  throw std::invalid_argument("unknown shading model '" + name + "' (expected pbr or blinn-phong)");
+}
+
+const char* toString(ShadingModel model) { return model == ShadingModel::Pbr ? "pbr" : "blinn-phong"; }
+
+Visibility parseVisibility(const std::string& name) {
+  if (name == "exact") return Visibility::HeightCorrelated;
+  if (name == "hammon") return Visibility::Hammon;
+  throw std::invalid_argument("unknown visibility term '" + name + "' (expected exact or hammon)");
+}
+
+const char* toString(Visibility visibility) { return visibility == Visibility::HeightCorrelated ? "exact" : "hammon"; }
+
+}  // namespace pbr

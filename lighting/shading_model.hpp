@@ -1,0 +1,15 @@
+#pragma once
+#include <string>
+
+namespace pbr {
+
+enum class ShadingModel { Pbr, BlinnPhong };
+// The Smith visibility term of the PBR model: exact height-correlated, or Hammon's fast approximation.
+enum class Visibility { HeightCorrelated, Hammon };
+
+ShadingModel parseShadingModel(const std::string& name);  // "pbr" | "blinn-phong"
+const char* toString(ShadingModel model);
+Visibility parseVisibility(const std::string& name);  // "exact" | "hammon"
+const char* toString(Visibility visibility);
+
+}  // namespace pbr

@@ -1,0 +1,33 @@
+#pragma once
+#include <glm/vec2.hpp>
+
+#include "core/shader_library.hpp"
+#include "core/uniform_buffer.hpp"
+
+namespace pbr {
+
+// std140 mirror of `PostBlock` in shaders/post/post.comp.
+struct PostBlock {
+  float exposure;
+  unsigned toneMap;
+  glm::uvec2 size;
+};
+static_assert(sizeof(PostBlock) == 16, "PostBlock must match its std140 layout");
+
+struct PostSettings {
+  float exposure = 1.0f;
+  bool toneMap = true;  // false for LDR frames: clamp + sRGB only
+};
+
+// HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
+class PostPass {
+ public:
+  explicit PostPass(const ShaderLibrary& shaders) : program_(shaders.compute("post/post.comp")) {}
+  void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
+
+ private:
+  Program program_;
+  UniformBuffer<PostBlock> block_;
+};
+
+}  // namespace pbr
