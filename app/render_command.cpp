@@ -18,6 +18,10 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated) or hammon (fast form)"},
       {"--lights", "N", "number of random point lights (default 256)"},
+      {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
+      {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
+      {"--slices", "S", "cluster depth slices, exponential between near and far (default 24)"},
+      {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency); slower"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
       {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
@@ -44,6 +48,29 @@ void printTimings(const std::vector<FrameTiming>& frames, TimingMode mode) {
   std::printf("  %-10s %9.3f ms (CPU clock)\n", "wall", median(cpu));
 }
 
+void printLightStats(const Renderer& renderer, const FrameOptions& options) {
+  const LightStats s = renderer.lightStats();
+  std::printf("lights: %u in the frame", s.lights);
+  if (options.culling == Culling::Clustered) {
+    const glm::uvec3 d = renderer.clusters().dims();
+    if (options.stats) std::printf(", %u survive frustum culling", s.visibleLights);
+    std::printf("\nclusters: %ux%ux%u, %u non-empty, %.1f lights per non-empty cluster (max %u), %llu index entries\n",
+                d.x, d.y, d.z, s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
+                static_cast<unsigned long long>(s.indexEntries));
+    if (s.overflowedClusters) {
+      std::printf("clusters: %u clusters did not fit the light index list and were shaded by brute force\n",
+                  s.overflowedClusters);
+    }
+  } else {
+    std::printf("\n");
+  }
+  if (options.stats) {
+    std::printf("culling efficiency: %.3f (%llu of %llu light-pixel pairs evaluated contribute)\n",
+                s.cullingEfficiency(), static_cast<unsigned long long>(s.pairs.contributing),
+                static_cast<unsigned long long>(s.pairs.evaluated));
+  }
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& argv) {
@@ -60,6 +87,11 @@ int runRender(const std::vector<std::string>& argv) {
   const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
   const Visibility visibility = parseVisibility(args.get("--visibility", "exact"));
   const int lightCount = args.getInt("--lights", 256, 0, 1 << 20);
+  const Culling culling = parseCulling(args.get("--culling", "clustered"));
+  ClusterConfig clusterConfig;
+  clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
+  clusterConfig.slices = args.getInt("--slices", clusterConfig.slices, 1, 256);
+  const bool stats = args.has("--stats");
   const glm::ivec2 size = args.getSize("--size", {1280, 720});
   const int frames = args.getInt("--frames", 1, 1, 100000);
   const std::string outPng = args.get("--out", "");
@@ -75,14 +107,15 @@ int runRender(const std::vector<std::string>& argv) {
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
-  std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling none\n", scene.name.c_str(), size.x, size.y,
+  std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), toString(model),
-              model == ShadingModel::Pbr ? (std::string(" (visibility ") + toString(visibility) + ")").c_str() : "");
+              model == ShadingModel::Pbr ? (std::string(" (visibility ") + toString(visibility) + ")").c_str() : "",
+              toString(culling));
 
   const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, size.x, size.y);
+  Renderer renderer(shaders, scene, size.x, size.y, clusterConfig);
   Profiler profiler(chooseTimingMode(timing, info.renderer));
-  const FrameOptions options{model, visibility, exposure};
+  const FrameOptions options{model, visibility, culling, exposure, stats};
   ImageRgba8 ldr;
   ImageRgbaF hdr;
   for (int i = 0; i < frames; ++i) {
@@ -94,6 +127,7 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.renderFrame(options, profiler, capture);
   }
   printTimings(profiler.takeResults(true), profiler.mode());
+  printLightStats(renderer, options);
   checkGlError("rendering");
 
   if (!outPng.empty()) {

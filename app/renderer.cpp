@@ -4,13 +4,16 @@
 
 namespace pbr {
 
-Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height)
+Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
+                   const ClusterConfig& clusterConfig)
     : scene_(scene),
       width_(width),
       height_(height),
-      frame_(makeFrameBlock(scene.camera, width, height)),
+      frameData_(makeFrameBlock(scene.camera, width, height)),
+      frame_(frameData_),
       gbuffer_(width, height),
       gbufferPass_(shaders, scene),
+      clusters_(shaders, clusterConfig),
       lightingPass_(shaders),
       postPass_(shaders),
       hdr_(GL_RGBA16F, width, height),
@@ -24,10 +27,16 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
     ScopedPass pass(profiler, "gbuffer");
     gbufferPass_.render(gbuffer_, frame_);
   }
+  const bool clustered = options.culling == Culling::Clustered;
+  if (clustered) {
+    ScopedPass pass(profiler, "cluster");
+    clusters_.assign(frameData_, frame_, lights_, options.stats);
+  }
   {
     ScopedPass pass(profiler, "lighting");
     const SurfaceTextures surface{gbuffer_.baseColor, gbuffer_.normal, gbuffer_.material, gbuffer_.depth};
-    lightingPass_.renderBruteForce(surface, lights_, {options.model, options.visibility, scene_.ambient}, frame_, hdr_);
+    const LightingOptions lighting{options.model, options.visibility, scene_.ambient, options.stats};
+    lightingPass_.render(surface, lights_, lighting, frame_, hdr_, clustered ? &clusters_ : nullptr);
   }
   {
     ScopedPass pass(profiler, "post");
@@ -39,6 +48,24 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
     if (capture.hdr) *capture.hdr = readbackRgbaF(hdr_);
   }
   profiler.endFrame();
+  lastOptions_ = options;
+}
+
+LightStats Renderer::lightStats() const {
+  LightStats s;
+  s.lights = lights_.count();
+  if (lastOptions_.culling == Culling::Clustered) {
+    const ClusterStatus status = clusters_.readStatus();
+    const glm::uvec3 d = clusters_.dims();
+    s.clusters = d.x * d.y * d.z;
+    s.nonEmptyClusters = status.nonEmpty;
+    s.maxPerCluster = status.maxPerCluster;
+    s.indexEntries = status.demand;
+    s.overflowedClusters = status.overflowed;
+    s.visibleLights = status.visibleLights;
+  }
+  if (lastOptions_.stats) s.pairs = lightingPass_.readPairCounts();
+  return s;
 }
 
 }  // namespace pbr

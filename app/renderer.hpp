@@ -17,7 +17,25 @@ namespace pbr {
 struct FrameOptions {
   ShadingModel model = ShadingModel::Pbr;
   Visibility visibility = Visibility::HeightCorrelated;
+  Culling culling = Culling::Clustered;
   float exposure = 1.0f;
+  bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
+};
+
+// Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
+// counts need FrameOptions::stats.
+struct LightStats {
+  uint32_t lights = 0;
+  uint32_t visibleLights = 0;       // lights touching at least one cluster (frustum-culled survivors)
+  uint32_t clusters = 0;
+  uint32_t nonEmptyClusters = 0;
+  uint32_t maxPerCluster = 0;
+  uint64_t indexEntries = 0;        // entries of the light-index list the frame needed
+  uint32_t overflowedClusters = 0;  // shaded by brute force because the list was full
+  PairCounts pairs;
+  double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
+  // Light-pixel pairs that contribute over pairs evaluated.
+  double cullingEfficiency() const { return pairs.evaluated ? double(pairs.contributing) / pairs.evaluated : 0.0; }
 };
 
 // Images to read back at the end of a frame (timed as the "readback" pass); null members are skipped.
@@ -29,9 +47,15 @@ struct FrameCapture {
 // The whole frame: G-buffer -> deferred lighting (HDR RGBA16F) -> post (RGBA8), with each pass timed.
 class Renderer {
  public:
-  Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height);
+  Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
+           const ClusterConfig& clusterConfig = {});
 
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
+
+  // Reads the GPU counters of the last frame; waits for the GPU.
+  LightStats lightStats() const;
+  const LightClusters& clusters() const { return clusters_; }
+  const GBuffer& gbuffer() const { return gbuffer_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -39,11 +63,14 @@ class Renderer {
  private:
   const Scene& scene_;
   int width_, height_;
+  FrameBlock frameData_;
   UniformBuffer<FrameBlock> frame_;
   GBuffer gbuffer_;
   GBufferPass gbufferPass_;
   LightBuffer lights_;
+  LightClusters clusters_;
   LightingPass lightingPass_;
+  FrameOptions lastOptions_;
   PostPass postPass_;
   Texture hdr_;
   Texture ldr_;

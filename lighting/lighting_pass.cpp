@@ -1,36 +1,64 @@
 #include "lighting/lighting_pass.hpp"
 
+#include <vector>
+
 #include "core/bindings.hpp"
 
 namespace pbr {
 
-const Program& LightingPass::program(const LightingOptions& o) {
+const Program& LightingPass::program(const LightingOptions& o, bool clustered) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   const bool fast = !blinnPhong && o.visibility == Visibility::Hammon;
-  const int key = (blinnPhong ? 1 : 0) | (fast ? 2 : 0);
+  const int key = (blinnPhong ? 1 : 0) | (fast ? 2 : 0) | (clustered ? 4 : 0) | (o.stats ? 8 : 0);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    const ShaderDefines defines = {{"SHADING_MODEL_BLINN_PHONG", blinnPhong ? "1" : "0"},
-                                   {"VISIBILITY_FAST", fast ? "1" : "0"}};
+    auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+    const ShaderDefines defines = {{"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)},
+                                   {"VISIBILITY_FAST", flag(fast)},
+                                   {"CLUSTERED", flag(clustered)},
+                                   {"LIGHTING_STATS", flag(o.stats)}};
     it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
   }
   return it->second;
 }
 
-void LightingPass::renderBruteForce(const SurfaceTextures& surface, const LightBuffer& lights,
-                                    const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
-                                    const Texture& hdrOut) {
+void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
+                          const UniformBuffer<FrameBlock>& frame, const Texture& hdrOut,
+                          const LightClusters* clusters) {
+  const GLuint groupsX = static_cast<GLuint>((hdrOut.width() + 7) / 8);
+  const GLuint groupsY = static_cast<GLuint>((hdrOut.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
-  program(options).use();
+  program(options, clusters != nullptr).use();
   frame.bind(binding::kFrameUbo);
   block_.bind(binding::kLightingUbo);
   lights.bind();
+  if (clusters) clusters->bindForLighting();
+  if (options.stats) {
+    pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
+    if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) pairStats_ = std::make_unique<Buffer>(pairGroups_ * 8, nullptr, 0);
+    const uint32_t zero = 0;
+    glClearNamedBufferData(pairStats_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    pairStats_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightingStatsSsbo);
+  }
   const GLuint textures[] = {surface.baseColor.id(), surface.normal.id(), surface.material.id(), surface.depth.id()};
   glBindTextures(0, 4, textures);
   glBindImageTexture(0, hdrOut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glDispatchCompute(static_cast<GLuint>((hdrOut.width() + 7) / 8), static_cast<GLuint>((hdrOut.height() + 7) / 8), 1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glDispatchCompute(groupsX, groupsY, 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+PairCounts LightingPass::readPairCounts() const {
+  PairCounts counts;
+  if (!pairStats_) return counts;
+  std::vector<uint32_t> pairs(pairGroups_ * 2);
+  glGetNamedBufferSubData(pairStats_->id(), 0, static_cast<GLsizeiptr>(pairs.size() * 4), pairs.data());
+  for (size_t g = 0; g < pairGroups_; ++g) {
+    counts.evaluated += pairs[2 * g];
+    counts.contributing += pairs[2 * g + 1];
+  }
+  return counts;
 }
 
 }  // namespace pbr

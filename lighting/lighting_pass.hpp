@@ -1,5 +1,7 @@
 #pragma once
+#include <cstdint>
 #include <map>
+#include <memory>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -8,6 +10,7 @@
 #include "core/shader_library.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/light_buffer.hpp"
+#include "lighting/light_clusters.hpp"
 #include "lighting/shading_model.hpp"
 
 namespace pbr {
@@ -31,23 +34,36 @@ struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;
   Visibility visibility = Visibility::HeightCorrelated;
   glm::vec3 ambient{0.0f};
+  bool stats = false;  // count light-pixel pairs (evaluated, contributing) on the GPU
 };
 
-// Deferred lighting in a compute shader; one shader permutation per (model, visibility), compiled on first use.
+struct PairCounts {
+  uint64_t evaluated = 0;
+  uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
+};
+
+// Deferred lighting in a compute shader; one permutation per (model, visibility, culling, stats), compiled on
+// first use.
 class LightingPass {
  public:
   explicit LightingPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
 
-  // Brute force: every light for every pixel. The reference the clustered path is tested against.
-  void renderBruteForce(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
-                        const UniformBuffer<FrameBlock>& frame, const Texture& hdrOut);
+  // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
+  // only the lights of each pixel's cluster (as last assigned) are.
+  void render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
+              const UniformBuffer<FrameBlock>& frame, const Texture& hdrOut, const LightClusters* clusters);
+
+  // Pair counts of the last frame rendered with stats on; waits for the GPU.
+  PairCounts readPairCounts() const;
 
  private:
-  const Program& program(const LightingOptions& options);
+  const Program& program(const LightingOptions& options, bool clustered);
 
   const ShaderLibrary& shaders_;
   std::map<int, Program> programs_;
   UniformBuffer<LightingBlock> block_;
+  std::unique_ptr<Buffer> pairStats_;
+  size_t pairGroups_ = 0;
 };
 
 }  // namespace pbr

@@ -20,4 +20,12 @@ Visibility parseVisibility(const std::string& name) {
 
 const char* toString(Visibility visibility) { return visibility == Visibility::HeightCorrelated ? "exact" : "hammon"; }
 
+Culling parseCulling(const std::string& name) {
+  if (name == "none") return Culling::None;
+  if (name == "clustered") return Culling::Clustered;
+  throw std::invalid_argument("unknown culling '" + name + "' (expected none or clustered)");
+}
+
+const char* toString(Culling culling) { return culling == Culling::None ? "none" : "clustered"; }
+
 }  // namespace pbr

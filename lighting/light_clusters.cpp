@@ -1,0 +1,171 @@
+#include "lighting/light_clusters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/bindings.hpp"
+
+namespace pbr {
+
+namespace {
+
+ShaderDefines assignDefines(bool fill, bool stats) {
+  return {{"ASSIGN_FILL", fill ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}};
+}
+
+GLuint groupsFor(uint32_t items, uint32_t groupSize) { return (items + groupSize - 1) / groupSize; }
+
+}  // namespace
+
+float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) {
+  return nearPlane * std::pow(farPlane / nearPlane, static_cast<float>(slice) / static_cast<float>(slices));
+}
+
+LightClusters::LightClusters(const ShaderLibrary& shaders, const ClusterConfig& config)
+    : config_(config),
+      boundsProgram_(shaders.compute("lighting/cluster_bounds.comp")),
+      countProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
+      countStatsProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
+      scanProgram_(shaders.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "0"}})),
+      scanStatsProgram_(shaders.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "1"}})),
+      fillProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
+      status_(sizeof(ClusterStatus), nullptr, 0) {
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  const uint64_t limitBytes = std::min<uint64_t>(config_.maxIndexBytes, static_cast<uint64_t>(std::max<GLint64>(maxBlock, 4)));
+  maxCapacity_ = static_cast<uint32_t>(std::min<uint64_t>(limitBytes / 4, 0xFFFFFFFFull));
+}
+
+LightClusters::~LightClusters() {
+  for (PendingStatus& p : pending_) {
+    if (p.fence) glDeleteSync(p.fence);
+  }
+}
+
+size_t LightClusters::bytes() const {
+  size_t total = status_.size();
+  for (const auto* b : {&bounds_, &headers_, &indices_, &visible_}) total += *b ? (*b)->size() : 0;
+  return total;
+}
+
+void LightClusters::rebuildGrid(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame) {
+  const uint32_t w = static_cast<uint32_t>(f.viewport.x), h = static_cast<uint32_t>(f.viewport.y);
+  const uint32_t tile = static_cast<uint32_t>(std::max(config_.tileSize, 1));
+  dims_ = glm::uvec3((w + tile - 1) / tile, (h + tile - 1) / tile, static_cast<uint32_t>(std::max(config_.slices, 1)));
+  const uint32_t clusters = dims_.x * dims_.y * dims_.z;
+  const float nearPlane = f.clip.x, farPlane = f.clip.y;
+  const float scale = static_cast<float>(dims_.z) / std::log(farPlane / nearPlane);
+  blockData_.dims = glm::uvec4(dims_, tile);
+  blockData_.slicing = glm::vec4(nearPlane, farPlane, scale, -scale * std::log(nearPlane));
+  blockData_.counts = glm::uvec4(0, clusters, 0, 0);
+  bounds_ = std::make_unique<Buffer>(clusters * 32ull, nullptr, 0);
+  headers_ = std::make_unique<Buffer>(clusters * 8ull, nullptr, 0);
+  block_.update(blockData_);
+
+  boundsProgram_.use();
+  frame.bind(binding::kFrameUbo);
+  block_.bind(binding::kClusterUbo);
+  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterBoundsSsbo);
+  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  gridKey_ = f.viewport;
+  gridKey2_ = f.projParams;
+  // A first guess of 32 lights per cluster; the measured demand corrects it from the next frame on.
+  if (capacity_ < clusters * 32ull) ensureCapacity(clusters * 32ull);
+}
+
+void LightClusters::ensureCapacity(uint64_t entries) {
+  if (entries > maxCapacity_) {
+    if (!warnedLimit_) {
+      std::fprintf(stderr,
+                   "clusters: the light index list needs %llu entries (%.1f MiB), over its limit of %.1f MiB; "
+                   "clusters that do not fit are shaded by brute force\n",
+                   static_cast<unsigned long long>(entries), entries * 4.0 / (1 << 20), maxCapacity_ * 4.0 / (1 << 20));
+      warnedLimit_ = true;
+    }
+    entries = maxCapacity_;
+  }
+  if (entries <= capacity_) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  auto grown = std::make_unique<Buffer>(entries * 4, nullptr, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY) {
+    if (!warnedLimit_) {
+      std::fprintf(stderr, "clusters: out of GPU memory growing the light index list to %.1f MiB; clusters that do "
+                           "not fit are shaded by brute force\n", entries * 4.0 / (1 << 20));
+      warnedLimit_ = true;
+    }
+    return;
+  }
+  indices_ = std::move(grown);
+  capacity_ = static_cast<uint32_t>(entries);
+}
+
+void LightClusters::growFromPastDemand() {
+  for (PendingStatus& p : pending_) {
+    if (!p.fence) continue;
+    if (glClientWaitSync(p.fence, 0, 0) == GL_TIMEOUT_EXPIRED) continue;
+    glDeleteSync(p.fence);
+    p.fence = nullptr;
+    ClusterStatus s{};
+    glGetNamedBufferSubData(p.buffer->id(), 0, sizeof s, &s);
+    if (s.demand > capacity_) ensureCapacity(static_cast<uint64_t>(s.demand) + s.demand / 4);
+  }
+}
+
+void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
+                           bool stats) {
+  if (!bounds_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f, frame);
+  growFromPastDemand();
+  const uint32_t clusters = blockData_.counts.y;
+  blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
+  block_.update(blockData_);
+  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) {
+    visible_ = std::make_unique<Buffer>(lights.count() * 4ull, nullptr, 0);
+    const uint32_t zero = 0;
+    glClearNamedBufferData(visible_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
+
+  frame.bind(binding::kFrameUbo);
+  block_.bind(binding::kClusterUbo);
+  lights.bind();
+  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterBoundsSsbo);
+  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
+  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
+  status_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterStatusSsbo);
+  if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightVisibleSsbo);
+
+  (stats ? countStatsProgram_ : countProgram_).use();
+  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  (stats ? scanStatsProgram_ : scanProgram_).use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  fillProgram_.use();
+  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+  PendingStatus& slot = pending_[pendingNext_];
+  pendingNext_ = (pendingNext_ + 1) % pending_.size();
+  if (slot.fence) glDeleteSync(slot.fence);
+  if (!slot.buffer) slot.buffer = std::make_unique<Buffer>(sizeof(ClusterStatus), nullptr, 0);
+  glCopyNamedBufferSubData(status_.id(), slot.buffer->id(), 0, 0, sizeof(ClusterStatus));
+  slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+void LightClusters::bindForLighting() const {
+  block_.bind(binding::kClusterUbo);
+  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
+  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
+}
+
+ClusterStatus LightClusters::readStatus() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  ClusterStatus s{};
+  glGetNamedBufferSubData(status_.id(), 0, sizeof s, &s);
+  return s;
+}
+
+}  // namespace pbr
