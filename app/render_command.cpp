@@ -21,6 +21,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
       {"--slices", "S", "cluster depth slices, exponential between near and far (default 24)"},
+      {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency); slower"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
@@ -92,6 +93,10 @@ int runRender(const std::vector<std::string>& argv) {
   clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
   clusterConfig.slices = args.getInt("--slices", clusterConfig.slices, 1, 256);
   const bool stats = args.has("--stats");
+  const ClusterDebugView debugView = parseClusterDebugView(args.get("--debug", "none"));
+  if (debugView != ClusterDebugView::None && culling != Culling::Clustered) {
+    throw UsageError("--debug needs --culling clustered");
+  }
   const glm::ivec2 size = args.getSize("--size", {1280, 720});
   const int frames = args.getInt("--frames", 1, 1, 100000);
   const std::string outPng = args.get("--out", "");
@@ -115,7 +120,7 @@ int runRender(const std::vector<std::string>& argv) {
   const ShaderLibrary shaders;
   Renderer renderer(shaders, scene, size.x, size.y, clusterConfig);
   Profiler profiler(chooseTimingMode(timing, info.renderer));
-  const FrameOptions options{model, visibility, culling, exposure, stats};
+  const FrameOptions options{model, visibility, culling, exposure, stats, debugView};
   ImageRgba8 ldr;
   ImageRgbaF hdr;
   for (int i = 0; i < frames; ++i) {

@@ -16,6 +16,7 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
       clusters_(shaders, clusterConfig),
       lightingPass_(shaders),
       postPass_(shaders),
+      debugPass_(shaders),
       hdr_(GL_RGBA16F, width, height),
       ldr_(GL_RGBA8, width, height) {
   lights_.upload(scene.lights);
@@ -41,6 +42,10 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
   {
     ScopedPass pass(profiler, "post");
     postPass_.render(hdr_, ldr_, {options.exposure, options.model == ShadingModel::Pbr});
+  }
+  if (clustered && options.debugView != ClusterDebugView::None) {
+    ScopedPass pass(profiler, "debug");
+    debugPass_.render(options.debugView, clusters_, gbuffer_.depth, frame_, ldr_);
   }
   if (capture.ldr || capture.hdr) {
     ScopedPass pass(profiler, "readback");

@@ -9,6 +9,7 @@
 #include "core/uniform_buffer.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "lighting/cluster_debug_pass.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "post/post_pass.hpp"
 
@@ -20,6 +21,7 @@ struct FrameOptions {
   Culling culling = Culling::Clustered;
   float exposure = 1.0f;
   bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
+  ClusterDebugView debugView = ClusterDebugView::None;  // painted over the final frame (clustered only)
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -72,6 +74,7 @@ class Renderer {
   LightingPass lightingPass_;
   FrameOptions lastOptions_;
   PostPass postPass_;
+  ClusterDebugPass debugPass_;
   Texture hdr_;
   Texture ldr_;
 };

@@ -25,8 +25,9 @@ Scene makeDefaultScene(int lightCount) {
   s.camera.position = {0.0f, 5.5f, 9.0f};
   s.camera.target = {0.0f, 0.0f, 0.3f};
   s.camera.fovYDeg = 45.0f;
-  s.camera.nearPlane = 0.1f;
-  s.camera.farPlane = 60.0f;
+  // Near and far hug the scene so that the exponential depth slices fall where the geometry is.
+  s.camera.nearPlane = 0.5f;
+  s.camera.farPlane = 40.0f;
   s.exposure = 1.0f;
   s.ambient = glm::vec3(0.03f);
   s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(24.0f, 1.0f, 24.0f)),

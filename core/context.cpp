@@ -24,6 +24,10 @@ const char* toString(EglPlatform platform) {
   return "?";
 }
 
+bool isSoftwareRenderer(const std::string& r) {
+  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
+}
+
 bool glDebugRequested() {
   const char* env = std::getenv("PBR_GL_DEBUG");
   if (env) return std::strcmp(env, "0") != 0;

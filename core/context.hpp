@@ -44,6 +44,9 @@ class Context {
   ContextInfo info_;
 };
 
+// Mesa's CPU rasterizers (llvmpipe, softpipe) by their GL_RENDERER string.
+bool isSoftwareRenderer(const std::string& glRenderer);
+
 // Debug output (KHR_debug to stderr) is on in debug builds, or when PBR_GL_DEBUG=1.
 bool glDebugRequested();
 

@@ -2,12 +2,9 @@
 
 #include <stdexcept>
 
-namespace pbr {
+#include "core/context.hpp"
 
-bool isSoftwareRenderer(const std::string& r) {
-  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
-         r.find("SWR") != std::string::npos || r.find("Software Rasterizer") != std::string::npos;
-}
+namespace pbr {
 
 TimingMode chooseTimingMode(const std::string& requested, const std::string& glRenderer) {
   if (requested == "gpu") return TimingMode::GpuQueries;

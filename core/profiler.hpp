@@ -15,7 +15,6 @@ enum class TimingMode { GpuQueries, Serializing };
 
 // `requested` is "auto", "gpu" or "serial"; auto serializes on software rasterizers.
 TimingMode chooseTimingMode(const std::string& requested, const std::string& glRenderer);
-bool isSoftwareRenderer(const std::string& glRenderer);
 const char* describe(TimingMode mode);
 
 struct PassTiming {

@@ -159,6 +159,24 @@ void LightClusters::bindForLighting() const {
   block_.bind(binding::kClusterUbo);
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
   indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
+  status_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterStatusSsbo);
+}
+
+std::vector<std::vector<uint32_t>> LightClusters::readLists() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const uint32_t clusters = blockData_.counts.y;
+  std::vector<uint32_t> headers(clusters * 2ull);
+  glGetNamedBufferSubData(headers_->id(), 0, static_cast<GLsizeiptr>(headers.size() * 4), headers.data());
+  std::vector<uint32_t> indices(capacity_);
+  glGetNamedBufferSubData(indices_->id(), 0, static_cast<GLsizeiptr>(indices.size() * 4), indices.data());
+  std::vector<std::vector<uint32_t>> lists(clusters);
+  for (uint32_t c = 0; c < clusters; ++c) {
+    const uint32_t offset = headers[2 * c], count = headers[2 * c + 1];
+    if (count <= capacity_ && offset <= capacity_ - count) {
+      lists[c].assign(indices.begin() + offset, indices.begin() + offset + count);
+    }
+  }
+  return lists;
 }
 
 ClusterStatus LightClusters::readStatus() const {

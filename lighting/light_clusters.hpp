@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -38,11 +39,15 @@ class LightClusters {
   // Culls `lights` into clusters for this frame; `frameData` is what `frame` holds.
   void assign(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
               bool stats);
-  // Binds the cluster block, headers and index list for the lighting pass.
+  // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
   void bindForLighting() const;
 
   // This frame's status; waits for the GPU (use at the end of a run or in stats mode).
   ClusterStatus readStatus() const;
+
+  // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
+  // a cluster that did not fit the index list reads as empty. Waits for the GPU: for tests and tools.
+  std::vector<std::vector<uint32_t>> readLists() const;
 
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }

@@ -10,11 +10,12 @@ float alphaFromRoughness(float roughness) {
 
 vec3 f0FromMaterial(vec3 baseColor, float metalness) { return mix(vec3(0.04), baseColor, metalness); }
 
-// GGX / Trowbridge-Reitz NDF (Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces").
-float D_GGX(float NoH, float a) {
-  float a2 = a * a;
-  float f = (NoH * a2 - NoH) * NoH + 1.0;
-  return a2 / (PI * f * f);
+// GGX / Trowbridge-Reitz NDF (Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces"),
+// written with sin2 = 1 - NoH^2 passed in: near the peak NoH rounds to 1 in float and 1 - NoH^2 would lose its
+// digits against a^2 (6e-6 at roughness 0.05), so callers take sin2 as |N x H|^2.
+float D_GGX(float NoH, float sin2, float a) {
+  float k = a / (sin2 + NoH * NoH * a * a);
+  return k * k / PI;
 }
 
 // Height-correlated Smith visibility G2 / (4 NoL NoV) (Heitz 2014, "Understanding the Masking-Shadowing Function").
@@ -45,15 +46,18 @@ float visibility(float NoV, float NoL, float a) {
 #endif
 }
 
-// Cook-Torrance GGX specular plus Lambert diffuse weighted by (1 - F)(1 - metalness); returns f_d + f_s.
+// Cook-Torrance GGX specular plus Lambert diffuse weighted by (1 - F(n.v))(1 - metalness); returns f_d + f_s.
+// The diffuse weight takes Fresnel at the view angle, the share of light the specular lobe can take at most:
+// weighting by F(v.h) instead gives a white dielectric an albedo up to 1.7 at grazing views.
 vec3 brdfCookTorrance(vec3 N, vec3 V, vec3 L, float NoV, vec3 baseColor, float roughness, float metalness) {
   vec3 H = normalize(V + L);
+  vec3 NxH = cross(N, H);
   float NoL = max(dot(N, L), 0.0);
   float NoH = clamp(dot(N, H), 0.0, 1.0);
   float VoH = clamp(dot(V, H), 0.0, 1.0);
   float a = alphaFromRoughness(roughness);
-  vec3 F = F_Schlick(f0FromMaterial(baseColor, metalness), VoH);
-  vec3 specular = D_GGX(NoH, a) * visibility(NoV, NoL, a) * F;
-  vec3 diffuse = (1.0 - F) * (1.0 - metalness) * baseColor / PI;
+  vec3 F0 = f0FromMaterial(baseColor, metalness);
+  vec3 specular = D_GGX(NoH, dot(NxH, NxH), a) * visibility(NoV, NoL, a) * F_Schlick(F0, VoH);
+  vec3 diffuse = (1.0 - F_Schlick(F0, NoV)) * (1.0 - metalness) * baseColor / PI;
   return diffuse + specular;
 }

@@ -21,17 +21,37 @@ layout(std430, binding = LIGHT_VISIBLE_SSBO) buffer Visible { uint lightVisible[
 
 shared vec4 batch[64];  // view-space centre, radius
 
+ClusterBounds gBox;
+#if ASSIGN_FILL
+uint gCursor;
+#else
+uint gCount;
+#endif
+
+void testLight(uint base, uint j) {
+  vec4 sphere = batch[j];
+  if (!sphereIntersectsAabb(sphere.xyz, sphere.w, gBox.minView.xyz, gBox.maxView.xyz)) return;
+#if ASSIGN_FILL
+  lightIndices[gCursor++] = base + j;
+#else
+  ++gCount;
+#if ASSIGN_STATS
+  lightVisible[base + j] = 1u;
+#endif
+#endif
+}
+
 void main() {
   uint cluster = gl_GlobalInvocationID.x;
   bool inRange = cluster < clusterCount();
-  ClusterBounds box = bounds[min(cluster, clusterCount() - 1u)];
+  gBox = bounds[min(cluster, clusterCount() - 1u)];
 #if ASSIGN_FILL
   ClusterHeader header = headers[min(cluster, clusterCount() - 1u)];
   // A list that does not fit the index buffer is not written: lighting shades that cluster by brute force.
   inRange = inRange && listFits(header);
-  uint cursor = header.offset;
+  gCursor = header.offset;
 #else
-  uint count = 0u;
+  gCount = 0u;
 #endif
   uint total = clusterGrid.counts.x;
   for (uint base = 0u; base < total; base += 64u) {
@@ -42,22 +62,24 @@ void main() {
     }
     barrier();
     uint n = min(64u, total - base);
-    for (uint j = 0u; inRange && j < n; ++j) {
-      vec4 s = batch[j];
-      if (sphereIntersectsAabb(s.xyz, s.w, box.minView.xyz, box.maxView.xyz)) {
-#if ASSIGN_FILL
-        lightIndices[cursor++] = base + j;
-#else
-        ++count;
-#if ASSIGN_STATS
-        lightVisible[base + j] = 1u;
-#endif
-#endif
+    if (inRange) {
+      // Unrolled by 8 for llvmpipe's limit of 65535 loop iterations per invocation (see deferred.comp).
+      uint j = 0u;
+      for (; j + 8u <= n; j += 8u) {
+        testLight(base, j);
+        testLight(base, j + 1u);
+        testLight(base, j + 2u);
+        testLight(base, j + 3u);
+        testLight(base, j + 4u);
+        testLight(base, j + 5u);
+        testLight(base, j + 6u);
+        testLight(base, j + 7u);
       }
+      for (; j < n; ++j) testLight(base, j);
     }
     barrier();
   }
 #if !ASSIGN_FILL
-  if (inRange) headers[cluster] = ClusterHeader(0u, count);
+  if (inRange) headers[cluster] = ClusterHeader(0u, gCount);
 #endif
 }

@@ -31,6 +31,26 @@ bool contributes(Surface s, PointLight light) {
 }
 #endif
 
+#if CLUSTERED
+ClusterHeader gHeader;
+bool gListed;
+#endif
+vec3 gColor;
+uint gContributing;
+
+// The k-th light this pixel visits: its cluster's k-th entry, or light k when shading every light.
+void visitLight(Surface s, uint k) {
+#if CLUSTERED
+  PointLight light = lights[gListed ? lightIndices[gHeader.offset + k] : k];
+#else
+  PointLight light = lights[k];
+#endif
+  gColor += shadeLight(s, light);
+#if LIGHTING_STATS
+  gContributing += contributes(s, light) ? 1u : 0u;
+#endif
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
@@ -39,34 +59,35 @@ void main() {
     imageStore(hdrOut, p, vec4(0.0, 0.0, 0.0, 1.0));
     return;
   }
-  vec3 color = shadeAmbient(s);
+  gColor = shadeAmbient(s);
+  gContributing = 0u;
 #if CLUSTERED
-  ClusterHeader header = headers[clusterIndex(uvec2(p), s.viewDepth)];
-  bool listed = listFits(header);
-  uint count = listed ? header.count : lighting.counts.x;
+  gHeader = headers[clusterIndex(uvec2(p), s.viewDepth)];
+  gListed = listFits(gHeader);
+  uint count = gListed ? gHeader.count : lighting.counts.x;
 #else
   uint count = lighting.counts.x;
 #endif
-#if LIGHTING_STATS
-  uint contributing = 0u;
-#endif
-  for (uint i = 0u; i < count; ++i) {
-#if CLUSTERED
-    PointLight light = lights[listed ? lightIndices[header.offset + i] : i];
-#else
-    PointLight light = lights[i];
-#endif
-    color += shadeLight(s, light);
-#if LIGHTING_STATS
-    contributing += contributes(s, light) ? 1u : 0u;
-#endif
+  // llvmpipe ends an invocation after 65535 loop iterations in all (its guard against endless loops), so the
+  // light loop is unrolled by 8; the lights are still added one after another, in order.
+  uint k = 0u;
+  for (; k + 8u <= count; k += 8u) {
+    visitLight(s, k);
+    visitLight(s, k + 1u);
+    visitLight(s, k + 2u);
+    visitLight(s, k + 3u);
+    visitLight(s, k + 4u);
+    visitLight(s, k + 5u);
+    visitLight(s, k + 6u);
+    visitLight(s, k + 7u);
   }
+  for (; k < count; ++k) visitLight(s, k);
 #if LIGHTING_STATS
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   atomicAdd(groupPairs[group].x, count);
-  atomicAdd(groupPairs[group].y, contributing);
+  atomicAdd(groupPairs[group].y, gContributing);
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
-  color = mix(vec3(0.0), color, greaterThanEqual(color, vec3(0.0)));
+  vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
   imageStore(hdrOut, p, vec4(finishShading(color), 1.0));
 }

@@ -1,5 +1,5 @@
 // ACES filmic tone curve, Stephen Hill's fit of the RRT + ODT (sRGB primaries in and out).
-// GLSL matrices are column-major: the columns below are the rows of Hill's matrices.
+// GLSL matrices are column-major: each line below is one column of Hill's (row-major) matrices.
 const mat3 ACES_INPUT = mat3(0.59719, 0.07600, 0.02840,
                              0.35458, 0.90834, 0.13383,
                              0.04823, 0.01566, 0.83777);

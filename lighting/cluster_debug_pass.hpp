@@ -1,0 +1,26 @@
+#pragma once
+#include <string>
+
+#include "core/frame_block.hpp"
+#include "core/shader_library.hpp"
+#include "core/uniform_buffer.hpp"
+#include "lighting/light_clusters.hpp"
+
+namespace pbr {
+
+enum class ClusterDebugView { None, Clusters, Slices };
+ClusterDebugView parseClusterDebugView(const std::string& name);  // "none" | "clusters" | "slices"
+
+// Paints a debug view of the cluster grid over the final RGBA8 frame, with a legend.
+class ClusterDebugPass {
+ public:
+  explicit ClusterDebugPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
+  void render(ClusterDebugView view, const LightClusters& clusters, const Texture& depth,
+              const UniformBuffer<FrameBlock>& frame, const Texture& ldr);
+
+ private:
+  const ShaderLibrary& shaders_;
+  std::unique_ptr<Program> clustersProgram_, slicesProgram_;
+};
+
+}  // namespace pbr

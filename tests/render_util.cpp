@@ -1,0 +1,39 @@
+#include "tests/render_util.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pbr::test {
+
+RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames,
+                          const ClusterConfig& clusters) {
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, size.x, size.y, clusters);
+  Profiler profiler(TimingMode::Serializing);
+  RenderedFrame out;
+  for (int i = 0; i < frames; ++i) {
+    FrameCapture capture;
+    if (i == frames - 1) capture = {&out.ldr, &out.hdr};
+    renderer.renderFrame(options, profiler, capture);
+  }
+  out.stats = renderer.lightStats();
+  return out;
+}
+
+double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor) {
+  double worst = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double d = std::abs(double(a.pixels[i]) - double(b.pixels[i])) / std::max(std::abs(double(b.pixels[i])), floor);
+    worst = std::max(worst, d);
+  }
+  return worst;
+}
+
+int countDifferentBytes(const ImageRgba8& a, const ImageRgba8& b) {
+  int n = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
+  return n;
+}
+
+}  // namespace pbr::test

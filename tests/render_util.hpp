@@ -1,0 +1,23 @@
+#pragma once
+#include <glm/vec2.hpp>
+
+#include "app/renderer.hpp"
+
+namespace pbr::test {
+
+struct RenderedFrame {
+  ImageRgbaF hdr;
+  ImageRgba8 ldr;
+  LightStats stats;
+};
+
+// Renders `frames` frames (the last one captured) so that the clustered path has sized its index list from
+// measured demand by the time it is read.
+RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames = 2,
+                          const ClusterConfig& clusters = {});
+
+// Largest |a - b| / max(|b|, floor) over all colour channels.
+double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor = 1e-3);
+int countDifferentBytes(const ImageRgba8& a, const ImageRgba8& b);
+
+}  // namespace pbr::test

@@ -1,0 +1,164 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/builtin_scenes.hpp"
+#include "lighting/light_clusters.hpp"
+#include "tests/gl_test_context.hpp"
+#include "tests/render_util.hpp"
+
+using namespace pbr;
+
+namespace {
+
+const glm::ivec2 kSize{160, 90};
+
+// A floor, a box and a sphere in depth, with a camera whose near plane some of the lights straddle.
+Scene clusterScene() {
+  Scene s;
+  s.name = "cluster-test";
+  s.camera.position = {0.0f, 2.0f, 6.0f};
+  s.camera.target = {0.0f, 0.5f, 0.0f};
+  s.camera.nearPlane = 0.3f;
+  s.camera.farPlane = 40.0f;
+  s.ambient = glm::vec3(0.01f);
+  s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(60.0f, 1.0f, 60.0f)), {glm::vec3(0.6f), 0.7f, 0.0f});
+  s.addShape(Shape::Box, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, -1.0f)), {glm::vec3(0.8f, 0.3f, 0.2f), 0.3f, 0.0f});
+  s.addShape(Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.8f, 0.5f)), glm::vec3(1.6f)),
+             {glm::vec3(0.9f, 0.8f, 0.5f), 0.25f, 1.0f});
+  return s;
+}
+
+std::vector<PointLight> randomLights(int count, uint64_t seed) {
+  RandomLightSpec spec;
+  spec.count = count;
+  spec.seed = seed;
+  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
+  spec.boundsMax = {12.0f, 4.0f, 8.0f};
+  spec.radiusMin = 0.5f;
+  spec.radiusMax = 4.0f;
+  spec.powerMin = 2.0f;
+  spec.powerMax = 40.0f;
+  return makeRandomLights(spec);
+}
+
+// The awkward cases: straddling the near plane, behind the camera, covering the whole view, radius 0, and
+// centred exactly on slice boundaries along the view axis.
+std::vector<PointLight> edgeCaseLights(const Scene& s, const ClusterConfig& config) {
+  const Camera& c = s.camera;
+  const glm::vec3 forward = glm::normalize(c.target - c.position);
+  std::vector<PointLight> lights = {
+      {c.position + forward * c.nearPlane, 1.0f, {1.0f, 0.9f, 0.8f}, 30.0f},
+      {c.position - forward * 2.0f, 5.0f, {0.5f, 0.5f, 1.0f}, 60.0f},
+      {c.target, 500.0f, {0.2f, 0.2f, 0.2f}, 5.0f},
+      {glm::vec3(0.5f, 0.3f, 1.0f), 0.0f, {1.0f, 0.0f, 0.0f}, 100.0f},
+  };
+  for (int k : {1, 5, 10, 12}) {
+    const float depth = clusterSliceDepth(c.nearPlane, c.farPlane, k, config.slices);
+    lights.push_back({c.position + forward * depth, 1.5f + 0.1f * k, {0.3f, 1.0f, 0.4f}, 20.0f});
+  }
+  return lights;
+}
+
+void checkClusteredMatchesBruteForce(const Scene& scene, ShadingModel model, const ClusterConfig& config = {}) {
+  FrameOptions options;
+  options.model = model;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, kSize, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, kSize, options, 2, config);
+  CAPTURE(scene.lights.size());
+  CAPTURE(toString(model));
+  CHECK(clustered.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
+}
+
+}  // namespace
+
+TEST_CASE("clusters: clustered equals brute force for 0, 1, 64, 1024 and 20000 lights") {
+  PBR_REQUIRE_GL();
+  const ClusterConfig config;
+  for (int count : {0, 1, 64, 1024, 20000}) {
+    Scene scene = clusterScene();
+    scene.lights = randomLights(count, 7u + static_cast<uint64_t>(count));
+    checkClusteredMatchesBruteForce(scene, ShadingModel::Pbr, config);
+  }
+}
+
+TEST_CASE("clusters: edge-case lights agree with brute force in both shading models") {
+  PBR_REQUIRE_GL();
+  ClusterConfig config;
+  config.tileSize = 16;
+  Scene scene = clusterScene();
+  scene.lights = edgeCaseLights(scene, config);
+  const std::vector<PointLight> extra = randomLights(200, 99);
+  scene.lights.insert(scene.lights.end(), extra.begin(), extra.end());
+  checkClusteredMatchesBruteForce(scene, ShadingModel::Pbr, config);
+  checkClusteredMatchesBruteForce(scene, ShadingModel::BlinnPhong, config);
+}
+
+TEST_CASE("clusters: 65536 lights with one cluster touched by every light render without loss") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  RandomLightSpec spec;
+  spec.count = 65536;
+  spec.seed = 3;
+  // Every sphere contains the point (0, 0.5, 0) in front of the camera, so its cluster lists all of them.
+  spec.boundsMin = {-0.4f, 0.2f, -0.4f};
+  spec.boundsMax = {0.4f, 0.8f, 0.4f};
+  spec.radiusMin = 0.7f;
+  spec.radiusMax = 2.0f;
+  spec.powerMin = 0.001f;
+  spec.powerMax = 0.01f;
+  scene.lights = makeRandomLights(spec);
+  const glm::ivec2 size{96, 54};
+  FrameOptions options;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, size, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, size, options, 2);
+  CHECK(clustered.stats.maxPerCluster == 65536);
+  CHECK(clustered.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
+}
+
+TEST_CASE("clusters: an index list over its memory limit falls back to brute force for the clusters that do not fit") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  scene.lights = randomLights(512, 5);
+  ClusterConfig tiny;
+  tiny.maxIndexBytes = 4096;
+  FrameOptions options;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, kSize, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, kSize, options, 2, tiny);
+  CHECK(clustered.stats.overflowedClusters > 0);
+  CHECK(clustered.stats.indexEntries > 1024);
+  CHECK(test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
+}
+
+TEST_CASE("clusters: statistics count contributing pairs identically on both paths and culling helps") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  scene.lights = randomLights(1024, 11);
+  FrameOptions options;
+  options.stats = true;
+  options.culling = Culling::None;
+  const test::RenderedFrame brute = test::renderScene(scene, kSize, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, kSize, options, 2);
+  CHECK(brute.stats.pairs.contributing == clustered.stats.pairs.contributing);
+  CHECK(clustered.stats.pairs.contributing > 0);
+  CHECK(clustered.stats.pairs.evaluated < brute.stats.pairs.evaluated / 4);
+  CHECK(clustered.stats.cullingEfficiency() > brute.stats.cullingEfficiency());
+  CHECK(clustered.stats.visibleLights > 0);
+  CHECK(clustered.stats.visibleLights < 1024);
+  CHECK(clustered.stats.nonEmptyClusters > 0);
+  CHECK(clustered.stats.indexEntries >= clustered.stats.maxPerCluster);
+}
