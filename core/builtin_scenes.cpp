@@ -28,7 +28,7 @@ Scene makeDefaultScene(int lightCount) {
   // Near and far hug the scene so that the exponential depth slices fall where the geometry is.
   s.camera.nearPlane = 0.5f;
   s.camera.farPlane = 40.0f;
-  s.exposure = 1.0f;
+  s.exposure = 1.6f;
   s.ambient = glm::vec3(0.03f);
   s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(24.0f, 1.0f, 24.0f)),
              Material{glm::vec3(0.45f), 0.75f, 0.0f});
