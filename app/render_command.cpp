@@ -5,7 +5,7 @@
 #include "app/commands.hpp"
 #include "app/frame_stats.hpp"
 #include "app/renderer.hpp"
-#include "core/builtin_scenes.hpp"
+#include "app/scene_source.hpp"
 #include "core/context.hpp"
 
 namespace pbr {
@@ -14,10 +14,11 @@ namespace {
 
 const std::vector<OptionSpec>& renderOptions() {
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene to render (built-in: default)"},
+      {"--scene", "NAME", "scene to render (built-in: default, sphere-grid, light-wall, fresnel-floor, stress)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated) or hammon (fast form)"},
-      {"--lights", "N", "number of random point lights (default 256)"},
+      {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
+      {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
       {"--slices", "S", "cluster depth slices, exponential between near and far (default 24)"},
@@ -87,7 +88,9 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string sceneName = args.get("--scene", "default");
   const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
   const Visibility visibility = parseVisibility(args.get("--visibility", "exact"));
-  const int lightCount = args.getInt("--lights", 256, 0, 1 << 20);
+  SceneParams sceneParams;
+  if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
+  if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const Culling culling = parseCulling(args.get("--culling", "clustered"));
   ClusterConfig clusterConfig;
   clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
@@ -105,9 +108,8 @@ int runRender(const std::vector<std::string>& argv) {
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");  // reject a bad mode before making a context
 
-  Scene scene = makeBuiltinScene(sceneName, lightCount);
+  const Scene scene = resolveScene(sceneName, sceneParams);
   const float exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
-  validateScene(scene, sceneName);
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,16 @@ struct RandomLightSpec {
 // Seeded pseudo-random lights with saturated colours of random hue (max channel 1).
 std::vector<PointLight> makeRandomLights(const RandomLightSpec& spec);
 
-std::vector<std::string> builtinSceneNames();
+// What a user may change in a built-in scene from the command line.
+struct SceneParams {
+  std::optional<int> lights;          // light count (every scene)
+  std::optional<float> viewAngleDeg;  // fresnel-floor: angle between the floor normal and the view direction
+};
 
-// Throws SceneError for an unknown name. `lightCount` replaces the scene's own light count where it has one.
-Scene makeBuiltinScene(const std::string& name, int lightCount);
+std::vector<std::string> builtinSceneNames();
+bool isBuiltinScene(const std::string& name);
+
+// Throws SceneError for an unknown name or a parameter out of range.
+Scene makeBuiltinScene(const std::string& name, const SceneParams& params = {});
 
 }  // namespace pbr

@@ -15,7 +15,10 @@ GpuMesh::GpuMesh(const MeshData& data)
     GLuint location;
     GLint components;
     size_t offset;
-  } attributes[] = {{0, 3, offsetof(Vertex, position)}, {1, 3, offsetof(Vertex, normal)}, {2, 2, offsetof(Vertex, uv)}};
+  } attributes[] = {{0, 3, offsetof(Vertex, position)},
+                    {1, 3, offsetof(Vertex, normal)},
+                    {2, 2, offsetof(Vertex, uv)},
+                    {3, 4, offsetof(Vertex, tangent)}};
   for (const auto& a : attributes) {
     glEnableVertexArrayAttrib(vao, a.location);
     glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));

@@ -4,7 +4,7 @@
 
 namespace pbr {
 
-// A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv) and 32-bit indices.
+// A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv, 3 tangent) and 32-bit indices.
 class GpuMesh {
  public:
   explicit GpuMesh(const MeshData& data);

@@ -9,10 +9,11 @@ namespace pbr {
 MeshData makePlaneMesh() {
   MeshData m;
   const glm::vec3 n(0, 1, 0);
-  m.vertices = {{{-0.5f, 0, 0.5f}, n, {0, 0}},
-                {{0.5f, 0, 0.5f}, n, {1, 0}},
-                {{0.5f, 0, -0.5f}, n, {1, 1}},
-                {{-0.5f, 0, -0.5f}, n, {0, 1}}};
+  const glm::vec4 t(1, 0, 0, 1);
+  m.vertices = {{{-0.5f, 0, 0.5f}, n, {0, 0}, t},
+                {{0.5f, 0, 0.5f}, n, {1, 0}, t},
+                {{0.5f, 0, -0.5f}, n, {1, 1}, t},
+                {{-0.5f, 0, -0.5f}, n, {0, 1}, t}};
   m.indices = {0, 1, 2, 0, 2, 3};
   return m;
 }
@@ -27,7 +28,8 @@ MeshData makeSphereMesh(int segments, int rings) {
       const float u = static_cast<float>(s) / segments;
       const float phi = u * 2.0f * pi;
       const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
-      m.vertices.push_back({0.5f * n, n, {u, 1.0f - v}});
+      const glm::vec4 t(-std::sin(phi), 0.0f, -std::cos(phi), 1.0f);
+      m.vertices.push_back({0.5f * n, n, {u, 1.0f - v}, t});
     }
   }
   const uint32_t stride = static_cast<uint32_t>(segments + 1);
@@ -49,8 +51,9 @@ MeshData makeBoxMesh() {
     const glm::vec3 b = glm::cross(n, t);
     const uint32_t base = static_cast<uint32_t>(m.vertices.size());
     const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    // u runs along b and v along t; cross(n, b) = -t, hence handedness -1.
     for (const glm::vec2& c : corners) {
-      m.vertices.push_back({0.5f * (n + c.x * b + c.y * t), n, (c + 1.0f) * 0.5f});
+      m.vertices.push_back({0.5f * (n + c.x * b + c.y * t), n, (c + 1.0f) * 0.5f, glm::vec4(b, -1.0f)});
     }
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
   }

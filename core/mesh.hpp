@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace pbr {
 
@@ -11,6 +12,7 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  glm::vec4 tangent;  // xyz along +u, w = handedness: bitangent = cross(normal, tangent.xyz) * w (glTF convention)
 };
 
 struct MeshData {

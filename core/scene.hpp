@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,11 +12,35 @@
 
 namespace pbr {
 
-// The glTF metal-rough material; Blinn-Phong parameters are derived from it at shading time.
+// A decoded image for a material, with its glTF sampler state (GL enums).
+struct TextureData {
+  std::string name;  // file or glTF image name, for messages
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;  // 4 bytes per pixel, rows from the top
+  bool srgb = false;          // base colour and emissive images are sRGB-encoded
+  int wrapS = 0x2901, wrapT = 0x2901;  // GL_REPEAT
+  int minFilter = 0x2703, magFilter = 0x2601;  // GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// The glTF metal-rough material; Blinn-Phong parameters are derived from it at shading time. Texture fields
+// index Scene::textures (-1: none); factors multiply the texture values as in glTF.
 struct Material {
   glm::vec3 baseColor{0.8f};  // linear
   float roughness = 0.5f;     // perceptual roughness in [0,1]
   float metalness = 0.0f;
+  glm::vec3 emissive{0.0f};   // linear emitted radiance
+  float alpha = 1.0f;         // base colour alpha factor
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  int baseColorTexture = -1;
+  int metallicRoughnessTexture = -1;  // G = roughness, B = metalness
+  int normalTexture = -1;
+  float normalScale = 1.0f;
+  int occlusionTexture = -1;  // R = ambient occlusion
+  float occlusionStrength = 1.0f;
+  int emissiveTexture = -1;
 };
 
 // Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.
@@ -41,6 +66,7 @@ struct Scene {
   float exposure = 1.0f;
   glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model
   std::vector<MeshData> meshes;
+  std::vector<TextureData> textures;
   std::vector<SceneObject> objects;
   std::vector<PointLight> lights;
 
