@@ -40,8 +40,7 @@ Query& Profiler::nextQuery() {
   return current_.queries[current_.used++];
 }
 
-void Profiler::beginPass(const char* name) {
-  current_.timing.passes.push_back({name, 0.0});
+void Profiler::stamp() {
   if (mode_ == TimingMode::GpuQueries) {
     glQueryCounter(nextQuery().id(), GL_TIMESTAMP);
   } else {
@@ -50,13 +49,18 @@ void Profiler::beginPass(const char* name) {
   }
 }
 
+void Profiler::beginPass(const char* name) {
+  // Stamps are paired in order, so a pass inside another would be timed wrongly.
+  if (passOpen_) throw std::logic_error(std::string("profiler: pass '") + name + "' begins inside another pass");
+  passOpen_ = true;
+  current_.timing.passes.push_back({name, 0.0});
+  stamp();
+}
+
 void Profiler::endPass() {
-  if (mode_ == TimingMode::GpuQueries) {
-    glQueryCounter(nextQuery().id(), GL_TIMESTAMP);
-  } else {
-    glFinish();
-    current_.cpuStamps.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart_).count());
-  }
+  if (!passOpen_) throw std::logic_error("profiler: endPass without beginPass");
+  passOpen_ = false;
+  stamp();
 }
 
 void Profiler::endFrame() {

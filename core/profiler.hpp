@@ -36,6 +36,7 @@ class Profiler {
   TimingMode mode() const { return mode_; }
 
   void beginFrame();
+  // Passes run one after another: beginPass inside an open pass, or endPass without one, throws std::logic_error.
   void beginPass(const char* name);
   void endPass();
   void endFrame();
@@ -53,11 +54,13 @@ class Profiler {
     size_t used = 0;
   };
   Query& nextQuery();
+  void stamp();
   bool resolve(Frame& frame, bool wait);
   void drain(bool wait);
 
   TimingMode mode_;
   int frameCounter_ = 0;
+  bool passOpen_ = false;
   Frame current_;
   Clock::time_point frameStart_;
   std::deque<Frame> inFlight_;

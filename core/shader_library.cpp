@@ -12,6 +12,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Mesa reports many errors in included code with source string 0, whatever `#line` set, but keeps the line
+// number: so every file's lines are also numbered from its own base, index << kFileLineShift.
+constexpr unsigned kFileLineShift = 20;
+
+std::string lineDirective(int line, int index) {
+  return "#line " + std::to_string((static_cast<long long>(index) << kFileLineShift) + line) + " " +
+         std::to_string(index) + "\n";
+}
+
 std::string readFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ShaderError(path.string() + ": cannot open shader file");
@@ -33,7 +42,7 @@ class Expander {
     out_.text += first + "\n";
     for (const ShaderDefine& d : defines) out_.text += "#define " + d.name + " " + d.value + "\n";
     const int index = addFile(displayName);
-    out_.text += "#line 2 " + std::to_string(index) + "\n";
+    out_.text += lineDirective(2, index);
     body(in, dir, index, 2);
   }
 
@@ -49,7 +58,7 @@ class Expander {
   }
 
   void body(std::istream& in, const fs::path& dir, int index, int firstLine) {
-    static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
     std::string line;
     int lineNo = firstLine;
     for (; std::getline(in, line); ++lineNo) {
@@ -73,13 +82,13 @@ class Expander {
       // preprocessor can tell which of two conditional includes of the same file comes first.
       const std::string guard = "PBR_INCLUDED_" + std::to_string(std::hash<std::string>{}(key));
       const int child = addFile(display(target));
-      out_.text += "#ifndef " + guard + "\n#define " + guard + "\n#line 1 " + std::to_string(child) + "\n";
+      out_.text += "#ifndef " + guard + "\n#define " + guard + "\n" + lineDirective(1, child);
       stack_.push_back(key);
       std::istringstream childIn(readFile(target));
       body(childIn, target.parent_path(), child, 1);
       stack_.pop_back();
       out_.text += "#endif\n";
-      out_.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+      out_.text += lineDirective(lineNo + 1, index);
     }
   }
 
@@ -181,10 +190,17 @@ std::string remapShaderLog(const std::string& log, const std::vector<std::string
   while (std::getline(in, line)) {
     std::smatch m;
     if (line.empty()) continue;
-    if (std::regex_match(line, m, mesaRe) || std::regex_match(line, m, nvidiaRe)) {
-      const size_t index = std::stoul(m[1].str());
-      const std::string file = index < files.size() ? files[index] : "<source " + m[1].str() + ">";
-      result += file + ":" + m[2].str() + ": " + m[3].str() + "\n";
+    const bool matched = std::regex_match(line, m, mesaRe) || std::regex_match(line, m, nvidiaRe);
+    if (matched && m[1].length() < 10 && m[2].length() < 10) {
+      unsigned long long index = std::stoull(m[1].str());
+      unsigned long long lineNo = std::stoull(m[2].str());
+      // A line number past the first file's range carries its file (see lineDirective).
+      if (lineNo >> kFileLineShift) {
+        index = lineNo >> kFileLineShift;
+        lineNo &= (1ull << kFileLineShift) - 1;
+      }
+      const std::string file = index < files.size() ? files[index] : "<source " + std::to_string(index) + ">";
+      result += file + ":" + std::to_string(lineNo) + ": " + m[3].str() + "\n";
     } else {
       result += line + "\n";
     }
