@@ -17,6 +17,7 @@ struct Command {
 
 const Command kCommands[] = {
     {"render", pbr::runRender, "render a scene headlessly, print per-pass timings, write PNG/EXR/PFM captures"},
+    {"experiment", pbr::runExperiment, "reproduce a Blinn-Phong vs PBR experiment: images, CSV and chart"},
 };
 
 void printUsage(FILE* out) {

@@ -1,0 +1,94 @@
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/args.hpp"
+#include "app/commands.hpp"
+#include "app/experiments.hpp"
+#include "core/context.hpp"
+
+namespace pbr {
+
+namespace {
+
+const std::vector<OptionSpec>& experimentOptions() {
+  static const std::vector<OptionSpec> specs = {
+      {"--out", "DIR", "folder for the images, NAME.csv and the chart NAME.png (default out/experiments)"},
+      {"--size", "WxH", "frame size (default 640x360)"},
+      {"--frames", "K", "triangles: timed frames per configuration after one warm-up (default 5)"},
+      {"--egl-platform", "P", "auto (default), surfaceless or device"},
+  };
+  return specs;
+}
+
+std::string shellQuote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+void printTable(const ExperimentTable& t) {
+  std::printf("%-16s", t.xLabel.c_str());
+  for (const std::string& c : t.columns) std::printf(" %22s", c.c_str());
+  std::printf("\n");
+  for (size_t i = 0; i < t.x.size(); ++i) {
+    std::printf("%-16g", t.x[i]);
+    for (double v : t.rows[i]) std::printf(" %22.6g", v);
+    std::printf("\n");
+  }
+}
+
+// Charts are drawn by scripts/plot_csv.py with Debian's matplotlib (installed by scripts/install-deps.sh).
+void writeChart(const std::string& csv, const std::string& png, const ExperimentResult& r) {
+  std::string cmd = "/usr/bin/python3 " + shellQuote(std::string(PBR_SCRIPT_DIR) + "/plot_csv.py") + " " + shellQuote(csv) +
+                    " " + shellQuote(png) + " --title " + shellQuote(r.chartTitle) + " --ylabel " + shellQuote(r.yLabel);
+  if (r.logX) cmd += " --logx";
+  if (r.logY) cmd += " --logy";
+  if (std::system(cmd.c_str()) != 0) {
+    throw std::runtime_error(png + ": the chart could not be drawn (scripts/plot_csv.py needs python3-matplotlib)");
+  }
+}
+
+}  // namespace
+
+int runExperiment(const std::vector<std::string>& argv) {
+  const auto& specs = experimentOptions();
+  const bool wantsHelp = argv.empty() || argv[0] == "--help" || argv[0] == "-h";
+  if (wantsHelp) {
+    std::cout << Args::helpText("pbr experiment NAME [options]",
+                                "Reproduces a Blinn-Phong vs PBR comparison; NAME is one of:\n"
+                                "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 degrees\n"
+                                "  saturation  fully saturated pixels of a wall under 1..10 co-located lights\n"
+                                "  triangles   frame time of both models under 100 lights as triangles grow",
+                                specs);
+    return argv.empty() ? 2 : 0;
+  }
+  const std::string name = argv[0];
+  if (name != "fresnel" && name != "saturation" && name != "triangles") {
+    throw UsageError("unknown experiment '" + name + "' (expected fresnel, saturation or triangles)");
+  }
+  Args args(specs, std::vector<std::string>(argv.begin() + 1, argv.end()));
+  if (args.helpRequested()) return runExperiment({"--help"});
+  const std::string outDir = args.get("--out", "out/experiments");
+  const glm::ivec2 size = args.getSize("--size", {640, 360});
+  const int frames = args.getInt("--frames", 5, 1, 1000);
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+
+  auto context = createHeadlessContext(platform);
+  std::printf("renderer: %s | %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str(),
+              context->info().platform.c_str());
+  const ShaderLibrary shaders;
+  const ExperimentResult result = name == "fresnel"      ? runFresnelExperiment(shaders, size)
+                                  : name == "saturation" ? runSaturationExperiment(shaders, size)
+                                                         : runTrianglesExperiment(shaders, size, frames);
+  std::filesystem::create_directories(outDir);
+  for (const ExperimentImage& img : result.images) writePng(outDir + "/" + img.file, img.image);
+  const std::string csv = outDir + "/" + name + ".csv", png = outDir + "/" + name + ".png";
+  writeExperimentCsv(csv, result.table);
+  writeChart(csv, png, result);
+  printTable(result.table);
+  std::printf("wrote %s, %s and %zu images in %s\n", csv.c_str(), png.c_str(), result.images.size(), outDir.c_str());
+  return 0;
+}
+
+}  // namespace pbr
