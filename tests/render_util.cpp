@@ -8,16 +8,7 @@ namespace pbr::test {
 RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames,
                           const ClusterConfig& clusters) {
   const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, size.x, size.y, clusters);
-  Profiler profiler(TimingMode::Serializing);
-  RenderedFrame out;
-  for (int i = 0; i < frames; ++i) {
-    FrameCapture capture;
-    if (i == frames - 1) capture = {&out.ldr, &out.hdr};
-    renderer.renderFrame(options, profiler, capture);
-  }
-  out.stats = renderer.lightStats();
-  return out;
+  return renderOffscreen(shaders, scene, size, options, frames, clusters);
 }
 
 double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor) {

@@ -1,18 +1,14 @@
 #pragma once
 #include <glm/vec2.hpp>
 
-#include "app/renderer.hpp"
+#include "app/offscreen.hpp"
 
 namespace pbr::test {
 
-struct RenderedFrame {
-  ImageRgbaF hdr;
-  ImageRgba8 ldr;
-  LightStats stats;
-};
+using RenderedFrame = RenderedFrames;
 
-// Renders `frames` frames (the last one captured) so that the clustered path has sized its index list from
-// measured demand by the time it is read.
+// renderOffscreen with the project's shaders: `frames` frames, the last one captured, so that the clustered
+// path has sized its index list from measured demand by the time it is read.
 RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames = 2,
                           const ClusterConfig& clusters = {});
 
