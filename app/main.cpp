@@ -17,7 +17,9 @@ struct Command {
 
 const Command kCommands[] = {
     {"render", pbr::runRender, "render a scene headlessly, print per-pass timings, write PNG/EXR/PFM captures"},
+    {"bench", pbr::runBench, "sweep light counts, culling and shading models; per-pass times as table, CSV, JSON, trace"},
     {"experiment", pbr::runExperiment, "reproduce a Blinn-Phong vs PBR experiment: images, CSV and chart"},
+    {"reference", pbr::runReference, "CPU ray-cast reference frame in double precision (analytic shapes), EXR/PFM"},
 };
 
 void printUsage(FILE* out) {

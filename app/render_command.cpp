@@ -14,7 +14,8 @@ namespace {
 
 const std::vector<OptionSpec>& renderOptions() {
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene to render (built-in: default, sphere-grid, light-wall, fresnel-floor, stress)"},
+      {"--scene", "NAME|FILE",
+       "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet) or scene file (.json, .gltf, .glb)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated) or hammon (fast form)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},

@@ -11,13 +11,13 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
       height_(height),
       frameData_(makeFrameBlock(scene.camera, width, height)),
       frame_(frameData_),
-      gbuffer_(width, height),
+      hdr_(GL_RGBA16F, width, height),
+      gbuffer_(width, height, hdr_),
       gbufferPass_(shaders, scene),
       clusters_(shaders, clusterConfig),
       lightingPass_(shaders),
       postPass_(shaders),
       debugPass_(shaders),
-      hdr_(GL_RGBA16F, width, height),
       ldr_(GL_RGBA8, width, height) {
   lights_.upload(scene.lights);
 }

@@ -57,6 +57,7 @@ class Renderer {
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
   const LightClusters& clusters() const { return clusters_; }
+  const LightBuffer& lights() const { return lights_; }
   const GBuffer& gbuffer() const { return gbuffer_; }
 
   int width() const { return width_; }
@@ -67,6 +68,7 @@ class Renderer {
   int width_, height_;
   FrameBlock frameData_;
   UniformBuffer<FrameBlock> frame_;
+  Texture hdr_;  // radiance: emission from the G-buffer pass, then reflected light from the lighting pass
   GBuffer gbuffer_;
   GBufferPass gbufferPass_;
   LightBuffer lights_;
@@ -75,7 +77,6 @@ class Renderer {
   FrameOptions lastOptions_;
   PostPass postPass_;
   ClusterDebugPass debugPass_;
-  Texture hdr_;
   Texture ldr_;
 };
 

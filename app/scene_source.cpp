@@ -1,9 +1,27 @@
 #include "app/scene_source.hpp"
 
+#include <filesystem>
+
+#include "app/args.hpp"
+#include "core/scene_json.hpp"
+
 namespace pbr {
 
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
-  Scene scene = makeBuiltinScene(nameOrPath, params);
+  if (params.viewAngleDeg && nameOrPath != "fresnel-floor") {
+    throw UsageError("--view-angle applies only to --scene fresnel-floor");
+  }
+  Scene scene;
+  if (isBuiltinScene(nameOrPath)) {
+    scene = makeBuiltinScene(nameOrPath, params);
+  } else if (std::filesystem::exists(nameOrPath)) {
+    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1));
+  } else {
+    std::string names;
+    for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+    throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + names +
+                     ") and no such file exists");
+  }
   validateScene(scene, nameOrPath);
   return scene;
 }

@@ -5,7 +5,9 @@
 
 namespace pbr {
 
-// The scene a `--scene` argument names: a built-in scene, validated. Throws SceneError with a one-line message.
+// The scene a `--scene` argument names: a built-in scene, or else an existing scene file (.json, .gltf, .glb),
+// validated. Throws SceneError with a one-line message, or UsageError for --view-angle with a scene other than
+// fresnel-floor.
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 
 }  // namespace pbr

@@ -13,4 +13,14 @@ constexpr unsigned kLightVisibleSsbo = 3;
 constexpr unsigned kClusterBoundsSsbo = 4;
 constexpr unsigned kClusterStatusSsbo = 5;
 constexpr unsigned kLightingStatsSsbo = 6;
+// Texture units of the G-buffer pass's material maps.
+constexpr unsigned kBaseColorMapUnit = 0;
+constexpr unsigned kMetallicRoughnessMapUnit = 1;
+constexpr unsigned kNormalMapUnit = 2;
+constexpr unsigned kOcclusionMapUnit = 3;
+constexpr unsigned kEmissiveMapUnit = 4;
+// Image-based lighting (ibl/, shaders/ibl/ibl_sample.glsl); its units clear the G-buffer and material units 0-4.
+constexpr unsigned kIblUbo = 5;
+constexpr unsigned kIblSpecularUnit = 8;
+constexpr unsigned kIblDfgUnit = 9;
 }  // namespace pbr::binding

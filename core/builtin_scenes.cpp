@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/assets.hpp"
+#include "core/gltf_loader.hpp"
 #include "core/random.hpp"
 
 namespace pbr {
@@ -201,6 +203,37 @@ Scene makeStress(const SceneParams& params) {
   return s;
 }
 
+// The DamagedHelmet glTF sample (every metal-rough map, an emissive visor) standing on a floor in a ring of
+// coloured lights; their total power stays the same whatever their count.
+Scene makeHelmet(const SceneParams& params) {
+  Scene s;
+  s.name = "helmet";
+  const Bounds b = appendGltf(s, assetPath("DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
+  const glm::vec3 center = 0.5f * (b.min + b.max);
+  const float size = std::max({b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+  s.addShape(Shape::Plane, placed(glm::vec3(center.x, b.min.y, center.z), glm::vec3(8.0f * size, 1.0f, 8.0f * size)),
+             Material{glm::vec3(0.25f), 0.7f, 0.0f});
+  s.camera.position = center + glm::vec3(0.5f, 0.2f, 2.3f) * size;
+  s.camera.target = center - glm::vec3(0.0f, 0.05f, 0.0f) * size;
+  s.camera.fovYDeg = 40.0f;
+  s.camera.nearPlane = 0.05f * size;
+  s.camera.farPlane = 10.0f * size;
+  s.exposure = 1.2f;
+  s.ambient = glm::vec3(0.15f);
+  const int count = params.lights.value_or(16);
+  for (int i = 0; i < count; ++i) {
+    const float angle = 2.0f * 3.14159265f * (i + 0.5f) / static_cast<float>(count);
+    const float height = 0.15f + 0.35f * static_cast<float>(i % 3);  // three tiers, bottom to above the top
+    PointLight l;
+    l.position = center + glm::vec3(std::cos(angle) * 1.3f, height - 0.2f, std::sin(angle) * 1.3f) * size;
+    l.radius = 3.0f * size;
+    l.color = hueToRgb((i + 0.5f) / static_cast<float>(count));
+    l.luminousPower = 1500.0f / static_cast<float>(count);
+    s.lights.push_back(l);
+  }
+  return s;
+}
+
 struct Builtin {
   const char* name;
   Scene (*make)(const SceneParams&);
@@ -208,7 +241,7 @@ struct Builtin {
 
 const Builtin kBuiltins[] = {{"default", makeDefaultScene},   {"sphere-grid", makeSphereGrid},
                              {"light-wall", makeLightWall},    {"fresnel-floor", makeFresnelFloor},
-                             {"stress", makeStress}};
+                             {"stress", makeStress},         {"helmet", makeHelmet}};
 
 }  // namespace
 

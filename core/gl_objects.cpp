@@ -15,6 +15,8 @@ GLuint VertexArrayTraits::create() { GLuint id = 0; glCreateVertexArrays(1, &id)
 void VertexArrayTraits::destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
 GLuint ProgramTraits::create() { return glCreateProgram(); }
 void ProgramTraits::destroy(GLuint id) { glDeleteProgram(id); }
+GLuint SamplerTraits::create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
+void SamplerTraits::destroy(GLuint id) { glDeleteSamplers(1, &id); }
 GLuint QueryTraits::create() { GLuint id = 0; glGenQueries(1, &id); return id; }
 void QueryTraits::destroy(GLuint id) { glDeleteQueries(1, &id); }
 
@@ -37,6 +39,13 @@ Texture::Texture(GLenum internalFormat, int width, int height, int levels)
   glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, levels > 1 ? GL_LINEAR : GL_NEAREST);
   glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+Sampler::Sampler(GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter) {
+  glSamplerParameteri(id(), GL_TEXTURE_WRAP_S, wrapS);
+  glSamplerParameteri(id(), GL_TEXTURE_WRAP_T, wrapT);
+  glSamplerParameteri(id(), GL_TEXTURE_MIN_FILTER, minFilter);
+  glSamplerParameteri(id(), GL_TEXTURE_MAG_FILTER, magFilter);
 }
 
 void Framebuffer::attach(GLenum attachment, const Texture& texture) {

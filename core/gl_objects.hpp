@@ -54,6 +54,10 @@ struct ProgramTraits {
   static GLuint create();
   static void destroy(GLuint id);
 };
+struct SamplerTraits {
+  static GLuint create();
+  static void destroy(GLuint id);
+};
 struct QueryTraits {
   static GLuint create();
   static void destroy(GLuint id);
@@ -115,6 +119,16 @@ class Program {
 
  private:
   GlHandle<ProgramTraits> handle_;
+};
+
+// Sampling state (wrap modes, filters) kept apart from the images it applies to; bound per texture unit.
+class Sampler {
+ public:
+  Sampler(GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter);
+  GLuint id() const { return handle_.id(); }
+
+ private:
+  GlHandle<SamplerTraits> handle_;
 };
 
 class Query {

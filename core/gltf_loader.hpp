@@ -13,10 +13,17 @@ struct Bounds {
   glm::vec3 max{0.0f};
 };
 
-// Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive becomes an
-// object (its node's world transform pre-multiplied by `transform`), materials and textures are appended, and
-// KHR_lights_punctual point lights join scene.lights. Returns the world bounds of what was appended. Throws
-// SceneError naming the file and what is wrong.
+// A KHR_lights_punctual point light without `range` gets the radius where its illuminance I/d^2 (I in candela
+// times the brightest colour channel) falls to this value; the renderer's windowed attenuation ends it there.
+constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
+
+// Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive (TRIANGLES,
+// strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
+// images they use are appended, and KHR_lights_punctual point lights join scene.lights. Normals missing from a
+// primitive are generated flat, tangents missing are generated per vertex. Points and lines, spot and directional
+// lights are skipped and alphaMode BLEND is drawn opaque, each with one line on stderr. Returns the world bounds of
+// the geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
+// other than KHR_lights_punctual and KHR_materials_emissive_strength, leaving `scene` as it was.
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
 
 }  // namespace pbr

@@ -1,5 +1,7 @@
 #include "core/profiler.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include "core/context.hpp"
@@ -45,7 +47,7 @@ void Profiler::stamp() {
     glQueryCounter(nextQuery().id(), GL_TIMESTAMP);
   } else {
     glFinish();
-    current_.cpuStamps.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart_).count());
+    current_.cpuStamps.push_back(std::chrono::duration<double, std::milli>(Clock::now() - epoch_).count());
   }
 }
 
@@ -79,27 +81,36 @@ void Profiler::drain(bool wait) {
 }
 
 bool Profiler::resolve(Frame& frame, bool wait) {
+  // Stamps relative to the frame's first one: GPU timestamps are nanoseconds from an arbitrary epoch, too large
+  // for a double to keep sub-microsecond differences once converted.
   std::vector<double> stamps;
+  double origin = 0.0;
   if (mode_ == TimingMode::Serializing) {
-    stamps = frame.cpuStamps;
+    origin = frame.cpuStamps.empty() ? 0.0 : frame.cpuStamps.front();
+    for (double ms : frame.cpuStamps) stamps.push_back(ms - origin);
   } else {
     if (frame.used > 0 && !wait) {
       GLint available = GL_FALSE;
       glGetQueryObjectiv(frame.queries[frame.used - 1].id(), GL_QUERY_RESULT_AVAILABLE, &available);
       if (!available) return false;
     }
+    GLuint64 first = 0;
     for (size_t i = 0; i < frame.used; ++i) {
       GLuint64 ns = 0;
       glGetQueryObjectui64v(frame.queries[i].id(), GL_QUERY_RESULT, &ns);
-      stamps.push_back(static_cast<double>(ns) * 1e-6);
+      if (i == 0) first = ns;
+      stamps.push_back(static_cast<double>(static_cast<int64_t>(ns - first)) * 1e-6);
     }
+    origin = static_cast<double>(first) * 1e-6;
   }
   FrameTiming& t = frame.timing;
+  t.startMs = origin;
   for (size_t p = 0; p < t.passes.size(); ++p) {
     const double ms = stamps[2 * p + 1] - stamps[2 * p];
     t.passes[p].ms = ms > 0.0 ? ms : 0.0;
+    t.passes[p].startMs = std::max(stamps[2 * p], 0.0);
   }
-  t.gpuMs = stamps.empty() ? 0.0 : stamps.back() - stamps.front();
+  t.gpuMs = stamps.empty() ? 0.0 : std::max(stamps.back(), 0.0);
   return true;
 }
 

@@ -20,6 +20,7 @@ const char* describe(TimingMode mode);
 struct PassTiming {
   std::string name;
   double ms = 0.0;
+  double startMs = 0.0;  // from the start of the frame's first pass
 };
 
 struct FrameTiming {
@@ -27,12 +28,15 @@ struct FrameTiming {
   std::vector<PassTiming> passes;
   double gpuMs = 0.0;  // first pass start to last pass end
   double cpuMs = 0.0;  // beginFrame to endFrame on the CPU clock
+  // Start of the first pass on the timing clock (GPU timestamps, or the CPU clock since the profiler was made):
+  // only differences between frames of one profiler mean anything, e.g. to lay frames out on a timeline.
+  double startMs = 0.0;
   double pass(const std::string& name) const;
 };
 
 class Profiler {
  public:
-  explicit Profiler(TimingMode mode) : mode_(mode) {}
+  explicit Profiler(TimingMode mode) : mode_(mode), epoch_(Clock::now()) {}
   TimingMode mode() const { return mode_; }
 
   void beginFrame();
@@ -42,6 +46,8 @@ class Profiler {
   void endFrame();
 
   // Frames whose results are in, oldest first. With wait = false it never blocks on an unfinished query.
+  // Query objects are recycled from frames already read, and new ones are made while every earlier set is still
+  // in flight: however many frames are queued, neither endFrame nor takeResults(false) waits for the GPU.
   std::vector<FrameTiming> takeResults(bool wait);
   size_t framesInFlight() const { return inFlight_.size(); }
 
@@ -50,7 +56,7 @@ class Profiler {
   struct Frame {
     FrameTiming timing;
     std::vector<Query> queries;  // begin/end timestamp per pass
-    std::vector<double> cpuStamps;
+    std::vector<double> cpuStamps;  // ms since epoch_
     size_t used = 0;
   };
   Query& nextQuery();
@@ -59,6 +65,7 @@ class Profiler {
   void drain(bool wait);
 
   TimingMode mode_;
+  Clock::time_point epoch_;
   int frameCounter_ = 0;
   bool passOpen_ = false;
   Frame current_;

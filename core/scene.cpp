@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace pbr {
 
@@ -75,6 +76,31 @@ void validateScene(const Scene& scene, const std::string& source) {
     c.color(base + ".material.base_color", o.material.baseColor);
     c.inRange(base + ".material.roughness", o.material.roughness, 0.0f, 1.0f);
     c.inRange(base + ".material.metalness", o.material.metalness, 0.0f, 1.0f);
+    const Material& m = o.material;
+    c.color(base + ".material.emissive", m.emissive);
+    c.inRange(base + ".material.alpha", m.alpha, 0.0f, 1.0f);
+    c.finite(base + ".material.alpha_cutoff", m.alphaCutoff);
+    c.finite(base + ".material.normal_scale", m.normalScale);
+    c.inRange(base + ".material.occlusion_strength", m.occlusionStrength, 0.0f, 1.0f);
+    const std::pair<const char*, int> maps[] = {{"base_color_texture", m.baseColorTexture},
+                                                {"metallic_roughness_texture", m.metallicRoughnessTexture},
+                                                {"normal_texture", m.normalTexture},
+                                                {"occlusion_texture", m.occlusionTexture},
+                                                {"emissive_texture", m.emissiveTexture}};
+    for (const auto& [name, index] : maps) {
+      if (index < -1 || index >= static_cast<int>(scene.textures.size())) {
+        c.fail(base + ".material." + name, "no such texture", float(index));
+      }
+    }
+  }
+  for (size_t i = 0; i < scene.textures.size(); ++i) {
+    const TextureData& t = scene.textures[i];
+    const std::string base = "textures[" + std::to_string(i) + "] (" + t.name + ")";
+    c.atLeast(base + ".width", float(t.width), 1.0f);
+    c.atLeast(base + ".height", float(t.height), 1.0f);
+    if (t.rgba.size() != static_cast<size_t>(t.width) * static_cast<size_t>(t.height) * 4) {
+      c.fail(base + ".rgba", "must hold width x height x 4 bytes", float(t.rgba.size()));
+    }
   }
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const std::string base = "lights[" + std::to_string(i) + "]";

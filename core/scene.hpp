@@ -41,6 +41,7 @@ struct Material {
   int occlusionTexture = -1;  // R = ambient occlusion
   float occlusionStrength = 1.0f;
   int emissiveTexture = -1;
+  bool doubleSided = false;  // drawn without back-face culling, the normal flipped on back faces
 };
 
 // Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.

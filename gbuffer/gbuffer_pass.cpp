@@ -1,6 +1,9 @@
 #include "gbuffer/gbuffer_pass.hpp"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
+#include <map>
 
 #include <glm/matrix.hpp>
 
@@ -18,15 +21,20 @@ GLsizeiptr alignedStride() {
   return (static_cast<GLsizeiptr>(sizeof(ObjectBlock)) + a - 1) / a * a;
 }
 
+bool mirrors(const glm::mat4& transform) { return glm::determinant(glm::mat3(transform)) < 0.0f; }
+
 std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr stride) {
   std::vector<unsigned char> bytes(static_cast<size_t>(stride) * scene.objects.size());
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
+    const Material& m = o.material;
     ObjectBlock b{};
     b.model = o.transform;
     b.normalMatrix = glm::transpose(glm::inverse(o.transform));
-    b.baseColor = glm::vec4(o.material.baseColor, 1.0f);
-    b.material = glm::vec4(o.material.roughness, o.material.metalness, 0.0f, 0.0f);
+    b.baseColor = glm::vec4(m.baseColor, m.alpha);
+    b.material = glm::vec4(m.roughness, m.metalness, m.normalScale, m.occlusionStrength);
+    b.emissive = glm::vec4(m.emissive, m.alphaCutoff);
+    b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, 0.0f, 0.0f, 0.0f);
     std::memcpy(&bytes[i * static_cast<size_t>(stride)], &b, sizeof b);
   }
   return bytes;
@@ -34,15 +42,68 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
 
 }  // namespace
 
+std::array<int, GBufferPass::kMapCount> GBufferPass::materialMaps(const Material& m) {
+  static_assert(binding::kBaseColorMapUnit < kMapCount && binding::kMetallicRoughnessMapUnit < kMapCount &&
+                    binding::kNormalMapUnit < kMapCount && binding::kOcclusionMapUnit < kMapCount &&
+                    binding::kEmissiveMapUnit < kMapCount,
+                "material maps are bound to units 0 .. kMapCount - 1");
+  std::array<int, kMapCount> maps{};
+  maps[binding::kBaseColorMapUnit] = m.baseColorTexture;
+  maps[binding::kMetallicRoughnessMapUnit] = m.metallicRoughnessTexture;
+  maps[binding::kNormalMapUnit] = m.normalTexture;
+  maps[binding::kOcclusionMapUnit] = m.occlusionTexture;
+  maps[binding::kEmissiveMapUnit] = m.emissiveTexture;
+  return maps;
+}
+
+ShaderDefines GBufferPass::permutation(const Material& m) {
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  return {{"BASE_COLOR_MAP", flag(m.baseColorTexture >= 0)},
+          {"METALLIC_ROUGHNESS_MAP", flag(m.metallicRoughnessTexture >= 0)},
+          {"NORMAL_MAP", flag(m.normalTexture >= 0)},
+          {"OCCLUSION_MAP", flag(m.occlusionTexture >= 0)},
+          {"EMISSIVE_MAP", flag(m.emissiveTexture >= 0)},
+          {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)}};
+}
+
 GBufferPass::GBufferPass(const ShaderLibrary& shaders, const Scene& scene)
-    : program_(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag")),
-      blockStride_(alignedStride()),
-      objectBlocks_(static_cast<size_t>(blockStride_) * scene.objects.size(), packObjectBlocks(scene, blockStride_).data(), 0) {
+    : blockStride_(alignedStride()),
+      objectBlocks_(static_cast<size_t>(blockStride_) * scene.objects.size(),
+                    packObjectBlocks(scene, blockStride_).data(), 0) {
   meshes_.reserve(scene.meshes.size());
   for (const MeshData& m : scene.meshes) meshes_.emplace_back(m);
+  textures_.reserve(scene.textures.size());
+  for (const TextureData& t : scene.textures) textures_.emplace_back(t);
+
+  std::map<std::string, size_t> programIndex;  // by the permutation's define list
   for (size_t i = 0; i < scene.objects.size(); ++i) {
-    draws_.push_back({scene.objects[i].mesh, static_cast<GLintptr>(i) * blockStride_});
+    const SceneObject& o = scene.objects[i];
+    const ShaderDefines defines = permutation(o.material);
+    std::string key;
+    for (const ShaderDefine& d : defines) key += d.value;
+    auto it = programIndex.find(key);
+    if (it == programIndex.end()) {
+      programs_.push_back(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
+      it = programIndex.emplace(key, programs_.size() - 1).first;
+    }
+    Draw d{};
+    d.mesh = o.mesh;
+    d.program = it->second;
+    d.blockOffset = static_cast<GLintptr>(i) * blockStride_;
+    d.doubleSided = o.material.doubleSided;
+    d.mirrored = mirrors(o.transform);
+    const std::array<int, kMapCount> maps = materialMaps(o.material);
+    for (size_t unit = 0; unit < kMapCount; ++unit) {
+      if (maps[unit] < 0) continue;
+      const GpuTexture& t = textures_.at(static_cast<size_t>(maps[unit]));
+      d.textures[unit] = t.texture().id();
+      d.samplers[unit] = t.sampler().id();
+      d.textured = true;
+    }
+    draws_.push_back(d);
   }
+  // Fewer program switches; the depth test makes the order of opaque draws otherwise irrelevant.
+  std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.program < b.program; });
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {
@@ -52,20 +113,35 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
-  glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glEnable(GL_FRAMEBUFFER_SRGB);
   const float zeros[4] = {0, 0, 0, 0};
   const float farDepth = 0.0f;
-  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, zeros);
+  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, zeros);
   glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
 
-  program_.use();
   frame.bind(binding::kFrameUbo);
+  size_t bound = std::numeric_limits<size_t>::max();
   for (const Draw& d : draws_) {
+    if (d.program != bound) programs_[d.program].use();
+    bound = d.program;
+    if (d.doubleSided) {
+      glDisable(GL_CULL_FACE);
+    } else {
+      glEnable(GL_CULL_FACE);
+    }
+    glFrontFace(d.mirrored ? GL_CW : GL_CCW);
+    if (d.textured) {
+      glBindTextures(0, static_cast<GLsizei>(kMapCount), d.textures.data());
+      glBindSamplers(0, static_cast<GLsizei>(kMapCount), d.samplers.data());
+    }
     glBindBufferRange(GL_UNIFORM_BUFFER, binding::kObjectUbo, objectBlocks_.id(), d.blockOffset, sizeof(ObjectBlock));
     meshes_[static_cast<size_t>(d.mesh)].draw();
   }
+  // Later passes fetch from these units with their own (mipmap-less) textures: a sampler left bound would make
+  // them incomplete.
+  glBindSamplers(0, static_cast<GLsizei>(kMapCount), nullptr);
+  glFrontFace(GL_CCW);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);

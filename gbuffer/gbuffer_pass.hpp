@@ -1,8 +1,10 @@
 #pragma once
+#include <array>
 #include <vector>
 
 #include "core/frame_block.hpp"
 #include "core/gpu_mesh.hpp"
+#include "core/gpu_texture.hpp"
 #include "core/scene.hpp"
 #include "core/shader_library.hpp"
 #include "core/uniform_buffer.hpp"
@@ -10,19 +12,36 @@
 
 namespace pbr {
 
-// Rasterizes a scene's objects into the G-buffer. Meshes and per-object blocks are uploaded once per scene.
+// Rasterizes a scene's objects into the G-buffer and their emitted radiance into the frame's radiance target.
+// Meshes, textures (with mipmaps) and per-object blocks are uploaded once per scene. Each material selects a
+// shader permutation (the maps it samples, alpha masking), compiled once for all the draws that use it.
 class GBufferPass {
  public:
   GBufferPass(const ShaderLibrary& shaders, const Scene& scene);
   void render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const;
 
+  // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
+  // OCCLUSION_MAP, EMISSIVE_MAP and ALPHA_MASK, each 0 or 1.
+  static ShaderDefines permutation(const Material& material);
+
  private:
+  static constexpr size_t kMapCount = 5;
   struct Draw {
     int mesh;
+    size_t program;
     GLintptr blockOffset;
+    bool doubleSided;
+    bool mirrored;  // det(model) < 0: front faces wind clockwise
+    bool textured;
+    std::array<GLuint, kMapCount> textures;  // by texture unit; 0 where the draw samples nothing
+    std::array<GLuint, kMapCount> samplers;
   };
-  Program program_;
+  // The material's Scene::textures index per texture unit, -1 for none.
+  static std::array<int, kMapCount> materialMaps(const Material& material);
+
+  std::vector<Program> programs_;
   std::vector<GpuMesh> meshes_;
+  std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;
   GLsizeiptr blockStride_;
   Buffer objectBlocks_;

@@ -8,9 +8,11 @@ namespace pbr {
 struct ObjectBlock {
   glm::mat4 model;
   glm::mat4 normalMatrix;  // inverse transpose of the model matrix (upper 3x3 used)
-  glm::vec4 baseColor;     // linear rgb
-  glm::vec4 material;      // roughness, metalness
+  glm::vec4 baseColor;     // linear rgb factor, alpha factor
+  glm::vec4 material;      // roughness, metalness, normal scale, occlusion strength
+  glm::vec4 emissive;      // linear emitted radiance factor, alpha cutoff
+  glm::vec4 orientation;   // x: sign of det(model), which mirrors the tangent frame; yzw unused
 };
-static_assert(sizeof(ObjectBlock) == 2 * 64 + 2 * 16, "ObjectBlock must match its std140 layout");
+static_assert(sizeof(ObjectBlock) == 2 * 64 + 4 * 16, "ObjectBlock must match its std140 layout");
 
 }  // namespace pbr

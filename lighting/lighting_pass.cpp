@@ -23,10 +23,10 @@ const Program& LightingPass::program(const LightingOptions& o, bool clustered) {
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
-                          const UniformBuffer<FrameBlock>& frame, const Texture& hdrOut,
+                          const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
                           const LightClusters* clusters) {
-  const GLuint groupsX = static_cast<GLuint>((hdrOut.width() + 7) / 8);
-  const GLuint groupsY = static_cast<GLuint>((hdrOut.height() + 7) / 8);
+  const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
+  const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
   program(options, clusters != nullptr).use();
   frame.bind(binding::kFrameUbo);
@@ -42,7 +42,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   }
   const GLuint textures[] = {surface.baseColor.id(), surface.normal.id(), surface.material.id(), surface.depth.id()};
   glBindTextures(0, 4, textures);
-  glBindImageTexture(0, hdrOut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(0, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glDispatchCompute(groupsX, groupsY, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

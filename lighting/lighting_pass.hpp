@@ -49,9 +49,10 @@ class LightingPass {
   explicit LightingPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
-  // only the lights of each pixel's cluster (as last assigned) are.
+  // only the lights of each pixel's cluster (as last assigned) are. `radiance` (RGBA16F) comes in holding the
+  // surfaces' emitted radiance and leaves with the shaded frame: emission plus reflected light.
   void render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
-              const UniformBuffer<FrameBlock>& frame, const Texture& hdrOut, const LightClusters* clusters);
+              const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters);
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;

@@ -16,69 +16,15 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 
 namespace fs = std::filesystem;
-
-namespace {
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string shellQuote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-// A fresh directory per test case, removed afterwards; ctest runs cases as parallel processes, hence the pid.
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    const std::string name = "pbr_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(++counter);
-    path_ = fs::temp_directory_path() / name;
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const fs::path& path() const { return path_; }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
-
-struct Run {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-// Runs `pbr` with the given arguments, capturing both streams through files in `dir`.
-Run runPbr(const TempDir& dir, const std::vector<std::string>& args) {
-  std::string command = shellQuote(PBR_BINARY);
-  for (const std::string& a : args) command += " " + shellQuote(a);
-  command += " >" + shellQuote(dir.file("stdout.txt")) + " 2>" + shellQuote(dir.file("stderr.txt"));
-  const int status = std::system(command.c_str());
-  Run run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = readFile(dir.file("stdout.txt"));
-  run.err = readFile(dir.file("stderr.txt"));
-  return run;
-}
-
-bool isOneLine(const std::string& s) {
-  return !s.empty() && s.back() == '\n' && s.find('\n') == s.size() - 1;
-}
-
-}  // namespace
+using pbr::test::isOneLine;
+using pbr::test::readFile;
+using pbr::test::runPbr;
+using pbr::test::TempDir;
+using Run = pbr::test::PbrRun;
 
 TEST_CASE("cli: --help exits 0 and describes the commands") {
   const TempDir dir;

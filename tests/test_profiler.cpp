@@ -143,6 +143,13 @@ TEST_CASE("profiler: serializing mode times every pass of every frame, in order"
     CHECK(f.passes[1].ms >= 19.0);
     CHECK(f.pass("b") == f.passes[1].ms);
     CHECK(f.cpuMs >= f.passes[0].ms + f.passes[1].ms - 1e-6);
+    // Start offsets lay the passes and frames out on one timeline without overlaps.
+    CHECK(f.passes[0].startMs == 0.0);
+    CHECK(f.passes[1].startMs >= f.passes[0].ms - 1e-6);
+    if (i > 0) {
+      const FrameTiming& previous = frames[static_cast<size_t>(i - 1)];
+      CHECK(f.startMs >= previous.startMs + previous.gpuMs - 1e-6);
+    }
   }
   CHECK(profiler.framesInFlight() == 0);
   CHECK(profiler.takeResults(true).empty());
@@ -196,6 +203,31 @@ TEST_CASE("profiler: GPU-query mode returns each of many frames exactly once, ol
   std::vector<int> expected(kFrames);
   for (int i = 0; i < kFrames; ++i) expected[static_cast<size_t>(i)] = i;
   CHECK(returned == expected);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("profiler: GPU-query mode keeps every frame when far more are queued than have been read") {
+  PBR_REQUIRE_GL();
+  Profiler profiler(TimingMode::GpuQueries);
+  // More frames than any fixed ring of queries would hold, none read until the end: the query pool must grow
+  // rather than wait for, or overwrite, a frame still in flight.
+  constexpr int kFrames = 300;
+  for (int i = 0; i < kFrames; ++i) {
+    profiler.beginFrame();
+    for (const char* name : {"a", "b"}) {
+      pbr::ScopedPass pass(profiler, name);  // empty passes: only the queries matter here
+    }
+    profiler.endFrame();
+  }
+  const std::vector<FrameTiming> frames = profiler.takeResults(true);
+  REQUIRE(frames.size() == kFrames);
+  for (int i = 0; i < kFrames; ++i) {
+    const FrameTiming& f = frames[static_cast<size_t>(i)];
+    CHECK(f.frame == i);
+    checkTwoPassFrame(f);
+    if (i > 0) CHECK(f.startMs >= frames[static_cast<size_t>(i - 1)].startMs);
+  }
+  CHECK(profiler.framesInFlight() == 0);
   CHECK(glGetError() == GL_NO_ERROR);
 }
 

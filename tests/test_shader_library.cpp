@@ -20,6 +20,7 @@
 
 #include "core/bindings.hpp"
 #include "core/shader_library.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
 #include "tests/gl_test_context.hpp"
 
 namespace fs = std::filesystem;
@@ -307,7 +308,17 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}});
   const ShaderLibrary shaders;
-  CHECK_NOTHROW(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag"));
+  const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
+                                                 "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK"};
+  // The list above must be every define the G-buffer pass chooses.
+  std::vector<std::string> chosen;
+  for (const pbr::ShaderDefine& d : pbr::GBufferPass::permutation(pbr::Material{})) chosen.push_back(d.name);
+  CHECK(chosen == gbufferFlags);
+  for (const ShaderDefines& defines : flagCombinations(gbufferFlags)) {
+    const std::string described = describeDefines(defines);
+    CAPTURE(described);
+    CHECK_NOTHROW(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
+  }
 }
 
 namespace {
@@ -368,6 +379,11 @@ TEST_CASE("shader library: bindings.glsl and core/bindings.hpp hold the same bin
       {"CLUSTER_BOUNDS_SSBO", pbr::binding::kClusterBoundsSsbo},
       {"CLUSTER_STATUS_SSBO", pbr::binding::kClusterStatusSsbo},
       {"LIGHTING_STATS_SSBO", pbr::binding::kLightingStatsSsbo},
+      {"BASE_COLOR_MAP_UNIT", pbr::binding::kBaseColorMapUnit},
+      {"METALLIC_ROUGHNESS_MAP_UNIT", pbr::binding::kMetallicRoughnessMapUnit},
+      {"NORMAL_MAP_UNIT", pbr::binding::kNormalMapUnit},
+      {"OCCLUSION_MAP_UNIT", pbr::binding::kOcclusionMapUnit},
+      {"EMISSIVE_MAP_UNIT", pbr::binding::kEmissiveMapUnit},
   };
   for (const auto& [name, value] : compiled) {
     CAPTURE(name);

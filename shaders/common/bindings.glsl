@@ -11,3 +11,13 @@
 #define CLUSTER_BOUNDS_SSBO 4
 #define CLUSTER_STATUS_SSBO 5
 #define LIGHTING_STATS_SSBO 6
+// Texture units of the G-buffer pass's material maps.
+#define BASE_COLOR_MAP_UNIT 0
+#define METALLIC_ROUGHNESS_MAP_UNIT 1
+#define NORMAL_MAP_UNIT 2
+#define OCCLUSION_MAP_UNIT 3
+#define EMISSIVE_MAP_UNIT 4
+// Image-based lighting (ibl/, shaders/ibl/ibl_sample.glsl); its units clear the G-buffer and material units 0-4.
+#define IBL_UBO 5
+#define IBL_SPECULAR_UNIT 8
+#define IBL_DFG_UNIT 9

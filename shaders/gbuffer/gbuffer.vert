@@ -5,12 +5,20 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;  // xyz along +u, w handedness
 
 layout(location = 0) out vec3 vNormal;
 layout(location = 1) out vec2 vUv;
+#if NORMAL_MAP
+layout(location = 2) out vec4 vTangent;
+#endif
 
 void main() {
   vNormal = mat3(object.normalMatrix) * inNormal;
   vUv = inUv;
+#if NORMAL_MAP
+  // Tangents lie in the surface and move with it; a mirroring model matrix reverses the frame's handedness.
+  vTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w * object.orientation.x);
+#endif
   gl_Position = frame.viewProjection * (object.model * vec4(inPosition, 1.0));
 }

@@ -1,7 +1,8 @@
 #version 450 core
 // Deferred lighting, one invocation per pixel. CLUSTERED 0 shades every light of the frame (the brute-force
 // reference path); CLUSTERED 1 shades only the lights listed for the pixel's cluster, in the same ascending
-// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup.
+// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup. The radiance
+// image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "surface.glsl"
@@ -21,7 +22,7 @@ layout(std430, binding = LIGHT_INDEX_SSBO) readonly buffer Indices { uint lightI
 layout(std430, binding = LIGHTING_STATS_SSBO) buffer PairStats { uvec2 groupPairs[]; };
 #endif
 
-layout(rgba16f, binding = 0) uniform writeonly image2D hdrOut;
+layout(rgba16f, binding = 0) uniform image2D radiance;
 
 #if LIGHTING_STATS
 bool contributes(Surface s, PointLight light) {
@@ -56,10 +57,10 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   Surface s;
   if (!readSurface(p, s)) {
-    imageStore(hdrOut, p, vec4(0.0, 0.0, 0.0, 1.0));
+    imageStore(radiance, p, vec4(0.0, 0.0, 0.0, 1.0));
     return;
   }
-  gColor = shadeAmbient(s);
+  gColor = imageLoad(radiance, p).rgb + shadeAmbient(s);
   gContributing = 0u;
 #if CLUSTERED
   gHeader = headers[clusterIndex(uvec2(p), s.viewDepth)];
@@ -89,5 +90,5 @@ void main() {
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
-  imageStore(hdrOut, p, vec4(finishShading(color), 1.0));
+  imageStore(radiance, p, vec4(finishShading(color), 1.0));
 }

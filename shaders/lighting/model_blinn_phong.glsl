@@ -2,7 +2,7 @@
 // Synthesized Pictures"): light colours are LDR intensities, the result is clamped to [0,1], no tone mapping.
 #include "brdf.glsl"
 
-vec3 shadeAmbient(Surface s) { return 0.02 * (1.0 - s.metalness) * s.baseColor; }
+vec3 shadeAmbient(Surface s) { return 0.02 * (1.0 - s.metalness) * s.baseColor * s.occlusion; }
 
 vec3 shadeLight(Surface s, PointLight light) {
   float d;

@@ -5,7 +5,7 @@ vec3 shadeAmbient(Surface s) {
   // Uniform ambient radiance: Lambert integrates to the albedo and the specular lobe to about F0.
   vec3 F0 = f0FromMaterial(s.baseColor, s.metalness);
   vec3 diffuse = (1.0 - s.metalness) * s.baseColor * (1.0 - F0);
-  return lighting.ambient.rgb * (diffuse + F0);
+  return lighting.ambient.rgb * (diffuse + F0) * s.occlusion;
 }
 
 vec3 shadeLight(Surface s, PointLight light) {

@@ -3,7 +3,7 @@
 
 layout(binding = 0) uniform sampler2D gBaseColor;  // SRGB8_ALPHA8, decoded to linear by texelFetch
 layout(binding = 1) uniform sampler2D gNormal;     // RG16 octahedral
-layout(binding = 2) uniform sampler2D gMaterial;   // RG8 roughness, metalness
+layout(binding = 2) uniform sampler2D gMaterial;   // RGBA8 roughness, metalness, occlusion
 layout(binding = 3) uniform sampler2D gDepth;      // 32F reversed-Z
 
 struct Surface {
@@ -15,6 +15,7 @@ struct Surface {
   float roughness;    // perceptual
   vec3 baseColor;
   float metalness;
+  float occlusion;    // of the ambient term only: point lights are direct light
 };
 
 // False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
@@ -32,8 +33,9 @@ bool readSurface(ivec2 p, out Surface s) {
   s.V = normalize(frame.cameraPosition.xyz - s.position);
   s.NoV = max(dot(s.normal, s.V), 1e-4);
   s.baseColor = texelFetch(gBaseColor, p, 0).rgb;
-  vec2 m = texelFetch(gMaterial, p, 0).xy;
+  vec3 m = texelFetch(gMaterial, p, 0).xyz;
   s.roughness = m.x;
   s.metalness = m.y;
+  s.occlusion = m.z;
   return true;
 }

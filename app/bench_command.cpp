@@ -1,0 +1,185 @@
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "app/args.hpp"
+#include "app/bench_progress.hpp"
+#include "app/bench_report.hpp"
+#include "app/bench_run.hpp"
+#include "app/commands.hpp"
+#include "app/scene_source.hpp"
+#include "app/trace_writer.hpp"
+#include "core/context.hpp"
+
+namespace pbr {
+
+namespace {
+
+const std::vector<OptionSpec>& benchOptions() {
+  static const std::vector<OptionSpec> specs = {
+      {"--scene", "NAME", "scene to measure (default stress)"},
+      {"--lights", "LIST", "comma-separated light counts (default 64,256,1024,4096,16384)"},
+      {"--culling", "LIST", "culling modes: none, clustered (default both)"},
+      {"--model", "LIST", "shading models: pbr, blinn-phong (default both)"},
+      {"--size", "WxH", "frame size in pixels (default 1280x720)"},
+      {"--warmup", "K", "untimed frames per configuration, at least 1: the first estimates its time (default 5)"},
+      {"--frames", "K", "timed frames per configuration (default 30)"},
+      {"--max-seconds", "S",
+       "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds (default 60)"},
+      {"--constant-density", "",
+       "scale light radii by sqrt(1024/lights), holding lights x radius^2 (the light density) constant"},
+      {"--csv", "F", "write the results as CSV (provenance in leading # lines)"},
+      {"--json", "F", "write the results, every timed frame included, as JSON"},
+      {"--trace", "F", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
+      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
+      {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+  };
+  return specs;
+}
+
+std::vector<std::string> splitList(const std::string& option, const std::string& text) {
+  std::vector<std::string> items;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item.empty()) {
+      throw UsageError(option + " expects a comma-separated list without empty items, got '" + text + "'");
+    }
+    for (const std::string& seen : items) {
+      if (seen == item) throw UsageError(option + " lists '" + item + "' twice");
+    }
+    items.push_back(item);
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+std::vector<int> parseLightCounts(const std::string& text) {
+  constexpr long kMax = 1 << 20;
+  std::vector<int> counts;
+  for (const std::string& item : splitList("--lights", text)) {
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(item.c_str(), &end, 10);
+    if (*end != '\0' || errno == ERANGE || v < 0 || v > kMax) {
+      throw UsageError("--lights expects comma-separated light counts in [0, " + std::to_string(kMax) + "], got '" +
+                       text + "'");
+    }
+    counts.push_back(static_cast<int>(v));
+  }
+  return counts;
+}
+
+template <typename T>
+std::vector<T> parseEach(const std::string& option, const std::string& text, T (*parse)(const std::string&)) {
+  std::vector<T> values;
+  for (const std::string& item : splitList(option, text)) values.push_back(parse(item));
+  return values;
+}
+
+BenchSettings parseSettings(const Args& args) {
+  BenchSettings s;
+  s.scene = args.get("--scene", s.scene);
+  if (args.has("--lights")) s.lights = parseLightCounts(args.get("--lights", ""));
+  if (args.has("--culling")) s.culling = parseEach("--culling", args.get("--culling", ""), parseCulling);
+  if (args.has("--model")) s.models = parseEach("--model", args.get("--model", ""), parseShadingModel);
+  s.size = args.getSize("--size", s.size);
+  s.warmup = args.getInt("--warmup", s.warmup, 1, 100000);
+  s.frames = args.getInt("--frames", s.frames, 1, 100000);
+  s.maxSeconds = args.getFloat("--max-seconds", static_cast<float>(s.maxSeconds), 0.0f, 1e7f);
+  s.constantDensity = args.has("--constant-density");
+  s.timing = args.get("--timing", s.timing);
+  chooseTimingMode(s.timing, "");  // rejects a bad mode before a context is made
+  return s;
+}
+
+// Output files are opened before the sweep, so that a bad path fails at once rather than after an hour.
+std::unique_ptr<std::ofstream> openOutput(const Args& args, const std::string& option) {
+  if (!args.has(option)) return nullptr;
+  const std::string path = args.get(option, "");
+  auto out = std::make_unique<std::ofstream>(path);
+  if (!*out) throw std::runtime_error("cannot write " + path);
+  return out;
+}
+
+void finishOutput(std::ofstream* out, const Args& args, const std::string& option) {
+  if (!out) return;
+  out->close();
+  if (!*out) throw std::runtime_error("error writing " + args.get(option, ""));
+  std::printf("wrote %s\n", args.get(option, "").c_str());
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& argv) {
+  const auto& specs = benchOptions();
+  const Args args(specs, argv);
+  if (args.helpRequested()) {
+    std::cout << Args::helpText("pbr bench [options]",
+                                "Measures per-pass frame times for every combination of light count, culling mode "
+                                "and shading model, with light statistics and GPU memory, and writes them as a "
+                                "table, CSV, JSON and a Chrome trace, each with the circumstances of the run.",
+                                specs);
+    return 0;
+  }
+  const BenchSettings settings = parseSettings(args);
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+
+  // Every scene before any rendering, so that a bad scene or light count fails at once.
+  std::vector<Scene> scenes;
+  for (int lights : settings.lights) {
+    SceneParams params;
+    params.lights = lights;
+    Scene scene = resolveScene(settings.scene, params);
+    const float scale = settings.constantDensity ? densityRadiusScale(lights) : 1.0f;
+    for (PointLight& l : scene.lights) l.radius *= scale;
+    scenes.push_back(std::move(scene));
+  }
+  const std::unique_ptr<std::ofstream> csv = openOutput(args, "--csv");
+  const std::unique_ptr<std::ofstream> json = openOutput(args, "--json");
+  const std::unique_ptr<std::ofstream> trace = openOutput(args, "--trace");
+
+  auto context = createHeadlessContext(platform);
+  const TimingMode timing = chooseTimingMode(settings.timing, context->info().renderer);
+  BenchReport report;
+  report.settings = settings;
+  report.provenance = collectProvenance(context->info(), timing);
+  const size_t total = settings.lights.size() * settings.culling.size() * settings.models.size();
+  std::fprintf(stderr, "bench: %zu configurations on %s, %s\n", total, context->info().renderer.c_str(),
+               describe(timing));
+
+  const ShaderLibrary shaders;
+  const BenchProgress progress(total, ::isatty(STDERR_FILENO) == 1);
+  const BenchClock::time_point sweepStart = BenchClock::now();
+  for (size_t li = 0; li < settings.lights.size(); ++li) {
+    for (Culling culling : settings.culling) {
+      for (ShadingModel model : settings.models) {
+        const size_t index = report.results.size();
+        const int lights = settings.lights[li];
+        const BenchConfig config{settings.scene, settings.size, lights, culling, model,
+                                 settings.constantDensity ? densityRadiusScale(lights) : 1.0f};
+        BenchResult result = runBenchConfig(shaders, scenes[li], config, settings, timing, sweepStart,
+                                            [&](int done, int frames) { progress.frame(index, config, done, frames); });
+        progress.finished(index, result);
+        report.results.push_back(std::move(result));
+      }
+    }
+  }
+  report.provenance.set("load_average_end", loadAverage());
+
+  printBenchTable(std::cout, report);
+  if (csv) writeBenchCsv(*csv, report);
+  if (json) writeBenchJson(*json, report);
+  if (trace) writeTrace(*trace, report);
+  finishOutput(csv.get(), args, "--csv");
+  finishOutput(json.get(), args, "--json");
+  finishOutput(trace.get(), args, "--trace");
+  return 0;
+}
+
+}  // namespace pbr

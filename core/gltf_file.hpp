@@ -1,0 +1,34 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+namespace pbr {
+
+// A parsed glTF file. tinygltf decodes no image: external and data-URI images keep their encoded bytes in
+// `encodedImages`, decoded later and only when a material uses them; images stored in buffer views are read from
+// the view once it has been validated (tinygltf does not check its bounds).
+struct GltfFile {
+  std::string path;  // as given; every message starts with it
+  tinygltf::Model model;
+  std::vector<std::vector<unsigned char>> encodedImages;  // by image index; empty for buffer-view images
+
+  // Throws SceneError("<path>: <what>").
+  [[noreturn]] void fail(const std::string& what) const;
+  // One line "<path>: <what>" on stderr, for what is drawn differently from the file's intent.
+  void warn(const std::string& what) const;
+};
+
+// "array[index]", how messages name an element of a top-level glTF array.
+inline std::string gltfElement(const char* array, int index) {
+  return std::string(array) + "[" + std::to_string(index) + "]";
+}
+
+// Extensions this loader implements; a file that requires any other is rejected.
+inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+
+// Reads a .gltf or .glb file (told apart by the GLB magic, whatever the extension) with its buffers.
+GltfFile readGltfFile(const std::string& path);
+
+}  // namespace pbr

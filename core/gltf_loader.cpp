@@ -1,0 +1,314 @@
+#include "core/gltf_loader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "core/gltf_accessor.hpp"
+#include "core/gltf_file.hpp"
+#include "core/gltf_material.hpp"
+#include "core/mesh_tangent_space.hpp"
+
+namespace pbr {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+void requireFinite(const GltfFile& file, const std::vector<float>& values, const std::string& field) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i])) file.fail(field + ": component " + std::to_string(i) + " is not a finite number");
+  }
+}
+
+std::vector<double> checkedArray(const GltfFile& file, const std::vector<double>& v, size_t size,
+                                 const std::string& field) {
+  if (v.size() != size) {
+    file.fail(field + ": must have " + std::to_string(size) + " numbers (got " + std::to_string(v.size()) + ")");
+  }
+  for (const double x : v) {
+    if (!std::isfinite(x)) file.fail(field + ": must hold finite numbers");
+  }
+  return v;
+}
+
+glm::mat4 localTransform(const GltfFile& file, const tinygltf::Node& node, const std::string& name) {
+  if (!node.matrix.empty()) {
+    const std::vector<double> m = checkedArray(file, node.matrix, 16, name + ".matrix");
+    glm::mat4 out;
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) out[c][r] = static_cast<float>(m[static_cast<size_t>(c * 4 + r)]);  // column-major
+    }
+    return out;
+  }
+  glm::mat4 out(1.0f);
+  if (!node.translation.empty()) {
+    const std::vector<double> t = checkedArray(file, node.translation, 3, name + ".translation");
+    out = glm::translate(out, glm::vec3(t[0], t[1], t[2]));
+  }
+  if (!node.rotation.empty()) {
+    const std::vector<double> q = checkedArray(file, node.rotation, 4, name + ".rotation");
+    const glm::quat rotation(static_cast<float>(q[3]), static_cast<float>(q[0]), static_cast<float>(q[1]),
+                             static_cast<float>(q[2]));
+    if (!(glm::length(rotation) > 1e-6f)) file.fail(name + ".rotation: must be a unit quaternion");
+    out *= glm::mat4_cast(glm::normalize(rotation));
+  }
+  if (!node.scale.empty()) {
+    const std::vector<double> s = checkedArray(file, node.scale, 3, name + ".scale");
+    out = glm::scale(out, glm::vec3(s[0], s[1], s[2]));
+  }
+  return out;
+}
+
+// Triangle lists from TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN index sequences, counter-clockwise.
+std::vector<uint32_t> triangleList(const GltfFile& file, int mode, std::vector<uint32_t> indices,
+                                   const std::string& field) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    if (indices.size() % 3 != 0) {
+      file.fail(field + ": " + std::to_string(indices.size()) + " indices do not make whole triangles");
+    }
+    return indices;
+  }
+  std::vector<uint32_t> list;
+  for (size_t i = 2; i < indices.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      list.insert(list.end(), {indices[0], indices[i - 1], indices[i]});
+    } else if (i % 2 == 0) {
+      list.insert(list.end(), {indices[i - 2], indices[i - 1], indices[i]});
+    } else {
+      // Every other strip triangle is wound the other way round.
+      list.insert(list.end(), {indices[i - 1], indices[i - 2], indices[i]});
+    }
+  }
+  return list;
+}
+
+class Loader {
+ public:
+  Loader(const GltfFile& file, Scene& scene) : file_(file), scene_(scene), materials_(file, scene) {}
+
+  Bounds load(const glm::mat4& transform) {
+    // Depth first, children in order; glTF node hierarchies are trees, so a node met twice is malformed.
+    std::vector<std::pair<int, glm::mat4>> stack;
+    const std::vector<int> roots = rootNodes();
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, transform);
+    std::vector<bool> visited(file_.model.nodes.size(), false);
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      const std::string name = gltfElement("nodes", index);
+      if (visited[static_cast<size_t>(index)]) file_.fail(name + ": reached twice (the node hierarchy is not a tree)");
+      visited[static_cast<size_t>(index)] = true;
+      const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
+      const glm::mat4 world = parent * localTransform(file_, node, name);
+      if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh");
+      const auto light = node.extensions.find("KHR_lights_punctual");
+      if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+        checkNode(*child, name + ".children");
+        stack.emplace_back(*child, world);
+      }
+    }
+    return bounds_;
+  }
+
+ private:
+  void checkNode(int index, const std::string& field) const {
+    if (index < 0 || static_cast<size_t>(index) >= file_.model.nodes.size()) {
+      file_.fail(field + ": no node " + std::to_string(index));
+    }
+  }
+
+  // The default scene's roots; a file without scenes shows every node that is no other node's child.
+  std::vector<int> rootNodes() const {
+    const tinygltf::Model& m = file_.model;
+    const int scene = m.defaultScene >= 0 ? m.defaultScene : m.scenes.empty() ? -1 : 0;
+    if (scene >= static_cast<int>(m.scenes.size())) file_.fail("scene: no scene " + std::to_string(scene));
+    if (scene >= 0) {
+      const std::string field = gltfElement("scenes", scene) + ".nodes";
+      for (const int n : m.scenes[static_cast<size_t>(scene)].nodes) checkNode(n, field);
+      return m.scenes[static_cast<size_t>(scene)].nodes;
+    }
+    std::vector<bool> child(m.nodes.size(), false);
+    for (size_t i = 0; i < m.nodes.size(); ++i) {
+      for (const int c : m.nodes[i].children) {
+        checkNode(c, gltfElement("nodes", static_cast<int>(i)) + ".children");
+        child[static_cast<size_t>(c)] = true;
+      }
+    }
+    std::vector<int> roots;
+    for (size_t i = 0; i < m.nodes.size(); ++i) {
+      if (!child[i]) roots.push_back(static_cast<int>(i));
+    }
+    return roots;
+  }
+
+  void addMesh(int index, const glm::mat4& world, const std::string& field) {
+    if (static_cast<size_t>(index) >= file_.model.meshes.size()) {
+      file_.fail(field + ": no mesh " + std::to_string(index));
+    }
+    const tinygltf::Mesh& mesh = file_.model.meshes[static_cast<size_t>(index)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const int sceneMesh = primitiveMesh(index, static_cast<int>(p));
+      if (sceneMesh < 0) continue;
+      const std::string material =
+          gltfElement("meshes", index) + "." + gltfElement("primitives", static_cast<int>(p)) + ".material";
+      scene_.objects.push_back({Shape::Mesh, sceneMesh, world, materials_.get(mesh.primitives[p].material, material)});
+      for (const Vertex& v : scene_.meshes[static_cast<size_t>(sceneMesh)].vertices) {
+        const glm::vec3 w = glm::vec3(world * glm::vec4(v.position, 1.0f));
+        bounds_.min = empty_ ? w : glm::min(bounds_.min, w);
+        bounds_.max = empty_ ? w : glm::max(bounds_.max, w);
+        empty_ = false;
+      }
+    }
+  }
+
+  // Index into Scene::meshes of a primitive, converted once however many nodes use it; -1 for what is not drawn.
+  int primitiveMesh(int meshIndex, int primitiveIndex) {
+    const auto cached = meshes_.find({meshIndex, primitiveIndex});
+    if (cached != meshes_.end()) return cached->second;
+    const tinygltf::Primitive& prim =
+        file_.model.meshes[static_cast<size_t>(meshIndex)].primitives[static_cast<size_t>(primitiveIndex)];
+    const std::string field = gltfElement("meshes", meshIndex) + "." + gltfElement("primitives", primitiveIndex);
+    int result = -1;
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+        prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      MeshData mesh = readPrimitive(prim, field);
+      if (!mesh.indices.empty()) {
+        scene_.meshes.push_back(std::move(mesh));
+        result = static_cast<int>(scene_.meshes.size()) - 1;
+      }
+    } else {
+      file_.warn(field + ": mode " + std::to_string(prim.mode) + " (points or lines) is not drawn");
+    }
+    meshes_.emplace(std::make_pair(meshIndex, primitiveIndex), result);
+    return result;
+  }
+
+  MeshData readPrimitive(const tinygltf::Primitive& prim, const std::string& field) const {
+    const auto attribute = [&](const char* name) {
+      const auto it = prim.attributes.find(name);
+      return it == prim.attributes.end() ? -1 : it->second;
+    };
+    const auto read = [&](const char* name, int type, std::initializer_list<int> componentTypes, size_t count) {
+      const std::string where = field + ".attributes." + name;
+      std::vector<float> values = readFloatAccessor(file_, attribute(name), type, componentTypes, where);
+      const size_t n = values.size() / static_cast<size_t>(type);
+      if (count && n != count) {
+        file_.fail(where + ": " + std::to_string(n) + " elements where POSITION has " + std::to_string(count));
+      }
+      requireFinite(file_, values, where);
+      return values;
+    };
+    if (attribute("POSITION") < 0) file_.fail(field + ".attributes: no POSITION");
+    const std::vector<float> positions = read("POSITION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 0);
+    const size_t count = positions.size() / 3;
+    const bool hasNormals = attribute("NORMAL") >= 0;
+    // glTF: without normals, tangents from the file are ignored too.
+    const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
+    const std::vector<float> normals =
+        hasNormals ? read("NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, count) : std::vector<float>();
+    const std::vector<float> tangents =
+        hasTangents ? read("TANGENT", TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT}, count)
+                    : std::vector<float>();
+    const std::vector<float> uvs = attribute("TEXCOORD_0") >= 0
+                                       ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                              {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                              count)
+                                       : std::vector<float>();
+
+    MeshData mesh;
+    mesh.vertices.resize(count);
+    for (size_t i = 0; i < count; ++i) {
+      Vertex& v = mesh.vertices[i];
+      v.position = glm::vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+      v.normal = hasNormals ? glm::vec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]) : glm::vec3(0.0f);
+      v.uv = uvs.empty() ? glm::vec2(0.0f) : glm::vec2(uvs[2 * i], uvs[2 * i + 1]);
+      v.tangent = hasTangents ? glm::vec4(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2],
+                                          tangents[4 * i + 3] < 0.0f ? -1.0f : 1.0f)
+                              : glm::vec4(0.0f);
+    }
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+      indices = readIndexAccessor(file_, prim.indices, count, field + ".indices");
+    } else {
+      indices.resize(count);
+      std::iota(indices.begin(), indices.end(), 0u);
+    }
+    mesh.indices = triangleList(file_, prim.mode, std::move(indices),
+                                field + (prim.indices >= 0 ? ".indices" : ".attributes.POSITION"));
+    if (!hasNormals) {
+      makeFlatNormals(mesh);
+    } else {
+      repairNormals(mesh);
+    }
+    if (!hasTangents) generateTangents(mesh);
+    return mesh;
+  }
+
+  void addLight(const tinygltf::Value& extension, const glm::mat4& world, const std::string& field) {
+    const tinygltf::Value& ref = extension.Get("light");
+    const auto& lights = file_.model.lights;
+    if (!ref.IsNumber() || ref.GetNumberAsInt() < 0 || static_cast<size_t>(ref.GetNumberAsInt()) >= lights.size()) {
+      file_.fail(field + ".light: not the index of one of the file's " + std::to_string(lights.size()) + " lights");
+    }
+    const int index = ref.GetNumberAsInt();
+    const tinygltf::Light& l = lights[static_cast<size_t>(index)];
+    const std::string name = "extensions.KHR_lights_punctual." + gltfElement("lights", index);
+    if (l.type != "point") {
+      file_.warn(name + ": " + l.type + " lights are not supported, skipped");
+      return;
+    }
+    PointLight light;
+    light.position = glm::vec3(world[3]);
+    if (!l.color.empty()) {
+      const std::vector<double> c = checkedArray(file_, l.color, 3, name + ".color");
+      light.color = glm::vec3(c[0], c[1], c[2]);
+      if (glm::any(glm::lessThan(light.color, glm::vec3(0.0f)))) file_.fail(name + ".color: must be >= 0");
+    }
+    if (!std::isfinite(l.intensity) || l.intensity < 0.0) file_.fail(name + ".intensity: must be a finite number >= 0");
+    if (!std::isfinite(l.range) || l.range < 0.0) file_.fail(name + ".range: must be a positive finite number");
+    const float intensity = static_cast<float>(l.intensity);  // candela
+    // A point source of intensity I emits P = 4 pi I lumens.
+    light.luminousPower = 4.0f * kPi * intensity;
+    const float brightest = std::max({light.color.x, light.color.y, light.color.z});
+    // tinygltf reads an absent range as 0.
+    light.radius =
+        l.range > 0.0 ? static_cast<float>(l.range) : std::sqrt(intensity * brightest / kGltfLightCutoffIlluminance);
+    scene_.lights.push_back(light);
+  }
+
+  const GltfFile& file_;
+  Scene& scene_;
+  GltfMaterials materials_;
+  std::map<std::pair<int, int>, int> meshes_;
+  Bounds bounds_;
+  bool empty_ = true;
+};
+
+}  // namespace
+
+Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform) {
+  const GltfFile file = readGltfFile(path);
+  const size_t meshes = scene.meshes.size(), textures = scene.textures.size(), objects = scene.objects.size(),
+               lights = scene.lights.size();
+  try {
+    return Loader(file, scene).load(transform);
+  } catch (...) {
+    // A file found malformed half-way leaves the scene as it was.
+    scene.meshes.resize(meshes);
+    scene.textures.resize(textures);
+    scene.objects.resize(objects);
+    scene.lights.resize(lights);
+    throw;
+  }
+}
+
+}  // namespace pbr

@@ -1,0 +1,172 @@
+#include "core/gltf_material.hpp"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <memory>
+
+#include "core/gltf_accessor.hpp"
+
+namespace pbr {
+
+namespace {
+
+float finite(const GltfFile& file, double v, const std::string& field) {
+  if (!std::isfinite(v)) file.fail(field + ": must be a finite number");
+  return static_cast<float>(v);
+}
+
+// glTF factors in [0,1]; exporters print values a rounding error outside, which are clamped.
+float unitFactor(const GltfFile& file, double v, const std::string& field) {
+  return std::clamp(finite(file, v, field), 0.0f, 1.0f);
+}
+
+glm::vec3 colorFactor(const GltfFile& file, const std::vector<double>& v, size_t size, const std::string& field) {
+  if (v.size() != size) file.fail(field + ": must have " + std::to_string(size) + " components");
+  return {unitFactor(file, v[0], field), unitFactor(file, v[1], field), unitFactor(file, v[2], field)};
+}
+
+bool oneOf(int v, std::initializer_list<int> allowed) {
+  return std::find(allowed.begin(), allowed.end(), v) != allowed.end();
+}
+
+}  // namespace
+
+const Material& GltfMaterials::get(int index, const std::string& field) {
+  auto it = materials_.find(index);
+  if (it == materials_.end()) it = materials_.emplace(index, convert(index, field)).first;
+  return it->second;
+}
+
+Material GltfMaterials::convert(int index, const std::string& field) {
+  // glTF's default material: white, fully metallic and rough.
+  Material m;
+  m.baseColor = glm::vec3(1.0f);
+  m.metalness = 1.0f;
+  m.roughness = 1.0f;
+  if (index < 0) return m;
+  if (static_cast<size_t>(index) >= file_.model.materials.size()) {
+    file_.fail(field + ": no material " + std::to_string(index) + " (the file has " +
+               std::to_string(file_.model.materials.size()) + ")");
+  }
+  const tinygltf::Material& g = file_.model.materials[static_cast<size_t>(index)];
+  const std::string name = gltfElement("materials", index);
+  const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+
+  m.baseColor = colorFactor(file_, pbr.baseColorFactor, 4, name + ".pbrMetallicRoughness.baseColorFactor");
+  m.alpha = unitFactor(file_, pbr.baseColorFactor[3], name + ".pbrMetallicRoughness.baseColorFactor");
+  m.metalness = unitFactor(file_, pbr.metallicFactor, name + ".pbrMetallicRoughness.metallicFactor");
+  m.roughness = unitFactor(file_, pbr.roughnessFactor, name + ".pbrMetallicRoughness.roughnessFactor");
+  m.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true,
+                               name + ".pbrMetallicRoughness.baseColorTexture");
+  m.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, false,
+                                       name + ".pbrMetallicRoughness.metallicRoughnessTexture");
+  m.normalTexture = texture(g.normalTexture.index, g.normalTexture.texCoord, false, name + ".normalTexture");
+  m.normalScale = finite(file_, g.normalTexture.scale, name + ".normalTexture.scale");
+  m.occlusionTexture =
+      texture(g.occlusionTexture.index, g.occlusionTexture.texCoord, false, name + ".occlusionTexture");
+  m.occlusionStrength = unitFactor(file_, g.occlusionTexture.strength, name + ".occlusionTexture.strength");
+  m.emissiveTexture = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, true, name + ".emissiveTexture");
+  m.emissive = colorFactor(file_, g.emissiveFactor, 3, name + ".emissiveFactor");
+  const auto strength = g.extensions.find("KHR_materials_emissive_strength");
+  if (strength != g.extensions.end() && strength->second.Has("emissiveStrength")) {
+    const std::string where = name + ".extensions.KHR_materials_emissive_strength.emissiveStrength";
+    const tinygltf::Value& v = strength->second.Get("emissiveStrength");
+    if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0.0)) file_.fail(where + ": must be a number >= 0");
+    m.emissive *= finite(file_, v.GetNumberAsDouble(), where);
+  }
+
+  if (g.alphaMode == "MASK") {
+    m.alphaMode = AlphaMode::Mask;
+  } else if (g.alphaMode == "BLEND") {
+    m.alphaMode = AlphaMode::Blend;
+    file_.warn(name + " ('" + g.name + "'): alphaMode BLEND is drawn opaque");
+  } else if (g.alphaMode != "OPAQUE") {
+    file_.fail(name + ".alphaMode: '" + g.alphaMode + "' is not OPAQUE, MASK or BLEND");
+  }
+  m.alphaCutoff = finite(file_, g.alphaCutoff, name + ".alphaCutoff");
+  if (m.alphaCutoff < 0.0f) file_.fail(name + ".alphaCutoff: must be >= 0");
+  m.doubleSided = g.doubleSided;
+  return m;
+}
+
+int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string& field) {
+  if (index < 0) return -1;
+  const auto cached = textures_.find({index, srgb});
+  if (cached != textures_.end()) return cached->second;
+  const tinygltf::Model& model = file_.model;
+  if (static_cast<size_t>(index) >= model.textures.size()) {
+    file_.fail(field + ": no texture " + std::to_string(index) + " (the file has " +
+               std::to_string(model.textures.size()) + ")");
+  }
+  if (texCoord != 0) {
+    file_.warn(field + ": texCoord " + std::to_string(texCoord) + " is not supported, TEXCOORD_0 is used");
+  }
+  const tinygltf::Texture& t = model.textures[static_cast<size_t>(index)];
+  const std::string name = gltfElement("textures", index);
+  if (t.source < 0 || static_cast<size_t>(t.source) >= model.images.size()) {
+    file_.fail(name + ".source: no image " + std::to_string(t.source) + " (a texture needs a PNG or JPEG source)");
+  }
+  TextureData data = decodeImage(t.source, name + ".source");
+  data.srgb = srgb;
+  if (t.sampler >= 0) {
+    if (static_cast<size_t>(t.sampler) >= model.samplers.size()) {
+      file_.fail(name + ".sampler: no sampler " + std::to_string(t.sampler));
+    }
+    const tinygltf::Sampler& s = model.samplers[static_cast<size_t>(t.sampler)];
+    const std::string sampler = gltfElement("samplers", t.sampler);
+    const std::initializer_list<int> wraps = {TINYGLTF_TEXTURE_WRAP_REPEAT, TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE,
+                                              TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT};
+    if (!oneOf(s.wrapS, wraps)) file_.fail(sampler + ".wrapS: unknown wrap mode " + std::to_string(s.wrapS));
+    if (!oneOf(s.wrapT, wraps)) file_.fail(sampler + ".wrapT: unknown wrap mode " + std::to_string(s.wrapT));
+    if (!oneOf(s.minFilter,
+               {-1, TINYGLTF_TEXTURE_FILTER_NEAREST, TINYGLTF_TEXTURE_FILTER_LINEAR,
+                TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST, TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST,
+                TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR, TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR})) {
+      file_.fail(sampler + ".minFilter: unknown filter " + std::to_string(s.minFilter));
+    }
+    if (!oneOf(s.magFilter, {-1, TINYGLTF_TEXTURE_FILTER_NEAREST, TINYGLTF_TEXTURE_FILTER_LINEAR})) {
+      file_.fail(sampler + ".magFilter: unknown filter " + std::to_string(s.magFilter));
+    }
+    // glTF sampler values are the GL enums; undefined filters keep TextureData's trilinear default.
+    data.wrapS = s.wrapS;
+    data.wrapT = s.wrapT;
+    if (s.minFilter >= 0) data.minFilter = s.minFilter;
+    if (s.magFilter >= 0) data.magFilter = s.magFilter;
+  }
+  scene_.textures.push_back(std::move(data));
+  const int added = static_cast<int>(scene_.textures.size()) - 1;
+  textures_.emplace(std::make_pair(index, srgb), added);
+  return added;
+}
+
+TextureData GltfMaterials::decodeImage(int index, const std::string& field) const {
+  const tinygltf::Image& image = file_.model.images[static_cast<size_t>(index)];
+  const std::string label = gltfElement("images", index) + (!image.uri.empty()    ? " ('" + image.uri + "')"
+                                                            : !image.name.empty() ? " ('" + image.name + "')"
+                                                                                  : "");
+  ByteSpan bytes{nullptr, 0};
+  if (image.bufferView >= 0) {
+    bytes = bufferViewBytes(file_, image.bufferView, gltfElement("images", index) + ".bufferView");
+  } else {
+    const std::vector<unsigned char>& encoded = file_.encodedImages[static_cast<size_t>(index)];
+    if (encoded.empty()) file_.fail(label + ": cannot read the image file (used by " + field + ")");
+    bytes = {encoded.data(), encoded.size()};
+  }
+  if (bytes.size == 0 || bytes.size > static_cast<size_t>(INT_MAX)) file_.fail(label + ": no image data");
+  int w = 0, h = 0, channels = 0;
+  // Asking for 4 channels also narrows 16-bit PNGs to 8 bits.
+  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+      stbi_load_from_memory(bytes.data, static_cast<int>(bytes.size), &w, &h, &channels, 4), stbi_image_free);
+  if (!pixels) file_.fail(label + ": cannot decode the image (" + std::string(stbi_failure_reason()) + ")");
+  TextureData data;
+  data.name = image.uri.empty() ? label : image.uri;
+  data.width = w;
+  data.height = h;
+  data.rgba.assign(pixels.get(), pixels.get() + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
+  return data;
+}
+
+}  // namespace pbr

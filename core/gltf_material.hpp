@@ -1,0 +1,33 @@
+#pragma once
+#include <map>
+#include <string>
+#include <utility>
+
+#include "core/gltf_file.hpp"
+#include "core/scene.hpp"
+
+namespace pbr {
+
+// Converts a file's materials, and the textures they use, into pbr::Material and Scene::textures. Each glTF
+// texture is decoded once per colour space it is used in (base colour and emissive are sRGB, the others linear).
+class GltfMaterials {
+ public:
+  GltfMaterials(const GltfFile& file, Scene& scene) : file_(file), scene_(scene) {}
+
+  // Material `index` (-1: glTF's default material), converted and its images decoded on first use; `field`
+  // names the reference for messages.
+  const Material& get(int index, const std::string& field);
+
+ private:
+  Material convert(int index, const std::string& field);
+  // Index into Scene::textures of glTF texture `index` (-1 stays -1).
+  int texture(int index, int texCoord, bool srgb, const std::string& field);
+  TextureData decodeImage(int image, const std::string& field) const;
+
+  const GltfFile& file_;
+  Scene& scene_;
+  std::map<int, Material> materials_;
+  std::map<std::pair<int, bool>, int> textures_;
+};
+
+}  // namespace pbr

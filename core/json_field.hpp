@@ -1,0 +1,72 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+namespace pbr {
+
+// The numbers a field accepts: finite as float and within optional bounds.
+struct NumberRule {
+  std::optional<double> lo, hi;
+  bool loOpen = false, hiOpen = false;
+  std::string loName;  // a bound read from another field, named in messages: "> camera.near (0.5)"
+
+  static NumberRule any() { return {}; }
+  static NumberRule atLeast(double lo) { return {lo, std::nullopt, false, false, {}}; }
+  static NumberRule above(double lo, std::string name = {}) { return {lo, std::nullopt, true, false, std::move(name)}; }
+  static NumberRule closed(double lo, double hi) { return {lo, hi, false, false, {}}; }
+  static NumberRule open(double lo, double hi) { return {lo, hi, true, true, {}}; }
+
+  bool accepts(double v) const;
+  std::string describe() const;  // "a number in [0, 1]"
+};
+
+// A value of a parsed JSON document with its path, so that every error is one line naming the file, the path and
+// what was expected: "scene.json: lights[3].radius: expected a finite number >= 0, got -1". A field may be absent;
+// accessors then return their fallback, or fail when there is none (the field is required).
+class JsonField {
+ public:
+  JsonField(const nlohmann::json& root, std::string file) : value_(&root), file_(std::move(file)) {}
+
+  bool present() const { return value_ != nullptr; }
+
+  // A member: absent when missing. Fails when this field is present but not an object.
+  JsonField operator[](const std::string& key) const;
+  // The elements of an array; none when absent. Fails when this field is present but not an array.
+  std::vector<JsonField> items() const;
+
+  float number(const NumberRule& rule, std::optional<float> fallback = std::nullopt) const;
+  glm::vec3 vec3(const NumberRule& rule, std::optional<glm::vec3> fallback = std::nullopt) const;
+  // A number n stands for (n, n, n): a grey colour, a uniform scale.
+  glm::vec3 vec3OrNumber(const NumberRule& rule, std::optional<glm::vec3> fallback = std::nullopt) const;
+  // [lo, hi] with lo <= hi, both following `rule`.
+  std::pair<float, float> interval(const NumberRule& rule) const;
+  uint64_t integer(uint64_t max, std::optional<uint64_t> fallback = std::nullopt) const;  // in [0, max]
+  std::string string() const;
+  bool boolean(bool fallback) const;
+
+  // "F: P: expected WHAT, got V", or "..., but the field is missing" when absent.
+  [[noreturn]] void expected(const std::string& what) const;
+  // "F: P: MESSAGE".
+  [[noreturn]] void fail(const std::string& message) const;
+
+  static std::string memberPath(const std::string& path, const std::string& key);
+  static std::string itemPath(const std::string& path, std::size_t index);
+  static std::string displayPath(const std::string& path);  // the root has an empty path
+
+ private:
+  JsonField(const nlohmann::json* value, std::string file, std::string path)
+      : value_(value), file_(std::move(file)), path_(std::move(path)) {}
+  // Fails with `what` unless present or a fallback exists; true when the value must be read.
+  bool required(bool hasFallback, const std::string& what) const;
+
+  const nlohmann::json* value_;
+  std::string file_, path_;
+};
+
+}  // namespace pbr

@@ -1,0 +1,142 @@
+#include "core/json_file.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "core/json_field.hpp"
+#include "core/scene.hpp"
+
+namespace pbr {
+
+namespace {
+
+using nlohmann::json;
+
+// Builds the document like nlohmann's own parser, but keeps the path of the value being parsed, so that a
+// number overflow (1e999), which nlohmann reports without a location, can be named like any other bad field.
+class PathTrackingSax : public nlohmann::json_sax<json> {
+ public:
+  explicit PathTrackingSax(json& root) : root_(root) {}
+
+  bool null() override { return add(nullptr); }
+  bool boolean(bool v) override { return add(v); }
+  bool number_integer(number_integer_t v) override { return add(v); }
+  bool number_unsigned(number_unsigned_t v) override { return add(v); }
+  bool number_float(number_float_t v, const string_t&) override { return add(v); }
+  bool string(string_t& v) override { return add(v); }
+  bool binary(binary_t& v) override { return add(json::binary(v)); }
+  bool start_object(std::size_t) override { return open(json::object()); }
+  bool key(string_t& k) override {
+    frames_.back().key = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(json::array()); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) override {
+    position_ = position;
+    token_ = token;
+    overflow_ = e.id == 406;
+    message_ = e.what();
+    return false;
+  }
+
+  std::size_t position() const { return position_; }
+  const std::string& token() const { return token_; }
+  bool overflow() const { return overflow_; }
+  const std::string& message() const { return message_; }
+
+  // The path of the value that the parser is reading now, e.g. lights[3].radius. Enclosing arrays already hold
+  // the element being read; the innermost one does not yet.
+  std::string pendingPath() const {
+    std::string path;
+    for (size_t i = 0; i < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      const bool innermost = i + 1 == frames_.size();
+      path = f.container->is_array() ? JsonField::itemPath(path, f.container->size() - (innermost ? 0 : 1))
+                                     : JsonField::memberPath(path, f.key);
+    }
+    return path;
+  }
+
+ private:
+  struct Frame {
+    json* container;
+    std::string key;  // objects: the member being read
+  };
+
+  json* place(json value) {
+    if (frames_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    Frame& f = frames_.back();
+    if (f.container->is_array()) {
+      f.container->push_back(std::move(value));
+      return &f.container->back();
+    }
+    json& slot = (*f.container)[f.key];
+    slot = std::move(value);
+    return &slot;
+  }
+  bool add(json value) {
+    place(std::move(value));
+    return true;
+  }
+  bool open(json container) {
+    frames_.push_back({place(std::move(container)), {}});
+    return true;
+  }
+  bool close() {
+    frames_.pop_back();
+    return true;
+  }
+
+  json& root_;
+  std::vector<Frame> frames_;
+  std::size_t position_ = 0;
+  std::string token_, message_;
+  bool overflow_ = false;
+};
+
+// nlohmann reports how many characters it read; people read lines and columns. The last character read is the
+// one in error (one past the end at an unexpected end of input).
+std::string lineColumn(const std::string& text, std::size_t charsRead) {
+  const auto first = text.begin();
+  const auto last = first + static_cast<std::ptrdiff_t>(std::min(charsRead == 0 ? 0 : charsRead - 1, text.size()));
+  const auto lineStart = std::find(std::make_reverse_iterator(last), std::make_reverse_iterator(first), '\n').base();
+  const auto line = 1 + std::count(first, last, '\n');
+  return std::to_string(line) + ":" + std::to_string(last - lineStart + 1);
+}
+
+// "[json.exception.parse_error.101] parse error at line 3, column 9: syntax error ..." -> "syntax error ...".
+std::string withoutNlohmannPrefix(const std::string& message) {
+  const std::size_t column = message.find(", column ");
+  const std::size_t colon = column == std::string::npos ? std::string::npos : message.find(": ", column);
+  std::string rest = colon == std::string::npos ? message : message.substr(colon + 2);
+  std::replace(rest.begin(), rest.end(), '\n', ' ');
+  return rest;
+}
+
+}  // namespace
+
+json readJsonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!std::filesystem::is_regular_file(path) || !in) throw SceneError(path + ": cannot open file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw SceneError(path + ": cannot read file");
+
+  json root;
+  PathTrackingSax sax(root);
+  if (json::sax_parse(text, &sax)) return root;
+  const std::string where = path + ":" + lineColumn(text, sax.position()) + ": ";
+  if (sax.overflow()) {
+    throw SceneError(where + JsonField::displayPath(sax.pendingPath()) + ": expected a finite number, got " + sax.token());
+  }
+  throw SceneError(where + "JSON syntax error: " + withoutNlohmannPrefix(sax.message()));
+}
+
+}  // namespace pbr

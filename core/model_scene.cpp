@@ -1,0 +1,65 @@
+#include "core/model_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace pbr {
+
+namespace {
+
+glm::vec3 centreOf(const Bounds& b) { return 0.5f * (b.min + b.max); }
+
+// The bounding sphere of the box; the floor keeps a flat or point-sized model from collapsing the view.
+float radiusOf(const Bounds& b) { return std::max(0.5f * glm::length(b.max - b.min), 1e-3f); }
+
+}  // namespace
+
+Camera frameBounds(const Bounds& bounds, float fovYDeg) {
+  const float radius = radiusOf(bounds);
+  // 10% farther than the distance at which the sphere touches the top and bottom of the frame.
+  const float distance = 1.1f * radius / std::sin(glm::radians(0.5f * fovYDeg));
+  Camera c;
+  c.target = centreOf(bounds);
+  c.position = c.target + glm::normalize(glm::vec3(0.5f, 0.4f, 1.0f)) * distance;
+  c.fovYDeg = fovYDeg;
+  // Near and far hug the model so that the exponential depth slices fall on it.
+  c.nearPlane = 0.5f * (distance - radius);
+  c.farPlane = 2.0f * (distance + radius);
+  return c;
+}
+
+std::vector<PointLight> defaultLightRig(const Bounds& bounds) {
+  struct RigLight {
+    glm::vec3 offset;    // from the centre, in bounding radii
+    float illuminance;   // at the centre, lm per square scene unit
+  };
+  const RigLight rig[] = {{{1.5f, 2.0f, 2.0f}, 2.5f}, {{-2.0f, 0.5f, 1.5f}, 0.8f}, {{0.0f, 1.5f, -2.5f}, 1.5f}};
+  const float radius = radiusOf(bounds);
+  std::vector<PointLight> lights;
+  for (const RigLight& r : rig) {
+    const float d = glm::length(r.offset) * radius;
+    // E = I / d^2 with I = P / (4 pi); the influence radius reaches well past the far side of the model.
+    lights.push_back({centreOf(bounds) + r.offset * radius, 8.0f * radius, glm::vec3(1.0f),
+                      4.0f * glm::pi<float>() * r.illuminance * d * d});
+  }
+  return lights;
+}
+
+Scene loadModelScene(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw SceneError(path + ": cannot open file");
+  Scene scene;
+  scene.name = std::filesystem::path(path).stem().string();
+  const Bounds bounds = appendGltf(scene, path);
+  if (scene.objects.empty()) throw SceneError(path + ": the model has no triangles to show");
+  scene.camera = frameBounds(bounds, 45.0f);
+  scene.ambient = glm::vec3(0.03f);
+  if (scene.lights.empty()) scene.lights = defaultLightRig(bounds);
+  return scene;
+}
+
+}  // namespace pbr

@@ -1,0 +1,22 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/gltf_loader.hpp"
+#include "core/scene.hpp"
+
+namespace pbr {
+
+// A camera looking at the centre of `bounds` from the front, right and above (direction (0.5, 0.4, 1)), as close
+// as lets the bounds' bounding sphere fit the vertical field of view with a margin; near and far enclose it.
+Camera frameBounds(const Bounds& bounds, float fovYDeg);
+
+// Key, fill and rim white lights around `bounds`, placed and powered in proportion to its size, so that the
+// illuminance on the model is the same at any scale. For models that bring no lights.
+std::vector<PointLight> defaultLightRig(const Bounds& bounds);
+
+// A .gltf or .glb model alone: framed by frameBounds, a small ambient, and the default rig when it has no lights.
+Scene loadModelScene(const std::string& path);
+
+}  // namespace pbr

@@ -1,0 +1,198 @@
+#include "core/scene_json.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "core/builtin_scenes.hpp"
+#include "core/gltf_loader.hpp"
+#include "core/image.hpp"
+#include "core/json_field.hpp"
+#include "core/json_file.hpp"
+#include "core/model_scene.hpp"
+
+namespace pbr {
+
+namespace {
+
+namespace fs = std::filesystem;
+using R = NumberRule;
+
+// The command line's --lights limit: a typo must not allocate gigabytes.
+constexpr uint64_t kMaxRandomLights = 1u << 20;
+
+// Paths in a scene file are relative to the file's folder, so that a scene and its assets move together.
+fs::path resolve(const fs::path& folder, const std::string& path) {
+  const fs::path p(path);
+  return (p.is_absolute() ? p : folder / p).lexically_normal();
+}
+
+Camera readCamera(const JsonField& f) {
+  Camera c;
+  c.position = f["position"].vec3(R::any());
+  c.target = f["target"].vec3(R::any());
+  c.up = f["up"].vec3(R::any(), c.up);
+  c.fovYDeg = f["fov_y_deg"].number(R::open(0.0, 180.0), c.fovYDeg);
+  c.nearPlane = f["near"].number(R::above(0.0), c.nearPlane);
+  c.farPlane = f["far"].number(R::above(c.nearPlane, "camera.near"), c.farPlane);
+  const glm::vec3 view = c.target - c.position;
+  if (glm::length(view) == 0.0f) f["target"].fail("expected a point other than camera.position");
+  // lookAt needs an up that is not parallel to the view direction.
+  const float upLength = glm::length(c.up);
+  if (!(upLength > 0.0f) || glm::length(glm::cross(c.up / upLength, glm::normalize(view))) < 1e-4f) {
+    f["up"].fail("expected a direction not parallel to target - position (default [0, 1, 0])");
+  }
+  return c;
+}
+
+// M = T * Rz * Ry * Rx * S: scale, then rotate about X, then Y, then Z, then translate.
+glm::mat4 readTransform(const JsonField& f) {
+  const glm::vec3 translate = f["translate"].vec3(R::any(), glm::vec3(0.0f));
+  const glm::vec3 rotate = f["rotate_deg"].vec3(R::any(), glm::vec3(0.0f));
+  // Zero would collapse the normal matrix and a negative scale would turn faces inside out.
+  const glm::vec3 scale = f["scale"].vec3OrNumber(R::above(0.0), glm::vec3(1.0f));
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
+  m = glm::rotate(m, glm::radians(rotate.z), glm::vec3(0.0f, 0.0f, 1.0f));
+  m = glm::rotate(m, glm::radians(rotate.y), glm::vec3(0.0f, 1.0f, 0.0f));
+  m = glm::rotate(m, glm::radians(rotate.x), glm::vec3(1.0f, 0.0f, 0.0f));
+  return glm::scale(m, scale);
+}
+
+// Loads an sRGB base colour image once per file, however many materials use it.
+int readTexture(const JsonField& f, const fs::path& folder, Scene& scene) {
+  const std::string path = resolve(folder, f.string()).string();
+  for (size_t i = 0; i < scene.textures.size(); ++i) {
+    if (scene.textures[i].name == path) return static_cast<int>(i);
+  }
+  ImageRgba8 image;
+  try {
+    image = readPng(path);
+  } catch (const std::runtime_error& e) {
+    f.fail(e.what());
+  }
+  TextureData t;
+  t.name = path;
+  t.width = image.width;
+  t.height = image.height;
+  t.rgba = std::move(image.pixels);
+  t.srgb = true;
+  scene.textures.push_back(std::move(t));
+  return static_cast<int>(scene.textures.size()) - 1;
+}
+
+Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) {
+  Material m;
+  m.baseColor = f["base_color"].vec3OrNumber(R::closed(0.0, 1.0), m.baseColor);
+  m.roughness = f["roughness"].number(R::closed(0.0, 1.0), m.roughness);
+  m.metalness = f["metalness"].number(R::closed(0.0, 1.0), m.metalness);
+  m.emissive = f["emissive"].vec3OrNumber(R::atLeast(0.0), m.emissive);
+  m.doubleSided = f["double_sided"].boolean(m.doubleSided);
+  if (f["base_color_texture"].present()) m.baseColorTexture = readTexture(f["base_color_texture"], folder, scene);
+  return m;
+}
+
+void readObject(const JsonField& f, const fs::path& folder, Scene& scene) {
+  const JsonField shape = f["shape"], gltf = f["gltf"];
+  if (shape.present() == gltf.present()) {
+    f.fail(shape.present() ? "expected \"shape\" or \"gltf\", got both" : "expected a \"shape\" or a \"gltf\" field");
+  }
+  const glm::mat4 transform = readTransform(f["transform"]);
+  if (gltf.present()) {
+    if (f["material"].present()) f["material"].fail("a glTF object takes its materials from its file");
+    const std::string path = resolve(folder, gltf.string()).string();
+    if (!fs::is_regular_file(path)) gltf.fail("cannot open " + path);
+    try {
+      appendGltf(scene, path, transform);
+    } catch (const SceneError& e) {
+      gltf.fail(e.what());
+    }
+    return;
+  }
+  const std::string name = shape.string();
+  if (name != "plane" && name != "box" && name != "sphere") shape.expected("\"plane\", \"box\" or \"sphere\"");
+  const Shape s = name == "plane" ? Shape::Plane : name == "box" ? Shape::Box : Shape::Sphere;
+  scene.addShape(s, transform, readMaterial(f["material"], folder, scene));
+}
+
+PointLight readLight(const JsonField& f) {
+  PointLight l;
+  l.position = f["position"].vec3(R::any());
+  l.color = f["color"].vec3OrNumber(R::atLeast(0.0), l.color);
+  l.radius = f["radius"].number(R::atLeast(0.0));
+  const JsonField power = f["luminous_power"], intensity = f["intensity_cd"];
+  if (power.present() == intensity.present()) {
+    f.fail(power.present() ? "expected luminous_power or intensity_cd, got both"
+                           : "expected luminous_power (lm) or intensity_cd (cd), got neither");
+  }
+  // An isotropic point light of intensity I emits P = 4 pi I.
+  l.luminousPower = power.present() ? power.number(R::atLeast(0.0))
+                                    : 4.0f * glm::pi<float>() * intensity.number(R::atLeast(0.0));
+  return l;
+}
+
+std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount) {
+  RandomLightSpec spec;
+  spec.count = static_cast<int>(f["count"].integer(kMaxRandomLights));
+  if (lightCount >= 0) spec.count = lightCount;
+  spec.seed = f["seed"].integer(UINT64_MAX, spec.seed);
+  const JsonField bounds = f["bounds"];
+  const std::vector<JsonField> corners = bounds.items();
+  const char* boundsShape = "[[min x, y, z], [max x, y, z]] with min <= max";
+  if (!bounds.present() || corners.size() != 2) bounds.expected(boundsShape);
+  spec.boundsMin = corners[0].vec3(R::any());
+  spec.boundsMax = corners[1].vec3(R::any());
+  if (glm::any(glm::greaterThan(spec.boundsMin, spec.boundsMax))) bounds.expected(boundsShape);
+  std::tie(spec.radiusMin, spec.radiusMax) = f["radius"].interval(R::atLeast(0.0));
+  std::tie(spec.powerMin, spec.powerMax) = f["luminous_power"].interval(R::atLeast(0.0));
+  return makeRandomLights(spec);
+}
+
+Scene readJsonScene(const std::string& path, int lightCount) {
+  const nlohmann::json document = readJsonFile(path);
+  const JsonField root(document, path);
+  if (!document.is_object()) root.expected("a JSON object");
+  const fs::path folder = fs::path(path).parent_path();
+
+  Scene scene;
+  scene.name = fs::path(path).stem().string();
+  scene.camera = readCamera(root["camera"]);
+  scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
+  scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
+  for (const JsonField& o : root["objects"].items()) readObject(o, folder, scene);
+  for (const JsonField& l : root["lights"].items()) scene.lights.push_back(readLight(l));
+  const JsonField random = root["random_lights"];
+  if (random.present()) {
+    const std::vector<PointLight> lights = readRandomLights(random, lightCount);
+    scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
+  } else if (lightCount >= 0) {
+    random.fail("missing, but a light count was given (it replaces random_lights.count)");
+  }
+  return scene;
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+Scene loadSceneFile(const std::string& path, int lightCount) {
+  const std::string ext = lowerExtension(path);
+  const bool model = ext == ".gltf" || ext == ".glb";
+  if (model && lightCount >= 0) throw SceneError(path + ": a light count applies only to scene files with random_lights");
+  Scene scene = model ? loadModelScene(path) : readJsonScene(path, lightCount);
+  validateScene(scene, path);
+  return scene;
+}
+
+}  // namespace pbr

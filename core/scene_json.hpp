@@ -1,0 +1,14 @@
+#pragma once
+#include <string>
+
+#include "core/scene.hpp"
+
+namespace pbr {
+
+// Loads a scene file: JSON (the format of README "Scene files"), or a .gltf/.glb model on its own (see
+// loadModelScene). Throws SceneError with one line naming the file, the JSON path (e.g. lights[3].radius) and
+// what was expected. `lightCount`, when >= 0, replaces random_lights.count; a file without random_lights
+// (or a model) rejects it. The scene is checked by validateScene before it is returned.
+Scene loadSceneFile(const std::string& path, int lightCount = -1);
+
+}  // namespace pbr

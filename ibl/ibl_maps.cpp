@@ -1,0 +1,99 @@
+#include "ibl/ibl_maps.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "core/bindings.hpp"
+#include "core/gpu_texture.hpp"
+#include "ibl/dfg_table.hpp"
+#include "ibl/environment_cubemap.hpp"
+#include "ibl/irradiance_sh.hpp"
+#include "ibl/specular_prefilter.hpp"
+
+namespace pbr {
+
+namespace {
+
+const IblSettings& checked(const IblSettings& s) {
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("IBL settings: " + what);
+  };
+  require(s.faceSize >= 1 && s.faceSize <= 2048, "faceSize must be in [1, 2048]");
+  const int chain = mipLevelCount(s.faceSize, s.faceSize);
+  require(s.specularLevels >= 1 && s.specularLevels <= chain,
+          "specularLevels must be in [1, " + std::to_string(chain) + "] for faceSize " + std::to_string(s.faceSize));
+  // llvmpipe ends a shader invocation after 65535 loop iterations, silently (README, Limits).
+  require(s.specularSamples >= 1 && s.specularSamples <= 65535, "specularSamples must be in [1, 65535]");
+  require(s.dfgSize >= 2 && s.dfgSize <= 1024, "dfgSize must be in [2, 1024]");
+  require(s.dfgSamples >= 1 && s.dfgSamples <= 65535, "dfgSamples must be in [1, 65535]");
+  return s;
+}
+
+// Runs `step` inside a profiler pass when there is a profiler.
+template <class Step>
+auto timed(Profiler* profiler, const char* name, Step&& step) {
+  std::optional<ScopedPass> pass;
+  if (profiler) pass.emplace(*profiler, name);
+  return step();
+}
+
+// Precomputation passes compiled up front, so that the timed passes measure GPU work only.
+struct Passes {
+  explicit Passes(const ShaderLibrary& shaders)
+      : environment(shaders), irradiance(shaders), specular(shaders), dfg(shaders) {}
+  EnvironmentCubemapPass environment;
+  IrradianceShPass irradiance;
+  SpecularPrefilterPass specular;
+  DfgTablePass dfg;
+};
+
+}  // namespace
+
+struct IblMaps::Maps {
+  Buffer irradiance;
+  Cubemap specular;
+  Texture dfg;
+};
+
+IblMaps::Maps IblMaps::precompute(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& s,
+                                  Profiler* profiler) {
+  const Passes passes(shaders);
+  if (profiler) profiler->beginFrame();
+  const Cubemap source =
+      timed(profiler, "ibl environment", [&] { return passes.environment.run(environment, s.faceSize); });
+  Buffer irradiance = timed(profiler, "ibl irradiance", [&] { return passes.irradiance.run(source); });
+  Cubemap specular = timed(profiler, "ibl specular",
+                           [&] { return passes.specular.run(source, s.specularLevels, s.specularSamples); });
+  Texture dfg = timed(profiler, "ibl dfg", [&] { return passes.dfg.run(s.dfgSize, s.dfgSamples); });
+  if (profiler) profiler->endFrame();
+  return {std::move(irradiance), std::move(specular), std::move(dfg)};
+}
+
+IblMaps::IblMaps(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& settings,
+                 Profiler* profiler)
+    : IblMaps(precompute(shaders, environment, checked(settings), profiler), settings) {}
+
+IblMaps::IblMaps(Maps&& maps, const IblSettings& settings)
+    : settings_(settings),
+      irradiance_(std::move(maps.irradiance)),
+      specular_(std::move(maps.specular)),
+      dfg_(std::move(maps.dfg)),
+      specularSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
+      dfgSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
+
+void IblMaps::bind() const {
+  irradiance_.bindBase(GL_UNIFORM_BUFFER, binding::kIblUbo);
+  glBindTextureUnit(binding::kIblSpecularUnit, specular_.id());
+  glBindSampler(binding::kIblSpecularUnit, specularSampler_.id());
+  glBindTextureUnit(binding::kIblDfgUnit, dfg_.id());
+  glBindSampler(binding::kIblDfgUnit, dfgSampler_.id());
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+}
+
+size_t IblMaps::bytes() const {
+  return irradiance_.size() + specular_.bytes() +
+         static_cast<size_t>(dfg_.width()) * dfg_.height() * bytesPerTexel(dfg_.format());
+}
+
+}  // namespace pbr

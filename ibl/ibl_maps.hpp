@@ -1,0 +1,56 @@
+#pragma once
+#include <cstddef>
+
+#include "core/profiler.hpp"
+#include "core/shader_library.hpp"
+#include "ibl/cubemap.hpp"
+#include "ibl/environment.hpp"
+
+namespace pbr {
+
+struct IblSettings {
+  int faceSize = 128;         // environment and prefiltered specular cube faces at level 0
+  int specularLevels = 6;     // roughness k / (levels - 1) at level k; 128 -> 4x4 faces at roughness 1
+  int specularSamples = 256;  // GGX samples per prefiltered texel
+  int dfgSize = 64;           // DFG table, dfgSize^2 texels
+  int dfgSamples = 512;       // GGX samples per DFG texel
+};
+
+// Everything the lighting pass needs for image-based lighting of one environment, precomputed on the GPU once:
+// diffuse as 9 spherical-harmonic coefficients (a uniform block), specular as a GGX-prefiltered cube map, and
+// the split-sum DFG table. Shaders sample them through shaders/ibl/ibl_sample.glsl.
+class IblMaps {
+ public:
+  // With a profiler, the precomputation is one profiler frame of its own, passes "ibl environment",
+  // "ibl irradiance", "ibl specular" and "ibl dfg", compiled beforehand (llvmpipe still generates a shader's
+  // machine code at its first dispatch, inside the pass): call it outside a frame.
+  // Throws std::invalid_argument for settings out of range.
+  IblMaps(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& settings = {},
+          Profiler* profiler = nullptr);
+
+  // Binds the block to IBL_UBO and the maps, with their samplers, to IBL_SPECULAR_UNIT and IBL_DFG_UNIT, and
+  // turns on seamless cube-map filtering (GL state of the whole context).
+  void bind() const;
+  // GPU memory the maps hold.
+  size_t bytes() const;
+
+  const IblSettings& settings() const { return settings_; }
+  const Buffer& irradiance() const { return irradiance_; }  // one IblBlock
+  const Cubemap& specular() const { return specular_; }
+  const Texture& dfg() const { return dfg_; }
+
+ private:
+  struct Maps;
+  static Maps precompute(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& settings,
+                         Profiler* profiler);
+  IblMaps(Maps&& maps, const IblSettings& settings);
+
+  IblSettings settings_;
+  Buffer irradiance_;
+  Cubemap specular_;
+  Texture dfg_;
+  Sampler specularSampler_;
+  Sampler dfgSampler_;
+};
+
+}  // namespace pbr

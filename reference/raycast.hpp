@@ -1,0 +1,47 @@
+#pragma once
+#include <optional>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/scene.hpp"
+
+namespace pbr::reference {
+
+using glm::dvec3;
+
+struct Ray {
+  dvec3 origin;
+  dvec3 direction;  // unit
+};
+
+struct Hit {
+  double t = 0.0;
+  dvec3 position;
+  dvec3 normal;  // unit, facing the ray
+  size_t object = 0;
+};
+
+// The analytic shapes of a scene, each with its transform inverted once, intersected exactly in double.
+// Front faces only, as the rasterizer culls back faces (a plane seen from below is not there).
+class AnalyticScene {
+ public:
+  // Throws SceneError when an object is not an analytic shape (plane, sphere, box).
+  explicit AnalyticScene(const Scene& scene);
+  std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const;
+
+ private:
+  struct Shape {
+    pbr::Shape kind;
+    glm::dmat4 toObject;
+    glm::dmat4 toWorld;
+    glm::dmat3 normalToWorld;
+  };
+  std::vector<Shape> shapes_;
+};
+
+// The ray through the centre of pixel (x, y), rows counted from the top, for the scene camera.
+Ray cameraRay(const Camera& camera, int width, int height, int x, int y);
+
+}  // namespace pbr::reference

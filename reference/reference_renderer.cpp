@@ -1,0 +1,117 @@
+#include "reference/reference_renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "reference/directional_albedo.hpp"
+#include "reference/raycast.hpp"
+
+namespace pbr::reference {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kAlbedoBins = 64;
+constexpr int kAlbedoSamples = 32;  // per axis: the albedo is smooth in n.v and known to about 1e-3
+
+template <class Work>
+void parallelFor(int count, int threads, Work work) {
+  const int workers = threads > 0 ? threads : std::max(1, int(std::thread::hardware_concurrency()));
+  std::atomic<int> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < workers; ++t) {
+    pool.emplace_back([&] {
+      for (int i = next++; i < count; i = next++) work(i);
+    });
+  }
+  for (std::thread& t : pool) t.join();
+}
+
+ReferenceMaterial toReference(const Material& m) {
+  return {dvec3(m.baseColor), double(m.roughness), double(m.metalness)};
+}
+
+// Directional albedo of each object's material over n.v, for the exact response to uniform ambient light.
+std::vector<std::vector<dvec3>> albedoTables(const Scene& scene, int threads) {
+  std::vector<std::vector<dvec3>> tables(scene.objects.size());
+  if (scene.ambient == glm::vec3(0.0f)) return tables;
+  parallelFor(int(scene.objects.size()), threads, [&](int i) {
+    for (int b = 0; b < kAlbedoBins; ++b) {
+      const double nv = (b + 0.5) / kAlbedoBins;
+      tables[size_t(i)].push_back(directionalAlbedo(toReference(scene.objects[size_t(i)].material), nv, kAlbedoSamples));
+    }
+  });
+  return tables;
+}
+
+dvec3 lookupAlbedo(const std::vector<dvec3>& table, double NoV) {
+  const double x = std::clamp(NoV * kAlbedoBins - 0.5, 0.0, kAlbedoBins - 1.0);
+  const int i = std::min(int(x), kAlbedoBins - 2);
+  const double f = x - i;
+  return table[i] * (1.0 - f) + table[i + 1] * f;
+}
+
+}  // namespace
+
+bool ReferenceFrame::interior(int x, int y) const {
+  const int w = radiance.width, h = radiance.height;
+  const int id = objectIds[size_t(y) * w + x];
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = std::clamp(x + dx, 0, w - 1), ny = std::clamp(y + dy, 0, h - 1);
+      if (objectIds[size_t(ny) * w + nx] != id) return false;
+    }
+  }
+  return true;
+}
+
+ReferenceFrame renderReference(const Scene& scene, int width, int height, int threads) {
+  const AnalyticScene shapes(scene);
+  const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, threads);
+  const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
+  ReferenceFrame frame{{width, height, std::vector<float>(size_t(width) * height * 4, 0.0f)},
+                       std::vector<int>(size_t(width) * height, -1)};
+
+  auto shadeRow = [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const Ray ray = cameraRay(scene.camera, width, height, x, y);
+      // Clip to the camera's near and far planes along the view axis, as the rasterizer does.
+      const double axial = glm::dot(ray.direction, forward);
+      const std::optional<Hit> hit =
+          shapes.closestHit(ray, scene.camera.nearPlane / axial, scene.camera.farPlane / axial);
+      dvec3 color(0.0);
+      if (hit) {
+        const ReferenceMaterial m = toReference(scene.objects[hit->object].material);
+        const dvec3 V = -ray.direction;
+        const double NoV = std::max(glm::dot(hit->normal, V), 1e-4);
+        if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * lookupAlbedo(albedo[hit->object], NoV);
+        for (const PointLight& light : scene.lights) {
+          const dvec3 toLight = dvec3(light.position) - hit->position;
+          const double d = glm::length(toLight);
+          const dvec3 L = d > 1e-12 ? toLight / d : hit->normal;
+          const double NoL = glm::dot(hit->normal, L);
+          const double att = attenuation(d, light.radius);
+          if (NoL <= 0.0 || att <= 0.0) continue;
+          const double intensity = light.luminousPower / (4.0 * kPi);
+          color += evaluateBrdf(hit->normal, V, L, m).sum() * dvec3(light.color) * (intensity * att * NoL);
+        }
+      }
+      if (hit) frame.objectIds[size_t(y) * width + x] = int(hit->object);
+      float* p = &frame.radiance.pixels[(size_t(y) * width + x) * 4];
+      p[0] = float(color.x);
+      p[1] = float(color.y);
+      p[2] = float(color.z);
+      p[3] = 1.0f;
+    }
+  };
+
+  parallelFor(height, threads, shadeRow);
+  return frame;
+}
+
+}  // namespace pbr::reference

@@ -1,0 +1,64 @@
+// Image-based lighting for the lighting pass: the maps pbr::IblMaps precomputes, bound by IblMaps::bind().
+//   IBL_UBO            IblBlock: 9 spherical-harmonic radiance coefficients of the environment (diffuse)
+//   IBL_SPECULAR_UNIT  GGX-prefiltered radiance cube map, RGBA16F; level k holds roughness k / (levels - 1)
+//   IBL_DFG_UNIT       split-sum DFG table, RG16F, x = n.v, y = perceptual roughness
+// IBL_MULTIPLE_SCATTERING 1 adds the multiple-scattering energy compensation to shadeIbl.
+#include "../common/bindings.glsl"
+#include "../lighting/brdf.glsl"
+#include "sh9.glsl"
+
+#ifndef IBL_MULTIPLE_SCATTERING
+#define IBL_MULTIPLE_SCATTERING 0
+#endif
+
+// Mirrors pbr::IblBlock (ibl/irradiance_sh.hpp).
+layout(std140, binding = IBL_UBO) uniform IblBlock {
+  vec4 sh[9];  // rgb: radiance coefficients in the order of sh9.glsl
+} ibl;
+
+layout(binding = IBL_SPECULAR_UNIT) uniform samplerCube iblSpecularMap;
+layout(binding = IBL_DFG_UNIT) uniform sampler2D iblDfgTable;
+
+// Irradiance E(N) = integral of L(w) max(N.w, 0) dw; band-2 ringing below an isolated bright source can dip under
+// zero, which no irradiance can.
+vec3 iblIrradiance(vec3 N) { return max(shIrradiance9(N, ibl.sh), vec3(0.0)); }
+
+// Radiance a white Lambertian surface reflects, E / pi: the caller multiplies by its diffuse albedo.
+vec3 iblDiffuse(vec3 N) { return iblIrradiance(N) / PI; }
+
+// Environment radiance around R prefiltered by the GGX lobe of a perceptual roughness, between the two levels
+// that bracket it. Level 0 is the unfiltered environment, which also serves as the background.
+vec3 iblSpecular(vec3 R, float roughness) {
+  float lod = saturate(roughness) * float(textureQueryLevels(iblSpecularMap) - 1);
+  return textureLod(iblSpecularMap, R, lod).rgb;
+}
+
+// (A, B) with F0 A + B the directional albedo of the specular lobe (Karis 2013, "Real Shading in Unreal
+// Engine 4"); texel centres lie on the ends of both ranges (ibl/dfg.comp).
+vec2 iblDfg(float NoV, float roughness) {
+  vec2 size = vec2(textureSize(iblDfgTable, 0));
+  vec2 uv = (vec2(saturate(NoV), saturate(roughness)) * (size - 1.0) + 0.5) / size;
+  return textureLod(iblDfgTable, uv, 0.0).rg;
+}
+
+// Factor on the single-scattering specular lobe that restores the energy lost to masking, from the F0 = 1
+// albedo A + B: 1 + F0 (1 / (A + B) - 1) (Turquin 2019, "Practical multiple scattering compensation for
+// microfacet models"; the form Filament uses).
+vec3 iblEnergyCompensation(vec3 F0, vec2 dfg) { return 1.0 + F0 * (1.0 / (dfg.x + dfg.y) - 1.0); }
+
+// Split-sum image-based lighting of the renderer's material (glTF metal-rough): specular F0 A + B times the
+// prefiltered radiance; Lambert diffuse weighted, like the direct lighting, by (1 - F)(1 - metalness) with F the
+// specular albedo F0 A + B, so that a white dielectric in a uniform environment reflects exactly that radiance.
+// Occlusion scales both terms, as it does the renderer's ambient term.
+vec3 shadeIbl(vec3 N, vec3 V, vec3 baseColor, float roughness, float metalness, float occlusion) {
+  float NoV = max(dot(N, V), 1e-4);
+  vec3 F0 = f0FromMaterial(baseColor, metalness);
+  vec2 dfg = iblDfg(NoV, roughness);
+  vec3 specularAlbedo = F0 * dfg.x + dfg.y;
+#if IBL_MULTIPLE_SCATTERING
+  specularAlbedo *= iblEnergyCompensation(F0, dfg);
+#endif
+  vec3 specular = specularAlbedo * iblSpecular(reflect(-V, N), roughness);
+  vec3 diffuse = (1.0 - specularAlbedo) * (1.0 - metalness) * baseColor * iblDiffuse(N);
+  return (diffuse + specular) * occlusion;
+}

@@ -1,0 +1,37 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pbr::test {
+
+// A fresh directory per test case, removed afterwards; ctest runs cases as parallel processes, hence the pid.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  // Writes `text` to `name` (creating its folders) and returns the file's path.
+  std::string write(const std::string& name, const std::string& text) const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string readFile(const std::filesystem::path& path);
+
+struct PbrRun {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+// Runs the `pbr` binary with `args`, capturing both streams through files in `dir`.
+PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args);
+
+// True for exactly one newline-terminated line.
+bool isOneLine(const std::string& s);
+
+}  // namespace pbr::test

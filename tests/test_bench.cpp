@@ -1,0 +1,293 @@
+// `pbr bench` through the real binary: its CSV, JSON and trace files, skipping by estimate, malformed options,
+// and the charts scripts/plot_bench.py draws from the CSV.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+
+using pbr::test::PbrRun;
+using pbr::test::TempDir;
+using Json = nlohmann::json;
+
+namespace {
+
+// What a report must say about the circumstances of its run, in the CSV's "# key: value" lines and in JSON.
+const char* const kProvenanceKeys[] = {"command",     "run_date_utc", "gl_renderer", "gl_version",
+                                       "gl_vendor",   "egl_platform", "timing_mode", "timing_note",
+                                       "cpu_model",   "cpu_cores",    "build_type",  "git_commit",
+                                       "git_commit_date"};
+
+struct Csv {
+  std::map<std::string, std::string> provenance;
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+};
+
+// RFC 4180 fields: quoted where they hold a comma or a quote.
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+Csv parseCsv(const std::string& text) {
+  Csv csv;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# ", 0) == 0) {
+      const size_t colon = line.find(": ");
+      REQUIRE_MESSAGE(colon != std::string::npos, line);
+      csv.provenance[line.substr(2, colon - 2)] = line.substr(colon + 2);
+    } else if (csv.header.empty()) {
+      csv.header = splitCsvLine(line);
+    } else {
+      const std::vector<std::string> fields = splitCsvLine(line);
+      REQUIRE_MESSAGE(fields.size() == csv.header.size(), line);
+      std::map<std::string, std::string> row;
+      for (size_t i = 0; i < fields.size(); ++i) row[csv.header[i]] = fields[i];
+      csv.rows.push_back(row);
+    }
+  }
+  return csv;
+}
+
+bool isNumber(const std::string& s) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  return !s.empty() && *end == '\0' && std::isfinite(v);
+}
+
+// Two light counts, both culling modes, tiny frames: a second or less on llvmpipe.
+PbrRun runTinySweep(const TempDir& dir, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"bench",     "--lights", "16,64",   "--culling", "none,clustered",
+                                   "--model",   "pbr",      "--size",  "160x90",    "--warmup",
+                                   "1",         "--frames", "2",       "--csv",     dir.file("bench.csv"),
+                                   "--json",    dir.file("bench.json"), "--trace",  dir.file("trace.json")};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return pbr::test::runPbr(dir, args);
+}
+
+// Runs a shell command, returning its exit status and what it wrote to stdout and stderr.
+PbrRun runShell(const TempDir& dir, const std::string& command) {
+  const std::string redirected = command + " >" + dir.file("cmd_out.txt") + " 2>&1";
+  const int status = std::system(redirected.c_str());
+  PbrRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = pbr::test::readFile(dir.file("cmd_out.txt"));
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("bench: a tiny sweep writes CSV and JSON with every column filled and their provenance") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun run = runTinySweep(dir);
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.out.find("lighting") != std::string::npos);  // the table
+
+  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  for (const char* key : kProvenanceKeys) {
+    CAPTURE(key);
+    REQUIRE(csv.provenance.count(key) == 1);
+    CHECK_FALSE(csv.provenance.at(key).empty());
+  }
+  CHECK(csv.provenance.at("command").find("bench --lights 16,64") != std::string::npos);
+  CHECK(csv.provenance.at("run_date_utc").size() == 20);  // 2024-05-01T12:00:00Z
+  REQUIRE(csv.rows.size() == 4);
+  for (const auto& row : csv.rows) {
+    CAPTURE(row.at("lights"));
+    CAPTURE(row.at("culling"));
+    CHECK(row.at("status") == "ok");
+    CHECK(row.at("timed_frames") == "2");
+    for (const auto& [column, value] : row) {
+      CAPTURE(column);
+      CHECK_FALSE(value.empty());
+      if (column.size() > 3 && column.compare(column.size() - 3, 3, "_ms") == 0) {
+        // Only the cluster pass of a brute-force frame does not exist.
+        if (row.at("culling") == "none" && column.rfind("cluster_", 0) == 0) {
+          CHECK(value == "n/a");
+        } else {
+          REQUIRE(isNumber(value));
+          CHECK(std::stod(value) >= 0.0);
+        }
+      }
+    }
+    CHECK(std::stod(row.at("gbuffer_bytes")) > 0.0);
+    CHECK(std::stod(row.at("light_bytes")) == std::stod(row.at("lights")) * 32.0);
+    if (row.at("culling") == "clustered") {
+      CHECK(isNumber(row.at("avg_lights_per_cluster")));
+      CHECK(std::stod(row.at("non_empty_clusters")) > 0.0);
+      CHECK(std::stod(row.at("cluster_bytes")) > 0.0);
+    }
+    const double efficiency = std::stod(row.at("culling_efficiency"));
+    CHECK(efficiency >= 0.0);
+    CHECK(efficiency <= 1.0);
+  }
+
+  const Json json = Json::parse(pbr::test::readFile(dir.file("bench.json")));
+  CHECK(json.at("schema") == "pbr-bench/1");
+  for (const char* key : kProvenanceKeys) {
+    CAPTURE(key);
+    CHECK(json.at("provenance").at(key).get<std::string>() == csv.provenance.at(key));
+  }
+  REQUIRE(json.at("configurations").size() == 4);
+  for (const Json& c : json.at("configurations")) {
+    CAPTURE(c.at("label").get<std::string>());
+    CHECK(c.at("status") == "ok");
+    CHECK(c.at("skip_reason").is_null());
+    for (const char* pass : {"gbuffer", "lighting", "post"}) CHECK(c.at("passes").at(pass).at("median_ms") >= 0.0);
+    CHECK(c.at("passes").at("cluster").is_null() == (c.at("culling") == "none"));
+    CHECK(c.at("frame").at("p90_ms") >= c.at("frame").at("p10_ms"));
+    REQUIRE(c.at("frames").size() == 2);
+    for (const Json& f : c.at("frames")) CHECK(f.at("passes_ms").at("lighting") >= 0.0);
+    CHECK(c.at("light_stats").at("lights") == c.at("lights"));
+    CHECK(c.at("memory_bytes").at("total") > 0);
+  }
+}
+
+TEST_CASE("bench: the trace is Chrome trace-event JSON with one slice per pass per timed frame") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun run = runTinySweep(dir);
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  const Json trace = Json::parse(pbr::test::readFile(dir.file("trace.json")));
+  REQUIRE(trace.at("traceEvents").is_array());
+  std::map<int, int> slicesPerThread;
+  int threadNames = 0;
+  for (const Json& e : trace.at("traceEvents")) {
+    CAPTURE(e.dump());
+    for (const char* key : {"name", "ph", "pid", "tid"}) REQUIRE(e.contains(key));
+    if (e.at("ph") == "M") {
+      threadNames += e.at("name") == "thread_name";
+      continue;
+    }
+    REQUIRE(e.at("ph") == "X");
+    for (const char* key : {"cat", "ts", "dur"}) REQUIRE(e.contains(key));
+    CHECK(e.at("ts").get<double>() >= 0.0);
+    CHECK(e.at("dur").get<double>() >= 0.0);
+    ++slicesPerThread[e.at("tid").get<int>()];
+  }
+  CHECK(threadNames == 4);
+  REQUIRE(slicesPerThread.size() == 4);
+  // Per timed frame: the frame, G-buffer, lighting and post, plus the cluster pass when clustered.
+  for (const auto& [tid, slices] : slicesPerThread) CHECK((slices == 2 * 4 || slices == 2 * 5));
+}
+
+TEST_CASE("bench: plot_bench.py draws PNG charts from the CSV") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  if (runShell(dir, "/usr/bin/python3 -c 'import matplotlib'").exitCode != 0) {
+    FAIL("/usr/bin/python3 cannot import matplotlib: install the Debian package python3-matplotlib "
+         "(scripts/install-deps.sh does)");
+  }
+  REQUIRE(runTinySweep(dir).exitCode == 0);
+  const PbrRun plot = runShell(dir, "/usr/bin/python3 " + std::string(PBR_SOURCE_DIR) + "/scripts/plot_bench.py " +
+                                        dir.file("bench.csv") + " --out " + dir.file("charts"));
+  CAPTURE(plot.out);
+  REQUIRE(plot.exitCode == 0);
+  for (const char* chart : {"perf-frame-time.png", "perf-passes.png", "perf-speedup.png"}) {
+    CAPTURE(chart);
+    const std::string png = pbr::test::readFile(dir.path() / "charts" / chart);
+    REQUIRE(png.size() > 8);
+    CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+  }
+}
+
+TEST_CASE("bench: --max-seconds skips configurations estimated to take longer, and says so everywhere") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun run = runTinySweep(dir, {"--max-seconds", "0.001"});
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.out.find("skipped") != std::string::npos);
+
+  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  REQUIRE(csv.rows.size() == 4);
+  for (const auto& row : csv.rows) {
+    CHECK(row.at("status") == "skipped");
+    CHECK(row.at("skip_reason").find("--max-seconds") != std::string::npos);
+    CHECK(row.at("timed_frames") == "0");
+    CHECK(row.at("lighting_median_ms") == "skipped");
+    CHECK(row.at("culling_efficiency") == "skipped");
+    CHECK(std::stod(row.at("estimated_s")) > 0.001);
+  }
+  const Json json = Json::parse(pbr::test::readFile(dir.file("bench.json")));
+  for (const Json& c : json.at("configurations")) {
+    CHECK(c.at("status") == "skipped");
+    CHECK(c.at("skip_reason").get<std::string>().find("--max-seconds") != std::string::npos);
+    CHECK(c.at("frames").empty());
+    CHECK(c.at("passes").is_null());
+  }
+}
+
+TEST_CASE("bench: --constant-density scales light radii by sqrt(1024 / lights)") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  std::vector<Csv> sweeps;
+  for (bool constantDensity : {false, true}) {
+    std::vector<std::string> args = {"bench",  "--lights", "256,4096", "--culling", "clustered", "--model", "pbr",
+                                     "--size", "160x90",   "--warmup", "1",         "--frames",  "1",
+                                     "--csv",  dir.file("bench.csv")};
+    if (constantDensity) args.push_back("--constant-density");
+    const PbrRun run = pbr::test::runPbr(dir, args);
+    CAPTURE(run.err);
+    REQUIRE(run.exitCode == 0);
+    sweeps.push_back(parseCsv(pbr::test::readFile(dir.file("bench.csv"))));
+    REQUIRE(sweeps.back().rows.size() == 2);
+  }
+  const auto avg = [&](size_t sweep, size_t row) {
+    return std::stod(sweeps[sweep].rows[row].at("avg_lights_per_cluster"));
+  };
+  CHECK(sweeps[0].provenance.at("constant_density") == "no");
+  CHECK(std::stod(sweeps[0].rows[0].at("light_radius_scale")) == 1.0);
+  CHECK(std::stod(sweeps[1].rows[0].at("light_radius_scale")) == doctest::Approx(2.0));
+  CHECK(std::stod(sweeps[1].rows[1].at("light_radius_scale")) == doctest::Approx(0.5));
+  // Larger lights below the reference count and smaller ones above it: the clusters see it.
+  CHECK(avg(1, 0) > avg(0, 0));
+  CHECK(avg(1, 1) < avg(0, 1));
+}
+
+TEST_CASE("bench: malformed options exit 2 with one line on stderr") {
+  const TempDir dir;
+  const std::vector<std::vector<std::string>> cases = {
+      {"--lights", "64,x"}, {"--lights", "64,,256"}, {"--lights", "-1"},   {"--culling", "fast"},
+      {"--model", "phong"}, {"--culling", "none,none"}, {"--frames", "0"}, {"--warmup", "0"},
+      {"--max-seconds", "soon"}, {"--timing", "fast"}, {"--size", "big"}};
+  for (const auto& args : cases) {
+    std::vector<std::string> argv = {"bench"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const PbrRun run = pbr::test::runPbr(dir, argv);
+    CAPTURE(args[0]);
+    CAPTURE(args[1]);
+    CAPTURE(run.err);
+    CHECK(run.exitCode == 2);
+    CHECK(pbr::test::isOneLine(run.err));
+    CHECK(run.out.empty());
+  }
+}

@@ -1,0 +1,474 @@
+// Loading glTF 2.0 files into pbr::Scene without a GPU: the shared sample assets, and small files written here
+// whose expected contents the tests know from what they wrote.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/assets.hpp"
+#include "core/builtin_scenes.hpp"
+#include "core/gltf_loader.hpp"
+#include "core/mesh_tangent_space.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gltf_builder.hpp"
+
+using nlohmann::json;
+using pbr::test::GltfBuilder;
+using pbr::test::QuadSpec;
+using pbr::test::TempDir;
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+size_t triangles(const pbr::Scene& scene) {
+  size_t n = 0;
+  for (const pbr::SceneObject& o : scene.objects) n += scene.meshes[static_cast<size_t>(o.mesh)].indices.size() / 3;
+  return n;
+}
+
+// The message of the SceneError `load` throws; fails the test when it throws none.
+std::string errorOf(const std::function<void()>& load) {
+  try {
+    load();
+  } catch (const pbr::SceneError& e) {
+    return e.what();
+  }
+  FAIL("expected a pbr::SceneError");
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The angle in degrees between two vectors.
+float degreesBetween(const glm::vec3& a, const glm::vec3& b) {
+  return glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
+}
+
+// A one-quad file: its path after writing `builder` with the quad, untextured unless the spec names a material.
+std::string quadFile(const TempDir& dir, const QuadSpec& spec, const std::string& name, GltfBuilder builder = {}) {
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, spec)}});
+  return builder.writeGltf(dir.path(), name);
+}
+
+// Every tangent is a unit vector perpendicular to its normal, with handedness +-1.
+void checkTangentFrames(const pbr::MeshData& mesh) {
+  size_t bad = 0;
+  for (const pbr::Vertex& v : mesh.vertices) {
+    const glm::vec3 t(v.tangent);
+    const bool ok = std::abs(glm::length(t) - 1.0f) < 1e-3f &&
+                    std::abs(glm::dot(t, glm::normalize(v.normal))) < 1e-3f && std::abs(v.tangent.w) == 1.0f;
+    bad += ok ? 0 : 1;
+  }
+  CHECK(bad == 0);
+}
+
+}  // namespace
+
+TEST_CASE("gltf assets: DamagedHelmet, Suzanne and BoxTextured load with their triangles, materials and textures") {
+  for (const char* file : {"DamagedHelmet/glTF/DamagedHelmet.gltf", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"}) {
+    CAPTURE(file);
+    pbr::Scene scene;
+    const pbr::Bounds b = pbr::appendGltf(scene, pbr::assetPath(file));
+    CHECK(triangles(scene) == 15452);
+    REQUIRE(scene.objects.size() == 1);
+    const pbr::Material& m = scene.objects[0].material;
+    // Every map of the metal-rough model; base colour and emissive are the sRGB ones.
+    REQUIRE(m.baseColorTexture >= 0);
+    REQUIRE(m.metallicRoughnessTexture >= 0);
+    REQUIRE(m.normalTexture >= 0);
+    REQUIRE(m.occlusionTexture >= 0);
+    REQUIRE(m.emissiveTexture >= 0);
+    CHECK(scene.textures.size() == 5);
+    for (const pbr::TextureData& t : scene.textures) {
+      CHECK(t.width == 2048);
+      CHECK(t.height == 2048);
+    }
+    CHECK(scene.textures[static_cast<size_t>(m.baseColorTexture)].srgb);
+    CHECK(scene.textures[static_cast<size_t>(m.emissiveTexture)].srgb);
+    CHECK_FALSE(scene.textures[static_cast<size_t>(m.normalTexture)].srgb);
+    CHECK_FALSE(scene.textures[static_cast<size_t>(m.metallicRoughnessTexture)].srgb);
+    CHECK(m.emissive == glm::vec3(1.0f));
+    // The file has no TANGENT: generated ones must form proper frames.
+    checkTangentFrames(scene.meshes[static_cast<size_t>(scene.objects[0].mesh)]);
+    // The node turns the Z-forward mesh by 90 degrees about X: mesh z in [-0.901, 0.901] becomes world y.
+    CHECK(b.min.y == doctest::Approx(-0.901).epsilon(1e-3));
+    CHECK(b.max.y == doctest::Approx(0.901).epsilon(1e-3));
+  }
+
+  pbr::Scene suzanne;
+  pbr::appendGltf(suzanne, pbr::assetPath("Suzanne/glTF/Suzanne.gltf"));
+  CHECK(triangles(suzanne) == 3936);
+  REQUIRE(suzanne.objects.size() == 1);
+  CHECK(suzanne.objects[0].material.baseColorTexture >= 0);
+  CHECK(suzanne.objects[0].material.metallicRoughnessTexture >= 0);
+  CHECK(suzanne.objects[0].material.normalTexture == -1);
+
+  pbr::Scene box;
+  pbr::appendGltf(box, pbr::assetPath("BoxTextured/glTF-Embedded/BoxTextured.gltf"));
+  CHECK(triangles(box) == 12);
+  REQUIRE(box.objects.size() == 1);
+  REQUIRE(box.textures.size() == 1);
+  const pbr::TextureData& t = box.textures[0];
+  CHECK(t.srgb);
+  CHECK(t.wrapS == 0x2901);  // REPEAT: the UVs reach 6
+  CHECK(t.wrapT == 0x2901);
+  CHECK(t.minFilter == 0x2702);  // NEAREST_MIPMAP_LINEAR as the file's sampler says
+  CHECK(t.magFilter == 0x2601);
+  float maxU = 0.0f;
+  for (const pbr::Vertex& v : box.meshes[0].vertices) maxU = std::max(maxU, v.uv.x);
+  CHECK(maxU == 6.0f);
+  // The root node's matrix turns Z-up into Y-up: +Z goes to +Y, +Y to -Z.
+  const glm::mat4& m = box.objects[0].transform;
+  CHECK(glm::length(glm::vec3(m * glm::vec4(0, 0, 1, 0)) - glm::vec3(0, 1, 0)) < 1e-6f);
+  CHECK(glm::length(glm::vec3(m * glm::vec4(0, 1, 0, 0)) - glm::vec3(0, 0, -1)) < 1e-6f);
+}
+
+TEST_CASE("gltf tangents: Suzanne's TANGENT attribute is used as stored") {
+  // The test reads the accessor itself: Suzanne's tangents are tightly packed floats.
+  const std::string path = pbr::assetPath("Suzanne/glTF/Suzanne.gltf");
+  const json doc = json::parse(pbr::test::readFile(path));
+  const json& prim = doc["meshes"][0]["primitives"][0];
+  const json& accessor = doc["accessors"][prim["attributes"]["TANGENT"].get<int>()];
+  const json& view = doc["bufferViews"][accessor["bufferView"].get<int>()];
+  REQUIRE(view.value("byteStride", 16) == 16);
+  const std::string bin =
+      pbr::test::readFile(std::filesystem::path(path).parent_path() / doc["buffers"][0]["uri"].get<std::string>());
+  const size_t offset = view.value("byteOffset", size_t(0)) + accessor.value("byteOffset", size_t(0));
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  const pbr::MeshData& mesh = scene.meshes[0];
+  REQUIRE(mesh.vertices.size() == accessor["count"].get<size_t>());
+  size_t same = 0;
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    glm::vec4 stored;
+    std::memcpy(&stored, bin.data() + offset + 16 * i, 16);
+    same += mesh.vertices[i].tangent == stored ? 1 : 0;
+  }
+  CHECK(same == mesh.vertices.size());
+}
+
+TEST_CASE("gltf tangents: generated for a quad match the written ones, for upright, mirrored and rotated UVs") {
+  const TempDir dir;
+  const float c = std::cos(glm::radians(30.0f)), s = std::sin(glm::radians(30.0f));
+  struct Case {
+    const char* name;
+    glm::mat2 uvFromXy;
+    glm::vec4 tangent;  // along +u in the plane; w = +1 where +v runs down the image as seen from the front
+  };
+  const Case cases[] = {
+      {"upright", glm::mat2(0.5f, 0.0f, 0.0f, -0.5f), {1, 0, 0, 1}},
+      {"mirrored", glm::mat2(-0.5f, 0.0f, 0.0f, -0.5f), {-1, 0, 0, -1}},
+      // The image turned by 30 degrees counter-clockwise and stretched: u grows along (c, s).
+      // u = 0.5 (x, y).(c, s), v = 0.25 (x, y).(s, -c): the image turned 30 degrees counter-clockwise and
+      // stretched, still upright.
+      {"rotated", glm::mat2(0.5f * c, 0.25f * s, 0.5f * s, -0.25f * c), {c, s, 0, 1}},
+      {"flipped v", glm::mat2(0.5f, 0.0f, 0.0f, 0.5f), {1, 0, 0, -1}},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.name);
+    QuadSpec with;
+    with.uvFromXy = k.uvFromXy;
+    with.tangents = true;
+    with.tangent = k.tangent;
+    QuadSpec without = with;
+    without.tangents = false;
+    pbr::Scene a, b;
+    pbr::appendGltf(a, quadFile(dir, with, std::string(k.name) + "_with"));
+    pbr::appendGltf(b, quadFile(dir, without, std::string(k.name) + "_without"));
+    REQUIRE(a.meshes.size() == 1);
+    REQUIRE(b.meshes.size() == 1);
+    for (size_t i = 0; i < 4; ++i) {
+      CAPTURE(i);
+      CHECK(a.meshes[0].vertices[i].tangent == k.tangent);  // read as written
+      const glm::vec4 g = b.meshes[0].vertices[i].tangent;
+      CHECK(degreesBetween(glm::vec3(g), glm::vec3(k.tangent)) < 0.1f);
+      CHECK(g.w == k.tangent.w);
+    }
+  }
+}
+
+TEST_CASE("gltf geometry: node transforms compose, flat normals are generated, strips and fans become triangles") {
+  const TempDir dir;
+  GltfBuilder builder;
+  QuadSpec spec;
+  spec.normals = false;
+  const int mesh = pbr::test::addQuad(builder, spec);
+  // Parent: translate (1, 2, 3) and rotate 90 degrees about Y (quaternion x, y, z, w); child: scale 2 and a
+  // matrix translation, so world = T R * M S.
+  builder.doc["nodes"] = json::array(
+      {{{"translation", {1, 2, 3}}, {"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}, {"children", {1}}},
+       {{"mesh", mesh}, {"matrix", {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 5, 1}}}});
+  builder.doc["scenes"][0]["nodes"] = {0};
+  const glm::mat4 outer = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+  pbr::Scene scene;
+  const pbr::Bounds bounds = pbr::appendGltf(scene, builder.writeGltf(dir.path(), "nodes"), outer);
+  REQUIRE(scene.objects.size() == 1);
+  const glm::mat4 expected = outer * glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) *
+                             glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0)) *
+                             glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 5)) *
+                             glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
+  for (int col = 0; col < 4; ++col) CHECK(glm::length(scene.objects[0].transform[col] - expected[col]) < 1e-5f);
+  // The quad spans x, y in [-2, 2] at z = 5 before the rotation, which takes z to x: x = 1 + 5, y = 2 - 1 +- 2.
+  CHECK(bounds.min.x == doctest::Approx(6.0f));
+  CHECK(bounds.max.x == doctest::Approx(6.0f));
+  CHECK(bounds.min.y == doctest::Approx(-1.0f));
+  CHECK(bounds.max.y == doctest::Approx(3.0f));
+  // Without NORMAL every triangle gets its own vertices with the face normal.
+  const pbr::MeshData& m = scene.meshes[0];
+  CHECK(m.vertices.size() == 6);
+  for (const pbr::Vertex& v : m.vertices) CHECK(v.normal == glm::vec3(0, 0, 1));
+
+  for (const auto& [mode, indices, expectedTriangles] :
+       {std::tuple<int, std::vector<uint32_t>, size_t>{5, {0, 1, 3, 2}, 2}, {6, {0, 1, 2, 3}, 2}}) {
+    CAPTURE(mode);
+    GltfBuilder b;
+    const std::vector<float> positions = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    const std::vector<float> normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    b.addRootNode(
+        {{"mesh", b.addMesh({{"attributes",
+                              {{"POSITION", b.addFloats(positions, "VEC3")}, {"NORMAL", b.addFloats(normals, "VEC3")}}},
+                             {"indices", b.addIndices(indices)},
+                             {"mode", mode}})}});
+    pbr::Scene s;
+    pbr::appendGltf(s, b.writeGltf(dir.path(), "mode" + std::to_string(mode)));
+    REQUIRE(s.meshes.size() == 1);
+    const pbr::MeshData& sm = s.meshes[0];
+    REQUIRE(sm.indices.size() == 3 * expectedTriangles);
+    // Every triangle stays counter-clockwise seen from +Z, where the normals point.
+    for (size_t t = 0; t < expectedTriangles; ++t) {
+      const glm::vec3 p0 = sm.vertices[sm.indices[3 * t]].position, p1 = sm.vertices[sm.indices[3 * t + 1]].position,
+                      p2 = sm.vertices[sm.indices[3 * t + 2]].position;
+      CHECK(glm::cross(p1 - p0, p2 - p0).z > 0.0f);
+    }
+  }
+}
+
+TEST_CASE("gltf materials: factors, alpha modes, double-sided, emissive strength and the default material") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int material = builder.addMaterial(
+      {{"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.25, 0.5, 0.75, 0.4}}, {"metallicFactor", 0.3}, {"roughnessFactor", 0.7}}},
+       {"emissiveFactor", {1.0, 0.5, 0.25}},
+       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}},
+       {"alphaMode", "MASK"},
+       {"alphaCutoff", 0.3},
+       {"doubleSided", true}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  builder.doc["extensionsRequired"] = {"KHR_materials_emissive_strength"};
+  QuadSpec withMaterial;
+  withMaterial.material = material;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, withMaterial)}});
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, QuadSpec{})}});
+  pbr::Scene scene;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "materials"));
+  REQUIRE(scene.objects.size() == 2);
+  const pbr::Material& m = scene.objects[0].material;
+  CHECK(m.baseColor == glm::vec3(0.25f, 0.5f, 0.75f));
+  CHECK(m.alpha == 0.4f);
+  CHECK(m.metalness == 0.3f);
+  CHECK(m.roughness == 0.7f);
+  CHECK(m.emissive == glm::vec3(4.0f, 2.0f, 1.0f));
+  CHECK(m.alphaMode == pbr::AlphaMode::Mask);
+  CHECK(m.alphaCutoff == 0.3f);
+  CHECK(m.doubleSided);
+  // glTF's default material: white, metallic 1, roughness 1, single-sided, opaque.
+  const pbr::Material& d = scene.objects[1].material;
+  CHECK(d.baseColor == glm::vec3(1.0f));
+  CHECK(d.metalness == 1.0f);
+  CHECK(d.roughness == 1.0f);
+  CHECK(d.alphaMode == pbr::AlphaMode::Opaque);
+  CHECK_FALSE(d.doubleSided);
+}
+
+TEST_CASE("gltf lights: KHR_lights_punctual point lights, intensity to luminous power, range to radius") {
+  const TempDir dir;
+  GltfBuilder builder;
+  builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "point"}, {"intensity", 10.0}, {"range", 5.0}, {"color", {1.0, 0.5, 0.25}}},
+      {{"type", "point"}, {"intensity", 2.5}, {"color", {0.5, 0.8, 0.2}}},
+      {{"type", "directional"}, {"intensity", 3.0}}};
+  builder.doc["nodes"] =
+      json::array({{{"translation", {1, 2, 3}}, {"children", {1, 2}}},
+                   {{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                   {{"translation", {0, 0, -4}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
+                   {{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}});
+  builder.doc["scenes"][0]["nodes"] = {0, 3};
+  pbr::Scene scene;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "lights"));
+  // The directional light is not supported and is skipped with a warning.
+  REQUIRE(scene.lights.size() == 2);
+  const pbr::PointLight& a = scene.lights[0];
+  CHECK(a.position == glm::vec3(1, 3, 3));
+  CHECK(a.luminousPower == doctest::Approx(4.0 * kPi * 10.0));  // P = 4 pi I
+  CHECK(a.radius == 5.0f);
+  CHECK(a.color == glm::vec3(1.0f, 0.5f, 0.25f));
+  const pbr::PointLight& b = scene.lights[1];
+  CHECK(b.position == glm::vec3(1, 2, -1));
+  CHECK(b.luminousPower == doctest::Approx(4.0 * kPi * 2.5));
+  // No range: the distance where I x (brightest channel) / d^2 falls to the stated cut-off illuminance.
+  CHECK(b.radius == doctest::Approx(std::sqrt(2.5 * 0.8 / pbr::kGltfLightCutoffIlluminance)));
+  CHECK(2.5f * 0.8f / (b.radius * b.radius) == doctest::Approx(pbr::kGltfLightCutoffIlluminance));
+}
+
+TEST_CASE("gltf errors: malformed files give one line naming the file and the field") {
+  const TempDir dir;
+  const auto check = [](const std::string& message, const std::string& file, std::initializer_list<const char*> parts) {
+    CAPTURE(message);
+    CHECK(message.rfind(file + ": ", 0) == 0);
+    CHECK(message.find('\n') == std::string::npos);
+    for (const char* part : parts) CHECK(contains(message, part));
+  };
+  const auto quad = [](QuadSpec spec = {}) {
+    GltfBuilder b;
+    b.addRootNode({{"mesh", pbr::test::addQuad(b, spec)}});
+    return b;
+  };
+  const auto load = [&](const GltfBuilder& b, const std::string& name) {
+    const std::string path = b.writeGltf(dir.path(), name);
+    CAPTURE(name);
+    pbr::Scene scene;
+    return std::make_pair(path, errorOf([&] { pbr::appendGltf(scene, path); }));
+  };
+
+  {
+    GltfBuilder b = quad();
+    b.doc["bufferViews"][2]["byteLength"] = 4096;
+    const auto [path, message] = load(b, "view");
+    check(message, path, {"bufferViews[2]", "byteOffset + byteLength past the end of buffer 0"});
+  }
+  {
+    GltfBuilder b = quad();
+    b.doc["accessors"][1]["count"] = 5;  // TEXCOORD_0: 5 VEC2 elements in a 32-byte view
+    const auto [path, message] = load(b, "accessor");
+    check(message, path, {"accessors[1]", "bufferViews[1]"});
+  }
+  {
+    GltfBuilder b = quad();
+    b.doc["accessors"][0]["componentType"] = 5123;  // POSITION as UNSIGNED_SHORT
+    const auto [path, message] = load(b, "component");
+    check(message, path, {"attributes.POSITION", "UNSIGNED_SHORT"});
+  }
+  {
+    GltfBuilder b = quad();
+    const std::vector<uint32_t> bad = {0, 1, 2, 0, 2, 7};
+    const int accessor = b.doc["meshes"][0]["primitives"][0]["indices"];
+    const int view = b.doc["accessors"][accessor]["bufferView"];
+    std::memcpy(b.bin.data() + b.doc["bufferViews"][view]["byteOffset"].get<size_t>(), bad.data(), 24);
+    const auto [path, message] = load(b, "index");
+    check(message, path, {"meshes[0].primitives[0].indices", "index 7", "4 vertices"});
+  }
+  {
+    GltfBuilder b;
+    QuadSpec spec;
+    spec.material = b.addMaterial({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    b.doc["images"] = {{{"uri", "missing.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.addRootNode({{"mesh", pbr::test::addQuad(b, spec)}});
+    const auto [path, message] = load(b, "image");
+    check(message, path, {"images[0]", "missing.png"});
+  }
+  {
+    GltfBuilder b = quad();
+    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const auto [path, message] = load(b, "extension");
+    check(message, path, {"extensionsRequired", "KHR_draco_mesh_compression"});
+  }
+  {
+    GltfBuilder b = quad();
+    b.doc["nodes"][0]["children"] = {0};
+    const auto [path, message] = load(b, "cycle");
+    check(message, path, {"nodes[0]"});
+  }
+  {
+    const std::string path = (dir.path() / "not_json.gltf").string();
+    std::ofstream(path) << "{ this is not json";
+    pbr::Scene scene;
+    check(errorOf([&] { pbr::appendGltf(scene, path); }), path, {});
+  }
+  {
+    const std::string path = (dir.path() / "absent.gltf").string();
+    pbr::Scene scene;
+    check(errorOf([&] { pbr::appendGltf(scene, path); }), path, {"cannot open"});
+  }
+}
+
+TEST_CASE("gltf errors: extreme values in every index, offset and count are rejected or loaded, never read wildly") {
+  // Under AddressSanitizer (make sanitize) any read outside a buffer fails this test.
+  const TempDir dir;
+  GltfBuilder base;
+  QuadSpec spec;
+  spec.tangents = true;
+  base.addRootNode({{"mesh", pbr::test::addQuad(base, spec)}});
+  const std::vector<json> values = {-1,           0, 1, 3, 7, 255, 65536, 2147483647, 4294967295u, 1099511627776ull,
+                                    -4294967296ll};
+  int variant = 0, rejected = 0;
+  const auto attempt = [&](const GltfBuilder& b, bool glb) {
+    const std::string name = "v" + std::to_string(variant++);
+    const std::string path = glb ? b.writeGlb(dir.path(), name) : b.writeGltf(dir.path(), name);
+    pbr::Scene scene;
+    try {
+      pbr::appendGltf(scene, path);
+    } catch (const pbr::SceneError& e) {
+      ++rejected;
+      CHECK(std::string(e.what()).rfind(path + ": ", 0) == 0);
+    }
+  };
+  const auto mutate = [&](const char* array, const char* field) {
+    for (size_t i = 0; i < base.doc[array].size(); ++i) {
+      for (const json& v : values) {
+        GltfBuilder b = base;
+        b.doc[array][i][field] = v;
+        attempt(b, (variant % 2) == 1);
+      }
+    }
+  };
+  for (const char* f : {"bufferView", "byteOffset", "count", "componentType"}) mutate("accessors", f);
+  for (const char* f : {"buffer", "byteOffset", "byteLength", "byteStride"}) mutate("bufferViews", f);
+  for (const char* f : {"mesh"}) mutate("nodes", f);
+  for (const json& v : values) {
+    GltfBuilder b = base;
+    b.doc["meshes"][0]["primitives"][0]["indices"] = v;
+    attempt(b, false);
+    b = base;
+    b.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = v;
+    attempt(b, true);
+    b = base;
+    b.doc["scenes"][0]["nodes"] = {v};
+    attempt(b, false);
+  }
+  MESSAGE(variant << " variants, " << rejected << " rejected");
+  CHECK(rejected > variant / 2);
+}
+
+TEST_CASE("gltf assets: PBR_ASSET_DIR moves the asset folder, and a missing asset is one line naming its path") {
+  const TempDir dir;
+  const char* previous = std::getenv("PBR_ASSET_DIR");
+  const std::string saved = previous ? previous : "";
+  ::setenv("PBR_ASSET_DIR", dir.path().c_str(), 1);
+  const std::string expected = (dir.path() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb").string();
+  const std::string message = errorOf([] { pbr::makeBuiltinScene("helmet"); });
+  CHECK(message.rfind(expected + ": ", 0) == 0);
+  CHECK(message.find('\n') == std::string::npos);
+  std::ofstream(dir.path() / "present.txt") << "x";
+  CHECK(pbr::assetPath("present.txt") == (dir.path() / "present.txt").string());
+  if (previous) {
+    ::setenv("PBR_ASSET_DIR", saved.c_str(), 1);
+  } else {
+    ::unsetenv("PBR_ASSET_DIR");
+  }
+}

@@ -1,0 +1,376 @@
+// glTF models through the whole renderer: the sample assets render lit and textured, and small files written here
+// check each material input (alpha mask, normal map, emission, occlusion, double-sided) against what the test
+// knows it wrote.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/assets.hpp"
+#include "core/builtin_scenes.hpp"
+#include "core/gltf_loader.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+#include "tests/gltf_builder.hpp"
+#include "tests/render_util.hpp"
+
+using nlohmann::json;
+using pbr::test::GltfBuilder;
+using pbr::test::QuadSpec;
+using pbr::test::TempDir;
+
+namespace {
+
+constexpr glm::ivec2 kSize{192, 108};
+
+pbr::FrameOptions options(pbr::ShadingModel model = pbr::ShadingModel::Pbr) {
+  pbr::FrameOptions o;
+  o.model = model;
+  return o;
+}
+
+const float* pixel(const pbr::ImageRgbaF& image, glm::ivec2 p) { return image.at(p.x, p.y); }
+glm::vec3 rgb(const pbr::ImageRgbaF& image, glm::ivec2 p) {
+  const float* v = pixel(image, p);
+  return {v[0], v[1], v[2]};
+}
+
+// Frame positions on the centre row: the centre, and a quarter of the quad's width left and right of it. The
+// quad of quadScene spans about 38 pixels either side of the centre.
+const glm::ivec2 kCentre{kSize.x / 2, kSize.y / 2};
+const glm::ivec2 kLeft{kSize.x / 2 - 19, kSize.y / 2};
+const glm::ivec2 kRight{kSize.x / 2 + 19, kSize.y / 2};
+
+// The quad files of gltf_builder seen head-on from +Z, 3 units away.
+pbr::Scene quadScene(const std::string& path) {
+  pbr::Scene scene;
+  scene.camera.position = {0.0f, 0.0f, 3.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.fovYDeg = 50.0f;
+  scene.camera.nearPlane = 0.1f;
+  scene.camera.farPlane = 20.0f;
+  pbr::appendGltf(scene, path);
+  return scene;
+}
+
+// A model framed from the front-right and above, lit by a white key light and a dimmer fill, with some ambient.
+pbr::Scene modelScene(const std::string& path) {
+  pbr::Scene scene;
+  const pbr::Bounds b = pbr::appendGltf(scene, path);
+  const glm::vec3 centre = 0.5f * (b.min + b.max);
+  const float radius = 0.5f * glm::length(b.max - b.min);
+  const glm::vec3 view = glm::normalize(glm::vec3(0.4f, 0.3f, 1.0f));
+  scene.camera.position = centre + view * radius * 2.0f;
+  scene.camera.target = centre;
+  scene.camera.fovYDeg = 45.0f;
+  scene.camera.nearPlane = 0.1f * radius;
+  scene.camera.farPlane = 10.0f * radius;
+  scene.ambient = glm::vec3(0.3f);
+  const float power = 1500.0f * radius * radius;  // the same illuminance at any model scale
+  scene.lights.push_back({centre + glm::vec3(1.5f, 2.0f, 2.5f) * radius, 20.0f * radius, glm::vec3(1.0f), power});
+  scene.lights.push_back(
+      {centre + glm::vec3(-2.5f, 0.5f, 1.5f) * radius, 20.0f * radius, glm::vec3(0.6f, 0.7f, 1.0f), 0.5f * power});
+  return scene;
+}
+
+struct PixelStats {
+  size_t covered = 0;               // pixels that saw geometry (non-zero radiance; empty pixels are exactly 0)
+  double mean = 0.0, stddev = 0.0;  // 8-bit luma of covered pixels
+  size_t distinctColors = 0;
+};
+
+PixelStats stats(const pbr::test::RenderedFrame& f) {
+  PixelStats s;
+  std::set<uint32_t> colors;
+  double sum = 0.0, sum2 = 0.0;
+  for (int y = 0; y < f.hdr.height; ++y) {
+    for (int x = 0; x < f.hdr.width; ++x) {
+      const float* h = f.hdr.at(x, y);
+      if (h[0] == 0.0f && h[1] == 0.0f && h[2] == 0.0f) continue;
+      const uint8_t* l = &f.ldr.pixels[(static_cast<size_t>(y) * f.ldr.width + x) * 4];
+      const double luma = 0.2126 * l[0] + 0.7152 * l[1] + 0.0722 * l[2];
+      sum += luma;
+      sum2 += luma * luma;
+      colors.insert(uint32_t(l[0]) << 16 | uint32_t(l[1]) << 8 | l[2]);
+      ++s.covered;
+    }
+  }
+  if (s.covered) {
+    s.mean = sum / s.covered;
+    s.stddev = std::sqrt(std::max(0.0, sum2 / s.covered - s.mean * s.mean));
+  }
+  s.distinctColors = colors.size();
+  return s;
+}
+
+int maxByteDifference(const pbr::ImageRgba8& a, const pbr::ImageRgba8& b) {
+  REQUIRE(a.pixels.size() == b.pixels.size());
+  int worst = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) worst = std::max(worst, std::abs(a.pixels[i] - b.pixels[i]));
+  return worst;
+}
+
+double meanAbsDifference(const pbr::ImageRgba8& a, const pbr::ImageRgba8& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) sum += i % 4 == 3 ? 0 : std::abs(a.pixels[i] - b.pixels[i]);
+  return sum / (a.pixels.size() / 4 * 3);
+}
+
+// The scene with every material map removed: what the model would look like untextured.
+pbr::Scene untextured(pbr::Scene scene) {
+  for (pbr::SceneObject& o : scene.objects) {
+    o.material.baseColorTexture = o.material.metallicRoughnessTexture = o.material.normalTexture = -1;
+    o.material.occlusionTexture = o.material.emissiveTexture = -1;
+  }
+  scene.textures.clear();
+  return scene;
+}
+
+// A file with one quad of `material` (its textures written as PNGs into `dir`), at the origin unless `node` says
+// otherwise.
+std::string materialQuad(const TempDir& dir, const std::string& name, json material, QuadSpec spec = {},
+                         const std::vector<std::pair<std::string, pbr::ImageRgba8>>& images = {},
+                         json node = json::object()) {
+  GltfBuilder b;
+  for (const auto& [file, image] : images) b.addPngTexture(dir.path(), file, image);
+  spec.material = b.addMaterial(material);
+  node["mesh"] = pbr::test::addQuad(b, spec);
+  b.addRootNode(node);
+  return b.writeGltf(dir.path(), name);
+}
+
+}  // namespace
+
+TEST_CASE("gltf render: DamagedHelmet, Suzanne and BoxTextured render lit and textured") {
+  PBR_REQUIRE_GL();
+  struct Case {
+    const char* file;
+    size_t minColors;
+  };
+  for (const Case& c :
+       {Case{"DamagedHelmet/glTF-Binary/DamagedHelmet.glb", 1000}, Case{"Suzanne/glTF/Suzanne.gltf", 300},
+        Case{"BoxTextured/glTF-Embedded/BoxTextured.gltf", 300}}) {
+    const std::string file = c.file;
+    CAPTURE(file);
+    const pbr::Scene scene = modelScene(pbr::assetPath(c.file));
+    const pbr::test::RenderedFrame textured = pbr::test::renderScene(scene, kSize, options(), 1);
+    const pbr::test::RenderedFrame plain = pbr::test::renderScene(untextured(scene), kSize, options(), 1);
+    const PixelStats s = stats(textured);
+    MESSAGE(c.file << ": " << s.covered << " covered pixels, luma mean " << s.mean << ", stddev " << s.stddev << ", "
+                   << s.distinctColors << " colours; mean |textured - untextured| "
+                   << meanAbsDifference(textured.ldr, plain.ldr));
+    CHECK(s.covered > static_cast<size_t>(kSize.x * kSize.y / 8));
+    CHECK(s.mean > 25.0);    // lit, not black
+    CHECK(s.stddev > 12.0);  // not flat
+    CHECK(s.distinctColors >= c.minColors);
+    CHECK(meanAbsDifference(textured.ldr, plain.ldr) > 3.0);  // the textures show
+  }
+}
+
+TEST_CASE("gltf render: DamagedHelmet as .gltf and as .glb gives the same frame") {
+  PBR_REQUIRE_GL();
+  const pbr::test::RenderedFrame a =
+      pbr::test::renderScene(modelScene(pbr::assetPath("DamagedHelmet/glTF/DamagedHelmet.gltf")), kSize, options(), 1);
+  const pbr::test::RenderedFrame b = pbr::test::renderScene(
+      modelScene(pbr::assetPath("DamagedHelmet/glTF-Binary/DamagedHelmet.glb")), kSize, options(), 1);
+  CHECK(maxByteDifference(a.ldr, b.ldr) <= 1);
+  CHECK(stats(a).covered > 0);
+}
+
+TEST_CASE("gltf render: the helmet scene is textured and emissive, and clustered equals brute force") {
+  PBR_REQUIRE_GL();
+  pbr::SceneParams params;
+  params.lights = 24;
+  const pbr::Scene scene = pbr::makeBuiltinScene("helmet", params);
+  CHECK(scene.lights.size() == 24);
+  CHECK(pbr::makeBuiltinScene("helmet").lights.size() == 16);
+  pbr::FrameOptions clustered = options(), brute = options();
+  brute.culling = pbr::Culling::None;
+  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+    clustered.model = brute.model = model;
+    const pbr::test::RenderedFrame c = pbr::test::renderScene(scene, {160, 90}, clustered, 2);
+    const pbr::test::RenderedFrame b = pbr::test::renderScene(scene, {160, 90}, brute, 1);
+    CHECK(c.hdr.pixels == b.hdr.pixels);
+    CHECK(stats(c).stddev > 12.0);
+  }
+}
+
+TEST_CASE("gltf render: alpha MASK discards pixels below the cutoff, OPAQUE ignores alpha") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  // Left texel alpha 0.2, right texel alpha 1, sampled without filtering.
+  pbr::ImageRgba8 image = pbr::test::solidImage(2, 1, {255, 255, 255, 255});
+  image.pixels[3] = 51;
+  for (const std::string mode : {"MASK", "OPAQUE"}) {
+    CAPTURE(mode);
+    const json material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}}},
+                           {"alphaMode", mode}};
+    const std::string path = materialQuad(dir, "alpha_" + mode, material, {}, {{"half.png", image}});
+    // Nearest filtering keeps the two halves apart; BoxTextured covers the filtered path.
+    json doc = json::parse(pbr::test::readFile(path));
+    doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}}};
+    doc["textures"][0]["sampler"] = 0;
+    std::ofstream(path) << doc.dump();
+    pbr::Scene scene = quadScene(path);
+    scene.lights.push_back({{0.0f, 0.0f, 2.0f}, 10.0f, glm::vec3(1.0f), 200.0f});
+    const pbr::test::RenderedFrame f = pbr::test::renderScene(scene, kSize, options(), 1);
+    CHECK(rgb(f.hdr, kRight).x > 0.05f);
+    if (mode == "MASK") {
+      CHECK(rgb(f.hdr, kLeft) == glm::vec3(0.0f));  // the background: nothing was drawn
+    } else {
+      CHECK(rgb(f.hdr, kLeft).x > 0.05f);
+    }
+  }
+}
+
+TEST_CASE("gltf render: a normal map tilts the shading normal along the tangent frame") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  // Tangent-space normals tilted 30 degrees towards +X (+u) and towards +Y (up the image).
+  const float s = std::sin(glm::radians(30.0f)), c = std::cos(glm::radians(30.0f));
+  const auto encode = [](float v) { return static_cast<uint8_t>(std::lround((v * 0.5f + 0.5f) * 255.0f)); };
+  const pbr::ImageRgba8 towardsU = pbr::test::solidImage(2, 2, {encode(s), encode(0.0f), encode(c), 255});
+  const pbr::ImageRgba8 towardsUp = pbr::test::solidImage(2, 2, {encode(0.0f), encode(s), encode(c), 255});
+  const json flatMaterial = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}};
+  json mappedMaterial = flatMaterial;
+  mappedMaterial["normalTexture"] = {{"index", 0}};
+
+  // The image upright (u along +x, up the image along +y) or mirrored (u along -x), tangents stored or generated.
+  struct Layout {
+    const char* name;
+    bool mirrored, storedTangents;
+  };
+  for (const Layout& layout : {Layout{"upright, stored", false, true}, Layout{"upright, generated", false, false},
+                               Layout{"mirrored, stored", true, true}, Layout{"mirrored, generated", true, false}}) {
+    const std::string name = layout.name;
+    CAPTURE(name);
+    QuadSpec spec;
+    spec.tangents = layout.storedTangents;
+    if (layout.mirrored) {
+      spec.uvFromXy = glm::mat2(-0.5f, 0.0f, 0.0f, -0.5f);
+      spec.tangent = {-1.0f, 0.0f, 0.0f, -1.0f};
+    }
+    const glm::vec3 uDirection(layout.mirrored ? -1.0f : 1.0f, 0.0f, 0.0f);
+    const std::string tag = std::to_string(layout.mirrored) + std::to_string(layout.storedTangents);
+    const std::string flatFile = materialQuad(dir, "flat" + tag, flatMaterial, spec);
+    for (const auto& [what, image, towards] :
+         {std::tuple<const char*, pbr::ImageRgba8, glm::vec3>{"+u", towardsU, uDirection},
+          {"up", towardsUp, glm::vec3(0.0f, 1.0f, 0.0f)}}) {
+      const std::string tilt = what;
+      CAPTURE(tilt);
+      const std::string mappedFile = materialQuad(dir, std::string("mapped") + tag + (what[0] == '+' ? "u" : "v"),
+                                                  mappedMaterial, spec, {{"n.png", image}});
+      // A light on the side the normal leans to lights the mapped quad more than the flat one; on the other
+      // side, less.
+      for (const float side : {1.0f, -1.0f}) {
+        CAPTURE(side);
+        const pbr::PointLight light{towards * (1.5f * side) + glm::vec3(0.0f, 0.0f, 1.0f), 10.0f, glm::vec3(1.0f),
+                                    300.0f};
+        pbr::Scene flat = quadScene(flatFile), mapped = quadScene(mappedFile);
+        flat.lights = mapped.lights = {light};
+        const float flatValue = rgb(pbr::test::renderScene(flat, kSize, options(), 1).hdr, kCentre).x;
+        const float mappedValue = rgb(pbr::test::renderScene(mapped, kSize, options(), 1).hdr, kCentre).x;
+        REQUIRE(flatValue > 0.0f);
+        if (side > 0.0f) {
+          CHECK(mappedValue > 1.3f * flatValue);
+        } else {
+          CHECK(mappedValue < 0.7f * flatValue);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("gltf render: emission shows with no lights and no ambient, in both shading models") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const uint8_t code = 188;  // sRGB 188 decodes to 0.5029
+  const double decoded = std::pow((code / 255.0 + 0.055) / 1.055, 2.4);
+  const json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.0, 0.0, 0.0, 1.0}}}},
+                         {"emissiveFactor", {1.0, 0.5, 0.25}},
+                         {"emissiveTexture", {{"index", 0}}},
+                         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
+  const std::string path =
+      materialQuad(dir, "emissive", material, {}, {{"e.png", pbr::test::solidImage(2, 2, {code, code, code, 255})}});
+  const pbr::Scene scene = quadScene(path);
+  REQUIRE(scene.lights.empty());
+  REQUIRE(scene.ambient == glm::vec3(0.0f));
+  const glm::vec3 expected = glm::vec3(2.0f, 1.0f, 0.5f) * static_cast<float>(decoded);
+  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+    const pbr::test::RenderedFrame f = pbr::test::renderScene(scene, kSize, options(model), 1);
+    // Blinn-Phong frames are clamped to [0, 1].
+    const glm::vec3 want = model == pbr::ShadingModel::Pbr ? expected : glm::min(expected, glm::vec3(1.0f));
+    const glm::vec3 got = rgb(f.hdr, kCentre);
+    MESSAGE("emitted " << got.x << " " << got.y << " " << got.z);
+    for (int ch = 0; ch < 3; ++ch) CHECK(got[ch] == doctest::Approx(want[ch]).epsilon(0.01));
+    CHECK(rgb(f.hdr, {2, 2}) == glm::vec3(0.0f));  // outside the quad
+  }
+}
+
+TEST_CASE("gltf render: occlusion scales the ambient term only") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const pbr::ImageRgba8 black = pbr::test::solidImage(2, 2, {0, 0, 0, 255});
+  const auto occluded = [&](double strength, const std::string& name) {
+    const json material = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                           {"occlusionTexture", {{"index", 0}, {"strength", strength}}}};
+    pbr::Scene scene = quadScene(materialQuad(dir, name, material, {}, {{"ao.png", black}}));
+    scene.ambient = glm::vec3(0.5f);
+    return scene;
+  };
+  pbr::Scene open = quadScene(materialQuad(dir, "open", {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}}));
+  open.ambient = glm::vec3(0.5f);
+  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+    const float ambient = rgb(pbr::test::renderScene(open, kSize, options(model), 1).hdr, kCentre).x;
+    const float full = rgb(pbr::test::renderScene(occluded(1.0, "ao1"), kSize, options(model), 1).hdr, kCentre).x;
+    const float half = rgb(pbr::test::renderScene(occluded(0.5, "ao05"), kSize, options(model), 1).hdr, kCentre).x;
+    MESSAGE("ambient " << ambient << ", occlusion 0: " << full << ", strength 0.5: " << half);
+    REQUIRE(ambient > 0.0f);
+    CHECK(full == 0.0f);
+    // Occlusion 1 + 0.5 (0 - 1) = 0.5, stored as 8 bits (128/255).
+    CHECK(half / ambient == doctest::Approx(128.0 / 255.0).epsilon(0.01));
+  }
+  // Direct light is not occluded.
+  pbr::Scene lit = occluded(1.0, "ao_lit");
+  lit.ambient = glm::vec3(0.0f);
+  lit.lights.push_back({{0.0f, 0.0f, 2.0f}, 10.0f, glm::vec3(1.0f), 200.0f});
+  CHECK(rgb(pbr::test::renderScene(lit, kSize, options(), 1).hdr, kCentre).x > 0.05f);
+}
+
+TEST_CASE("gltf render: double-sided quads show their back lit from behind, mirrored nodes keep their faces") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const json turned = {{"rotation", {0.0, 1.0, 0.0, 0.0}}};  // 180 degrees about Y: the back faces the camera
+  const pbr::PointLight light{{0.0f, 0.0f, 2.0f}, 10.0f, glm::vec3(1.0f), 200.0f};
+  for (const bool doubleSided : {false, true}) {
+    CAPTURE(doubleSided);
+    const json material = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}, {"doubleSided", doubleSided}};
+    pbr::Scene scene = quadScene(materialQuad(dir, "back" + std::to_string(doubleSided), material, {}, {}, turned));
+    scene.lights = {light};
+    const glm::vec3 centre = rgb(pbr::test::renderScene(scene, kSize, options(), 1).hdr, kCentre);
+    if (doubleSided) {
+      // The flipped normal faces the light, which stands on the camera's side.
+      CHECK(centre.x > 0.05f);
+    } else {
+      CHECK(centre == glm::vec3(0.0f));  // culled
+    }
+  }
+  // Scale -1 along x mirrors the quad onto itself; its front must stay front (the winding flips with it).
+  const json material = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}};
+  pbr::Scene plain = quadScene(materialQuad(dir, "plain", material));
+  pbr::Scene mirrored = quadScene(materialQuad(dir, "mirrored", material, {}, {}, {{"scale", {-1.0, 1.0, 1.0}}}));
+  plain.lights = mirrored.lights = {light};
+  const float a = rgb(pbr::test::renderScene(plain, kSize, options(), 1).hdr, kCentre).x;
+  const float b = rgb(pbr::test::renderScene(mirrored, kSize, options(), 1).hdr, kCentre).x;
+  CHECK(a > 0.05f);
+  CHECK(b == doctest::Approx(a).epsilon(1e-3));
+}
