@@ -10,5 +10,7 @@ int runRender(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 int runExperiment(const std::vector<std::string>& args);
 int runReference(const std::vector<std::string>& args);
+int runAccuracy(const std::vector<std::string>& args);
+int runView(const std::vector<std::string>& args);
 
 }  // namespace pbr

@@ -18,6 +18,6 @@ struct RenderedFrames {
 // path size its light-index list from measured demand before the captured frame.
 RenderedFrames renderOffscreen(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
                                const FrameOptions& options, int frames = 2, const ClusterConfig& clusters = {},
-                               TimingMode timing = TimingMode::Serializing);
+                               TimingMode timing = TimingMode::Serializing, HdrFormat hdrFormat = HdrFormat::Rgba16f);
 
 }  // namespace pbr

@@ -17,7 +17,10 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--scene", "NAME|FILE",
        "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet) or scene file (.json, .gltf, .glb)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
-      {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated) or hammon (fast form)"},
+      {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated), hammon or separable"},
+      {"--variant", "K=V,...", "PBR variant: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
+                               "fresnel=schlick|exact, diffuse=lambert-1-f|lambert|burley (default: the first of each)"},
+      {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
@@ -27,6 +30,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency); slower"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
+      {"--environment", "F.hdr|sky", "image-based lighting (PBR) and background from a Radiance .hdr or the "
+                                     "procedural sky, replacing the scene's environment"},
+      {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"},
       {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
       {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
       {"--frames", "K", "render K frames and report median pass times over frames 2..K (default 1)"},
@@ -74,6 +80,30 @@ void printLightStats(const Renderer& renderer, const FrameOptions& options) {
   }
 }
 
+// --environment replaces the scene's environment (intensity 1, no rotation); --environment-intensity scales
+// whichever applies.
+void applyEnvironmentOptions(const Args& args, Scene& scene) {
+  if (args.has("--environment")) {
+    const std::string source = args.get("--environment", "");
+    if (source.empty()) throw UsageError("--environment needs a .hdr file or \"sky\"");
+    scene.environment = EnvironmentDesc{};
+    if (source != "sky") scene.environment->file = source;
+  }
+  if (args.has("--environment-intensity")) {
+    if (!scene.environment) {
+      throw UsageError("--environment-intensity needs an environment (--environment or the scene's)");
+    }
+    scene.environment->intensity = args.getFloat("--environment-intensity", 1.0f, 0.0f, 1e6f);
+  }
+}
+
+void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
+  for (const FrameTiming& f : frames) {
+    for (const PassTiming& p : f.passes) std::printf("  %-16s %9.3f ms\n", p.name.c_str(), p.ms);
+    std::printf("  %-16s %9.3f ms\n", "ibl total", f.gpuMs);
+  }
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& argv) {
@@ -88,7 +118,9 @@ int runRender(const std::vector<std::string>& argv) {
   }
   const std::string sceneName = args.get("--scene", "default");
   const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
-  const Visibility visibility = parseVisibility(args.get("--visibility", "exact"));
+  ShadingVariant variant = parseShadingVariant(args.get("--variant", ""));
+  if (args.has("--visibility")) variant.visibility = parseVisibility(args.get("--visibility", "exact"));
+  const HdrFormat hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
   SceneParams sceneParams;
   if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
@@ -109,7 +141,8 @@ int runRender(const std::vector<std::string>& argv) {
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");  // reject a bad mode before making a context
 
-  const Scene scene = resolveScene(sceneName, sceneParams);
+  Scene scene = resolveScene(sceneName, sceneParams);
+  applyEnvironmentOptions(args, scene);
   const float exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
 
   auto context = createHeadlessContext(platform);
@@ -117,13 +150,20 @@ int runRender(const std::vector<std::string>& argv) {
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
   std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), toString(model),
-              model == ShadingModel::Pbr ? (std::string(" (visibility ") + toString(visibility) + ")").c_str() : "",
+              model == ShadingModel::Pbr ? (" (" + toString(variant) + ")").c_str() : "",
               toString(culling));
 
   const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, size.x, size.y, clusterConfig);
   Profiler profiler(chooseTimingMode(timing, info.renderer));
-  const FrameOptions options{model, visibility, culling, exposure, stats, debugView};
+  Profiler precomputeProfiler(profiler.mode());
+  Renderer renderer(shaders, scene, size.x, size.y, clusterConfig, &precomputeProfiler, hdrFormat);
+  if (renderer.ibl()) {
+    std::printf("environment: %s, IBL precomputation (%s):\n",
+                scene.environment->file.empty() ? "procedural sky" : scene.environment->file.c_str(),
+                describe(precomputeProfiler.mode()));
+    printPrecomputeTimings(precomputeProfiler.takeResults(true));
+  }
+  const FrameOptions options{model, variant, culling, exposure, stats, debugView};
   ImageRgba8 ldr;
   ImageRgbaF hdr;
   for (int i = 0; i < frames; ++i) {

@@ -4,14 +4,23 @@
 
 namespace pbr {
 
+namespace {
+
+Environment loadEnvironment(const EnvironmentDesc& e) {
+  return e.file.empty() ? Environment::sky(e.sky, e.intensity, e.rotationDeg)
+                        : Environment::fromHdrFile(e.file, e.intensity, e.rotationDeg);
+}
+
+}  // namespace
+
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
-                   const ClusterConfig& clusterConfig)
+                   const ClusterConfig& clusterConfig, Profiler* precomputeProfiler, HdrFormat hdrFormat)
     : scene_(scene),
       width_(width),
       height_(height),
       frameData_(makeFrameBlock(scene.camera, width, height)),
       frame_(frameData_),
-      hdr_(GL_RGBA16F, width, height),
+      hdr_(glInternalFormat(hdrFormat), width, height),
       gbuffer_(width, height, hdr_),
       gbufferPass_(shaders, scene),
       clusters_(shaders, clusterConfig),
@@ -20,6 +29,14 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
       debugPass_(shaders),
       ldr_(GL_RGBA8, width, height) {
   lights_.upload(scene.lights);
+  if (scene.environment) {
+    ibl_ = std::make_unique<IblMaps>(shaders, loadEnvironment(*scene.environment), IblSettings{}, precomputeProfiler);
+  }
+}
+
+void Renderer::setCamera(const Camera& camera) {
+  frameData_ = makeFrameBlock(camera, width_, height_);
+  frame_.update(frameData_);
 }
 
 void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture) {
@@ -36,7 +53,9 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
   {
     ScopedPass pass(profiler, "lighting");
     const SurfaceTextures surface{gbuffer_.baseColor, gbuffer_.normal, gbuffer_.material, gbuffer_.depth};
-    const LightingOptions lighting{options.model, options.visibility, scene_.ambient, options.stats};
+    const bool ibl = ibl_ && options.model == ShadingModel::Pbr;
+    const LightingOptions lighting{options.model, options.variant, scene_.ambient, options.stats, ibl};
+    if (ibl) ibl_->bind();
     lightingPass_.render(surface, lights_, lighting, frame_, hdr_, clustered ? &clusters_ : nullptr);
   }
   {

@@ -9,6 +9,7 @@
 #include "core/uniform_buffer.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "ibl/ibl_maps.hpp"
 #include "lighting/cluster_debug_pass.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "post/post_pass.hpp"
@@ -17,7 +18,7 @@ namespace pbr {
 
 struct FrameOptions {
   ShadingModel model = ShadingModel::Pbr;
-  Visibility visibility = Visibility::HeightCorrelated;
+  ShadingVariant variant;  // PBR only
   Culling culling = Culling::Clustered;
   float exposure = 1.0f;
   bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
@@ -46,19 +47,31 @@ struct FrameCapture {
   ImageRgbaF* hdr = nullptr;  // radiance before exposure, as the lighting pass wrote it
 };
 
-// The whole frame: G-buffer -> deferred lighting (HDR RGBA16F) -> post (RGBA8), with each pass timed.
+// The whole frame: G-buffer -> deferred lighting (HDR, RGBA16F by default) -> post (RGBA8), with each pass timed.
 class Renderer {
  public:
+  // A scene with an environment has its IBL maps precomputed here, once; with `precomputeProfiler` that is one
+  // profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
+  // std::runtime_error naming the file when the environment's .hdr cannot be used.
   Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
-           const ClusterConfig& clusterConfig = {});
+           const ClusterConfig& clusterConfig = {}, Profiler* precomputeProfiler = nullptr,
+           HdrFormat hdrFormat = HdrFormat::Rgba16f);
 
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
+
+  // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
+  // changes); new lights replace the light buffer.
+  void setCamera(const Camera& camera);
+  void setLights(const std::vector<PointLight>& lights) { lights_.upload(lights); }
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
   const LightClusters& clusters() const { return clusters_; }
   const LightBuffer& lights() const { return lights_; }
   const GBuffer& gbuffer() const { return gbuffer_; }
+  const IblMaps* ibl() const { return ibl_.get(); }  // null without an environment
+  const UniformBuffer<FrameBlock>& frameUniforms() const { return frame_; }
+  const Texture& ldr() const { return ldr_; }  // the final RGBA8 frame, rows bottom-up as GL stores them
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -74,6 +87,7 @@ class Renderer {
   LightBuffer lights_;
   LightClusters clusters_;
   LightingPass lightingPass_;
+  std::unique_ptr<IblMaps> ibl_;
   FrameOptions lastOptions_;
   PostPass postPass_;
   ClusterDebugPass debugPass_;

@@ -13,6 +13,8 @@ constexpr unsigned kLightVisibleSsbo = 3;
 constexpr unsigned kClusterBoundsSsbo = 4;
 constexpr unsigned kClusterStatusSsbo = 5;
 constexpr unsigned kLightingStatsSsbo = 6;
+constexpr unsigned kClusterViewLightsSsbo = 7;
+constexpr unsigned kClusterTileMasksSsbo = 8;
 // Texture units of the G-buffer pass's material maps.
 constexpr unsigned kBaseColorMapUnit = 0;
 constexpr unsigned kMetallicRoughnessMapUnit = 1;

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <utility>
 
+#include <glm/geometric.hpp>
+
 namespace pbr {
 
 SceneObject& Scene::addShape(Shape shape, const glm::mat4& transform, const Material& material) {
@@ -68,6 +70,21 @@ void validateScene(const Scene& scene, const std::string& source) {
   if (!(cam.farPlane > cam.nearPlane)) c.fail("camera.far", "must be greater than camera.near", cam.farPlane);
   c.atLeast("exposure", scene.exposure, 0.0f);
   c.color("ambient", scene.ambient);
+  if (scene.environment) {
+    const EnvironmentDesc& e = *scene.environment;
+    c.atLeast("environment.intensity", e.intensity, 0.0f);
+    c.finite("environment.rotation_deg", e.rotationDeg);
+    if (e.file.empty()) {
+      c.color("environment.sky.zenith", e.sky.zenith);
+      c.color("environment.sky.horizon", e.sky.horizon);
+      c.color("environment.sky.ground", e.sky.ground);
+      c.finite("environment.sky.sun_direction", e.sky.sunDirection);
+      if (glm::length(e.sky.sunDirection) == 0.0f) c.fail("environment.sky.sun_direction", "must not be zero", 0.0f);
+      const float r = e.sky.sunAngularRadiusDeg;
+      if (!(r > 0.0f && r < 90.0f)) c.fail("environment.sky.sun_angular_radius_deg", "must be in (0, 90)", r);
+      c.color("environment.sky.sun_radiance", e.sky.sunRadiance);
+    }
+  }
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const std::string base = "objects[" + std::to_string(i) + "]";
     const SceneObject& o = scene.objects[i];

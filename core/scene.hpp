@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 
 #include "core/camera.hpp"
 #include "core/mesh.hpp"
+#include "core/sky_params.hpp"
 
 namespace pbr {
 
@@ -61,11 +63,21 @@ struct PointLight {
   float luminousPower = 100.0f;  // P in lumens; intensity I = P / (4 pi)
 };
 
+// What lights the scene from afar (image-based lighting, PBR only) and shows behind it: a Radiance .hdr panorama,
+// or the procedural sky when `file` is empty. Loading and precomputation belong to the renderer (ibl/).
+struct EnvironmentDesc {
+  std::string file;  // absolute, or relative to the working directory
+  SkyParams sky;
+  float intensity = 1.0f;    // multiplies the radiance
+  float rotationDeg = 0.0f;  // about +Y, right-handed
+};
+
 struct Scene {
   std::string name;
   Camera camera;
   float exposure = 1.0f;
-  glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model
+  glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model; an environment replaces it
+  std::optional<EnvironmentDesc> environment;
   std::vector<MeshData> meshes;
   std::vector<TextureData> textures;
   std::vector<SceneObject> objects;

@@ -155,6 +155,37 @@ std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount) {
   return makeRandomLights(spec);
 }
 
+// A procedural sky: an object whose fields are all optional ({} is the default sky of SkyParams).
+SkyParams readSky(const JsonField& f) {
+  SkyParams sky;
+  sky.zenith = f["zenith"].vec3OrNumber(R::atLeast(0.0), sky.zenith);
+  sky.horizon = f["horizon"].vec3OrNumber(R::atLeast(0.0), sky.horizon);
+  sky.ground = f["ground"].vec3OrNumber(R::atLeast(0.0), sky.ground);
+  sky.sunDirection = f["sun_direction"].vec3(R::any(), sky.sunDirection);
+  if (glm::length(sky.sunDirection) == 0.0f) f["sun_direction"].fail("expected a non-zero direction");
+  sky.sunAngularRadiusDeg = f["sun_angular_radius_deg"].number(R::open(0.0, 90.0), sky.sunAngularRadiusDeg);
+  sky.sunRadiance = f["sun_radiance"].vec3OrNumber(R::atLeast(0.0), sky.sunRadiance);
+  return sky;
+}
+
+// The file is only checked for existence here: it is decoded, with its own one-line errors, when rendered.
+EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
+  const JsonField file = f["file"], sky = f["sky"];
+  if (file.present() == sky.present()) {
+    f.fail(file.present() ? "expected \"file\" or \"sky\", got both" : "expected a \"file\" or a \"sky\" field");
+  }
+  EnvironmentDesc e;
+  if (file.present()) {
+    e.file = resolve(folder, file.string()).string();
+    if (!fs::is_regular_file(e.file)) file.fail("cannot open " + e.file);
+  } else {
+    e.sky = readSky(sky);
+  }
+  e.intensity = f["intensity"].number(R::atLeast(0.0), e.intensity);
+  e.rotationDeg = f["rotation_deg"].number(R::any(), e.rotationDeg);
+  return e;
+}
+
 Scene readJsonScene(const std::string& path, int lightCount) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
@@ -166,6 +197,7 @@ Scene readJsonScene(const std::string& path, int lightCount) {
   scene.camera = readCamera(root["camera"]);
   scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
+  if (root["environment"].present()) scene.environment = readEnvironment(root["environment"], folder);
   for (const JsonField& o : root["objects"].items()) readObject(o, folder, scene);
   for (const JsonField& l : root["lights"].items()) scene.lights.push_back(readLight(l));
   const JsonField random = root["random_lights"];

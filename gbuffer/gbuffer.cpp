@@ -11,8 +11,11 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance)
       normal(GL_RG16, w, h),
       material(GL_RGBA8, w, h),
       depth(GL_DEPTH_COMPONENT32F, w, h) {
-  if (radiance.width() != w || radiance.height() != h || radiance.format() != GL_RGBA16F) {
-    throw std::invalid_argument("G-buffer: the radiance target must be RGBA16F of the G-buffer's size");
+  const GLenum f = radiance.format();
+  if (radiance.width() != w || radiance.height() != h ||
+      (f != GL_RGBA16F && f != GL_R11F_G11F_B10F && f != GL_RGBA32F)) {
+    throw std::invalid_argument("G-buffer: the radiance target must be RGBA16F, R11F_G11F_B10F or RGBA32F of the "
+                                "G-buffer's size");
   }
   framebuffer.attach(GL_COLOR_ATTACHMENT0, baseColor);
   framebuffer.attach(GL_COLOR_ATTACHMENT1, normal);

@@ -1,22 +1,47 @@
 #include "lighting/lighting_pass.hpp"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/bindings.hpp"
 
 namespace pbr {
 
-const Program& LightingPass::program(const LightingOptions& o, bool clustered) {
+namespace {
+
+// The image format qualifier and the largest finite value of the radiance target.
+std::pair<const char*, const char*> imageFormat(unsigned radianceFormat) {
+  switch (radianceFormat) {
+    case GL_R11F_G11F_B10F: return {"r11f_g11f_b10f", "64512.0"};  // the 10-bit blue channel's maximum
+    case GL_RGBA32F: return {"rgba32f", "FP16_MAX"};
+    default: return {"rgba16f", "FP16_MAX"};
+  }
+}
+
+}  // namespace
+
+const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
-  const bool fast = !blinnPhong && o.visibility == Visibility::Hammon;
-  const int key = (blinnPhong ? 1 : 0) | (fast ? 2 : 0) | (clustered ? 4 : 0) | (o.stats ? 8 : 0);
+  const ShadingVariant v = blinnPhong ? ShadingVariant{} : o.variant;
+  const bool ibl = o.ibl && !blinnPhong;
+  const int format = radianceFormat == GL_R11F_G11F_B10F ? 1 : radianceFormat == GL_RGBA32F ? 2 : 0;
+  const int key = (blinnPhong ? 1 : 0) | (clustered ? 2 : 0) | (o.stats ? 4 : 0) | int(v.visibility) << 3 |
+                  int(v.ndf) << 5 | int(v.fresnel) << 6 | int(v.diffuse) << 7 | format << 9 | (ibl ? 1 << 11 : 0);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+    const auto [qualifier, maximum] = imageFormat(radianceFormat);
     const ShaderDefines defines = {{"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)},
-                                   {"VISIBILITY_FAST", flag(fast)},
+                                   {"VISIBILITY", std::to_string(int(v.visibility))},
+                                   {"NDF", std::to_string(int(v.ndf))},
+                                   {"FRESNEL", std::to_string(int(v.fresnel))},
+                                   {"DIFFUSE", std::to_string(int(v.diffuse))},
+                                   {"HDR_IMAGE_FORMAT", qualifier},
+                                   {"HDR_MAX", maximum},
                                    {"CLUSTERED", flag(clustered)},
-                                   {"LIGHTING_STATS", flag(o.stats)}};
+                                   {"LIGHTING_STATS", flag(o.stats)},
+                                   {"IBL", flag(ibl)}};
     it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
   }
   return it->second;
@@ -28,7 +53,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
-  program(options, clusters != nullptr).use();
+  program(options, clusters != nullptr, radiance.format()).use();
   frame.bind(binding::kFrameUbo);
   block_.bind(binding::kLightingUbo);
   lights.bind();
@@ -42,7 +67,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   }
   const GLuint textures[] = {surface.baseColor.id(), surface.normal.id(), surface.material.id(), surface.depth.id()};
   glBindTextures(0, 4, textures);
-  glBindImageTexture(0, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+  glBindImageTexture(0, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE, radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glDispatchCompute(groupsX, groupsY, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

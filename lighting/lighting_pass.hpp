@@ -32,9 +32,12 @@ struct SurfaceTextures {
 
 struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;
-  Visibility visibility = Visibility::HeightCorrelated;
+  ShadingVariant variant;  // PBR only
   glm::vec3 ambient{0.0f};
   bool stats = false;  // count light-pixel pairs (evaluated, contributing) on the GPU
+  // PBR only: image-based lighting from the maps bound by IblMaps::bind() replaces `ambient`, and pixels
+  // without geometry show the environment.
+  bool ibl = false;
 };
 
 struct PairCounts {
@@ -42,14 +45,14 @@ struct PairCounts {
   uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
 };
 
-// Deferred lighting in a compute shader; one permutation per (model, visibility, culling, stats), compiled on
-// first use.
+// Deferred lighting in a compute shader; one permutation per (model, variant, radiance format, culling, stats,
+// IBL), compiled on first use.
 class LightingPass {
  public:
   explicit LightingPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
-  // only the lights of each pixel's cluster (as last assigned) are. `radiance` (RGBA16F) comes in holding the
+  // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
   // surfaces' emitted radiance and leaves with the shaded frame: emission plus reflected light.
   void render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
               const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters);
@@ -58,7 +61,7 @@ class LightingPass {
   PairCounts readPairCounts() const;
 
  private:
-  const Program& program(const LightingOptions& options, bool clustered);
+  const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat);
 
   const ShaderLibrary& shaders_;
   std::map<int, Program> programs_;

@@ -1,69 +1,91 @@
 #include <doctest/doctest.h>
 
-#include <cmath>
+#include <map>
+#include <string>
 
-#include "core/builtin_scenes.hpp"
+#include "app/accuracy_metrics.hpp"
+#include "app/accuracy_variants.hpp"
+#include "app/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"
-#include "tests/render_util.hpp"
 
 using namespace pbr;
 
 namespace {
 
-// sqrt(sum (gpu - ref)^2 / sum ref^2) over the colour channels of the pixels inside objects.
-double relativeRmse(const ImageRgbaF& gpu, const reference::ReferenceFrame& ref) {
-  double num = 0.0, den = 0.0;
-  for (int y = 0; y < gpu.height; ++y) {
-    for (int x = 0; x < gpu.width; ++x) {
-      if (!ref.interior(x, y)) continue;
-      for (int c = 0; c < 3; ++c) {
-        const double r = ref.radiance.at(x, y)[c];
-        const double d = double(gpu.at(x, y)[c]) - r;
-        num += d * d;
-        den += r * r;
-      }
-    }
+const glm::ivec2 kSize{160, 90};
+
+// Relative RMSE bounds per variant on sphere-grid and fresnel-floor at 0, 40, 65 and 80 degrees: the measured
+// error (docs/accuracy.md) plus a margin. Even the reference-equivalent "exact" variant keeps the errors the
+// reference does not share: tessellated spheres whose interpolated normals shift the smallest highlights, the
+// approximate ambient term and fp16 storage, hence 0.1 on sphere-grid but 0.005 on a flat floor seen head-on.
+struct Bounds {
+  double grid, floor0, floor40, floor65, floor80;
+};
+const std::map<std::string, Bounds>& bounds() {
+  static const std::map<std::string, Bounds> b = {
+      {"exact", {0.10, 0.005, 0.005, 0.015, 0.015}},
+      {"exact-rgba32f", {0.10, 0.005, 0.005, 0.015, 0.015}},
+      {"default", {0.10, 0.005, 0.03, 0.13, 0.09}},      // Schlick: exact at normal incidence only
+      {"hammon", {0.10, 0.005, 0.035, 0.20, 0.21}},      // visibility error grows towards grazing
+      {"separable", {0.10, 0.005, 0.03, 0.13, 0.09}},
+      {"beckmann", {0.65, 0.06, 0.05, 0.13, 0.55}},      // another NDF: a different surface, bounded only
+      {"lambert", {0.18, 0.05, 0.07, 0.20, 0.12}},       // no (1 - F) weight: too bright
+      {"burley", {0.18, 0.05, 0.07, 0.20, 0.11}},
+      {"r11g11b10f", {0.10, 0.015, 0.03, 0.13, 0.08}},   // 6-bit mantissas on top of Schlick
+      {"fast", {0.18, 0.05, 0.07, 0.24, 0.23}},
+  };
+  return b;
+}
+
+// Relative RMSE of every PBR variant of the ladder on one scene, rendered once by the CPU reference.
+std::map<std::string, double> errors(const std::string& sceneSpec) {
+  const AccuracyScene s = loadAccuracyScene(sceneSpec);
+  const reference::ReferenceFrame ref = reference::renderReference(s.scene, kSize.x, kSize.y);
+  const ShaderLibrary shaders;
+  const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
+  std::map<std::string, double> out;
+  for (const AccuracyVariant& v : accuracyLadder()) {
+    if (v.model != ShadingModel::Pbr) continue;
+    FrameOptions options;
+    options.variant = v.shading;
+    options.exposure = s.scene.exposure;
+    const RenderedFrames f = renderOffscreen(shaders, s.scene, kSize, options, 2, {}, TimingMode::Serializing, v.hdr);
+    out[v.name] = measureError(f.hdr, f.ldr, ref, refLdr).relativeRmse;
+    MESSAGE(sceneSpec << " " << v.name << ": relative RMSE " << out[v.name]);
   }
-  return std::sqrt(num / den);
+  return out;
 }
 
-double compare(const Scene& scene, Visibility visibility) {
-  const glm::ivec2 size{160, 90};
-  FrameOptions options;
-  options.visibility = visibility;
-  const ImageRgbaF gpu = test::renderScene(scene, size, options).hdr;
-  const reference::ReferenceFrame ref = reference::renderReference(scene, size.x, size.y);
-  return relativeRmse(gpu, ref);
-}
-
-Scene untexturedFresnelFloor(float angle) {
-  SceneParams params;
-  params.viewAngleDeg = angle;
-  Scene s = makeBuiltinScene("fresnel-floor", params);
-  s.objects[0].material.baseColorTexture = -1;
-  s.objects[0].material.baseColor = glm::vec3(0.6f);
-  return s;
+void checkBounds(const std::map<std::string, double>& e, double Bounds::*scene) {
+  for (const auto& [name, error] : e) {
+    CAPTURE(name);
+    CHECK(error < bounds().at(name).*scene);
+  }
 }
 
 }  // namespace
 
-// The GPU path approximates the reference (Schlick instead of exact dielectric Fresnel, an approximate ambient
-// term, tessellated spheres whose interpolated normals shift the smallest highlights), so these bounds are the
-// measured size of those approximations plus a margin, not a claim of equality.
-TEST_CASE("reference: the GPU frame stays close to the CPU reference on sphere-grid and fresnel-floor") {
+TEST_CASE("reference: every PBR variant stays within its bound of the CPU reference on sphere-grid") {
   PBR_REQUIRE_GL();
-  const Scene grid = makeBuiltinScene("sphere-grid");
-  const double gridExact = compare(grid, Visibility::HeightCorrelated);
-  const double gridHammon = compare(grid, Visibility::Hammon);
-  MESSAGE("sphere-grid relative RMSE: exact visibility " << gridExact << ", Hammon " << gridHammon);
-  CHECK(gridExact < 0.12);
-  CHECK(gridHammon < 0.12);
-  // At normal incidence Schlick equals the exact Fresnel term: a flat floor then matches closely.
-  CHECK(compare(untexturedFresnelFloor(0.0f), Visibility::HeightCorrelated) < 0.02);
-  for (float angle : {40.0f, 65.0f, 80.0f}) {
-    const double e = compare(untexturedFresnelFloor(angle), Visibility::HeightCorrelated);
-    MESSAGE("fresnel-floor at " << angle << " degrees: relative RMSE " << e);
-    CHECK(e < 0.15);
-  }
+  checkBounds(errors("sphere-grid"), &Bounds::grid);
+}
+
+TEST_CASE("reference: every PBR variant stays within its bound on fresnel-floor at 0 and 40 degrees") {
+  PBR_REQUIRE_GL();
+  const auto head = errors("fresnel-floor:0");
+  checkBounds(head, &Bounds::floor0);
+  // At normal incidence Schlick equals the exact Fresnel term: the Schlick variant matches as closely.
+  CHECK(head.at("default") < 1.05 * head.at("exact"));
+  checkBounds(errors("fresnel-floor:40"), &Bounds::floor40);
+}
+
+TEST_CASE("reference: every PBR variant stays within its bound on fresnel-floor at 65 and 80 degrees") {
+  PBR_REQUIRE_GL();
+  checkBounds(errors("fresnel-floor:65"), &Bounds::floor65);
+  const auto grazing = errors("fresnel-floor:80");
+  checkBounds(grazing, &Bounds::floor80);
+  // Exact Fresnel and visibility are what matter at grazing views; Hammon's form departs from exact Smith there.
+  CHECK(grazing.at("default") > 3.0 * grazing.at("exact"));
+  CHECK(grazing.at("hammon") > 2.0 * grazing.at("default"));
 }

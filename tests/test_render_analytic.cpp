@@ -116,7 +116,7 @@ pbr::FrameOptions options(pbr::ShadingModel model, pbr::Visibility visibility = 
                           float exposure = 1.0f) {
   pbr::FrameOptions o;
   o.model = model;
-  o.visibility = visibility;
+  o.variant.visibility = visibility;
   o.exposure = exposure;
   return o;
 }

@@ -300,11 +300,22 @@ void checkComputeCompiles(const std::string& file, const DefineSets& permutation
 
 TEST_CASE("shader library: every program the renderer builds from the project's shaders compiles") {
   PBR_REQUIRE_GL();
-  checkComputeCompiles("lighting/deferred.comp", flagCombinations({"SHADING_MODEL_BLINN_PHONG", "VISIBILITY_FAST",
-                                                                    "CLUSTERED", "LIGHTING_STATS"}));
+  const DefineSets lighting = flagCombinations({"SHADING_MODEL_BLINN_PHONG", "FRESNEL",
+                                                "CLUSTERED", "LIGHTING_STATS"});
+  checkComputeCompiles("lighting/deferred.comp", lighting);
+  // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
+  DefineSets ibl;
+  for (ShaderDefines defines : lighting) {
+    if (defines.front().value == "1") continue;  // SHADING_MODEL_BLINN_PHONG
+    defines.push_back({"IBL", "1"});
+    ibl.push_back(defines);
+  }
+  checkComputeCompiles("lighting/deferred.comp", ibl);
   checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS"}));
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
   checkComputeCompiles("lighting/cluster_bounds.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_lights.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_tiles.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}});
   const ShaderLibrary shaders;

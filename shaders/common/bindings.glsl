@@ -11,6 +11,8 @@
 #define CLUSTER_BOUNDS_SSBO 4
 #define CLUSTER_STATUS_SSBO 5
 #define LIGHTING_STATS_SSBO 6
+#define CLUSTER_VIEW_LIGHTS_SSBO 7
+#define CLUSTER_TILE_MASKS_SSBO 8
 // Texture units of the G-buffer pass's material maps.
 #define BASE_COLOR_MAP_UNIT 0
 #define METALLIC_ROUGHNESS_MAP_UNIT 1

@@ -1,7 +1,8 @@
 #version 450 core
 // Deferred lighting, one invocation per pixel. CLUSTERED 0 shades every light of the frame (the brute-force
 // reference path); CLUSTERED 1 shades only the lights listed for the pixel's cluster, in the same ascending
-// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup. The radiance
+// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup. IBL (PBR
+// only) lights with the environment maps of pbr::IblMaps instead of the uniform ambient radiance. The radiance
 // image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it.
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -11,6 +12,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "model_blinn_phong.glsl"
 #else
 #include "model_pbr.glsl"
+#endif
+#if IBL
+// Image-based lighting (PBR only): the environment's split-sum lighting replaces the uniform ambient term, and
+// pixels without geometry show the environment itself.
+#if SHADING_MODEL_BLINN_PHONG
+#error "IBL is a PBR permutation: Blinn-Phong keeps its LDR ambient term and black background"
+#endif
+#include "../ibl/ibl_sample.glsl"
 #endif
 #if CLUSTERED
 #include "clusters.glsl"
@@ -22,7 +31,13 @@ layout(std430, binding = LIGHT_INDEX_SSBO) readonly buffer Indices { uint lightI
 layout(std430, binding = LIGHTING_STATS_SSBO) buffer PairStats { uvec2 groupPairs[]; };
 #endif
 
-layout(rgba16f, binding = 0) uniform image2D radiance;
+// The radiance target's format (LightingPass::program): the qualifier must match the texture's, and HDR_MAX is
+// its largest finite value, so that a clamp keeps the store from rounding to Inf.
+#ifndef HDR_IMAGE_FORMAT
+#define HDR_IMAGE_FORMAT rgba16f
+#define HDR_MAX FP16_MAX
+#endif
+layout(HDR_IMAGE_FORMAT, binding = 0) uniform image2D radiance;
 
 #if LIGHTING_STATS
 bool contributes(Surface s, PointLight light) {
@@ -52,15 +67,37 @@ void visitLight(Surface s, uint k) {
 #endif
 }
 
+// Light arriving from everything but the point lights.
+vec3 shadeEnvironment(Surface s) {
+#if IBL
+  return shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
+#else
+  return shadeAmbient(s);
+#endif
+}
+
+#if IBL
+// The environment's unfiltered radiance along the pixel's view ray, the same ray readSurface would reconstruct.
+vec3 background(ivec2 p) {
+  vec2 ndc = (vec2(p) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
+  vec3 viewRay = vec3(ndc.x / frame.projParams.x, ndc.y / frame.projParams.y, -1.0);
+  return iblSpecular(normalize(mat3(frame.inverseView) * viewRay), 0.0);
+}
+#endif
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   Surface s;
   if (!readSurface(p, s)) {
+#if IBL
+    imageStore(radiance, p, vec4(finishShading(background(p)), 1.0));
+#else
     imageStore(radiance, p, vec4(0.0, 0.0, 0.0, 1.0));
+#endif
     return;
   }
-  gColor = imageLoad(radiance, p).rgb + shadeAmbient(s);
+  gColor = imageLoad(radiance, p).rgb + shadeEnvironment(s);
   gContributing = 0u;
 #if CLUSTERED
   gHeader = headers[clusterIndex(uvec2(p), s.viewDepth)];
@@ -90,5 +127,5 @@ void main() {
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
-  imageStore(radiance, p, vec4(finishShading(color), 1.0));
+  imageStore(radiance, p, vec4(min(finishShading(color), vec3(HDR_MAX)), 1.0));
 }

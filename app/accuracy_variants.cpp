@@ -1,0 +1,75 @@
+#include "app/accuracy_variants.hpp"
+
+#include <cctype>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/scene_source.hpp"
+
+namespace pbr {
+
+namespace {
+
+AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, HdrFormat hdr = HdrFormat::Rgba16f) {
+  return {name, ShadingModel::Pbr, parseShadingVariant(terms), hdr};
+}
+
+}  // namespace
+
+const std::vector<AccuracyVariant>& accuracyLadder() {
+  static const std::vector<AccuracyVariant> ladder = {
+      // The reference model's terms: only float precision, tessellation and the ambient integral differ.
+      pbrVariant("exact", "fresnel=exact"),
+      pbrVariant("exact-rgba32f", "fresnel=exact", HdrFormat::Rgba32f),
+      pbrVariant("default", ""),
+      pbrVariant("hammon", "visibility=hammon"),
+      pbrVariant("separable", "visibility=separable"),
+      pbrVariant("beckmann", "ndf=beckmann"),
+      pbrVariant("lambert", "diffuse=lambert"),
+      pbrVariant("burley", "diffuse=burley"),
+      pbrVariant("r11g11b10f", "", HdrFormat::R11g11b10f),
+      pbrVariant("fast", "visibility=hammon,diffuse=lambert", HdrFormat::R11g11b10f),
+      {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f},
+  };
+  return ladder;
+}
+
+std::vector<AccuracyVariant> selectVariants(const std::string& names) {
+  if (names == "all") return accuracyLadder();
+  std::vector<AccuracyVariant> out;
+  std::stringstream list(names);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    bool found = false;
+    for (const AccuracyVariant& v : accuracyLadder()) {
+      if (v.name == name) {
+        out.push_back(v);
+        found = true;
+      }
+    }
+    if (!found) {
+      std::string known;
+      for (const AccuracyVariant& v : accuracyLadder()) known += (known.empty() ? "" : ", ") + v.name;
+      throw std::invalid_argument("unknown variant '" + name + "' (expected all or some of: " + known + ")");
+    }
+  }
+  return out;
+}
+
+AccuracyScene loadAccuracyScene(const std::string& spec) {
+  SceneParams params;
+  std::string name = spec, label = spec;
+  const size_t colon = spec.find(':');
+  if (colon != std::string::npos) {
+    name = spec.substr(0, colon);
+    params.viewAngleDeg = std::stof(spec.substr(colon + 1));
+    label = name + "-" + spec.substr(colon + 1);
+  }
+  for (char& c : label)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  Scene scene = resolveScene(name, params);
+  for (auto& object : scene.objects) object.material.baseColorTexture = -1;
+  return {label, std::move(scene)};
+}
+
+}  // namespace pbr

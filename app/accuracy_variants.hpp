@@ -1,0 +1,31 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "lighting/shading_model.hpp"
+
+namespace pbr {
+
+// One rung of the speed/accuracy ladder: a shading model, its PBR terms and the HDR target's format.
+struct AccuracyVariant {
+  std::string name;
+  ShadingModel model = ShadingModel::Pbr;
+  ShadingVariant shading;
+  HdrFormat hdr = HdrFormat::Rgba16f;
+};
+
+// Every variant `pbr accuracy` knows, the reference-equivalent one ("exact") first.
+const std::vector<AccuracyVariant>& accuracyLadder();
+// A comma-separated list of ladder names, or "all"; throws std::invalid_argument for an unknown name.
+std::vector<AccuracyVariant> selectVariants(const std::string& names);
+
+struct AccuracyScene {
+  std::string label;  // file-name safe: fresnel-floor:40 becomes fresnel-floor-40
+  Scene scene;
+};
+// A built-in scene name or file, or "fresnel-floor:DEG" for that view angle. The reference ignores textures,
+// so base colour textures are removed.
+AccuracyScene loadAccuracyScene(const std::string& spec);
+
+}  // namespace pbr

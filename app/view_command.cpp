@@ -1,0 +1,70 @@
+#include <cstdio>
+#include <iostream>
+
+#include "app/args.hpp"
+#include "app/commands.hpp"
+#include "app/scene_source.hpp"
+#include "app/viewer.hpp"
+
+namespace pbr {
+
+namespace {
+
+const std::vector<OptionSpec>& viewOptions() {
+  static const std::vector<OptionSpec> specs = {
+      {"--scene", "NAME|FILE", "built-in scene or scene file, as for pbr render (default: default)"},
+      {"--lights", "N", "number of point lights (default: the scene's)"},
+      {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
+      {"--model", "MODEL", "shading model at start: pbr (default) or blinn-phong (key M switches)"},
+      {"--culling", "C", "clustered (default) or none at start (key C switches)"},
+      {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},
+      {"--size", "WxH", "window size in pixels (default 1280x720)"},
+      {"--paused", "", "start with the light animation paused (key P toggles)"},
+      {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)"},
+      {"--screenshot", "F.png", "where F12 and the end of a --frames run save the frame"},
+      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
+  };
+  return specs;
+}
+
+const char* kKeys =
+    "\nkeys: drag to orbit, scroll to zoom, W/A/S/D/Q/E fly, M Blinn-Phong/PBR, C clustered/brute force,\n"
+    "V debug view (final, baseColor, normals, roughness, metalness, depth, clusters), +/- exposure,\n"
+    "[/] halve/double the lights, P pause the lights, F12 screenshot, Esc quit\n";
+
+}  // namespace
+
+int runView(const std::vector<std::string>& argv) {
+  const auto& specs = viewOptions();
+  Args args(specs, argv);
+  if (args.helpRequested()) {
+    std::cout << Args::helpText("pbr view [options]",
+                                "Opens a window (GLFW, OpenGL 4.5) rendering the scene continuously through the same "
+                                "renderer as pbr render, with live pass timings in the title.",
+                                specs)
+              << kKeys;
+    return 0;
+  }
+  ViewerOptions options;
+  options.sceneName = args.get("--scene", "default");
+  if (args.has("--lights")) options.sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
+  if (args.has("--view-angle")) options.sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
+  options.frame.model = parseShadingModel(args.get("--model", "pbr"));
+  options.frame.culling = parseCulling(args.get("--culling", "clustered"));
+  options.size = args.getSize("--size", options.size);
+  options.paused = args.has("--paused");
+  const int frames = args.getInt("--frames", 0, 1, 1 << 30);
+  options.screenshot = args.get("--screenshot", "");
+  options.timing = args.get("--timing", "auto");
+  chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
+
+  Scene scene = resolveScene(options.sceneName, options.sceneParams);
+  options.frame.exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  Viewer viewer(options, std::move(scene));
+  std::printf("renderer: %s | %s | %s\n", viewer.window().info().renderer.c_str(),
+              viewer.window().info().version.c_str(), viewer.window().info().platform.c_str());
+  viewer.run(frames);
+  return 0;
+}
+
+}  // namespace pbr

@@ -1,0 +1,120 @@
+#include "app/viewer.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/readback.hpp"
+
+namespace pbr {
+
+namespace {
+constexpr float kLightOrbitRadiansPerSecond = 0.3f;
+// A slow frame (shader compilation, a software rasterizer) must not jump the camera or the lights.
+constexpr float kMaxStepSeconds = 0.1f;
+}  // namespace
+
+const char* toString(ViewerView view) {
+  switch (view) {
+    case ViewerView::Final: return "final";
+    case ViewerView::BaseColor: return "baseColor";
+    case ViewerView::Normals: return "normals";
+    case ViewerView::Roughness: return "roughness";
+    case ViewerView::Metalness: return "metalness";
+    case ViewerView::Depth: return "depth";
+    case ViewerView::Clusters: return "clusters";
+  }
+  return "?";
+}
+
+Viewer::Viewer(const ViewerOptions& options, Scene scene)
+    : options_(options),
+      window_(options.size.x, options.size.y, "pbr view"),
+      scene_(std::move(scene)),
+      camera_(scene_.camera),
+      gbufferDebug_(shaders_),
+      profiler_(chooseTimingMode(options.timing, window_.info().renderer)),
+      movedLights_(scene_.lights) {
+  const glm::ivec2 size = window_.framebufferSize();
+  resize(size.x, size.y);
+  installCallbacks();
+  lastFrame_ = lastTitle_ = Clock::now();
+}
+
+void Viewer::resize(int width, int height) {
+  presentSource_.reset();
+  renderer_.reset();  // free the old targets before allocating the new ones
+  renderer_ = std::make_unique<Renderer>(shaders_, scene_, width, height);
+  renderer_->setLights(movedLights_);
+  presentSource_ = std::make_unique<Framebuffer>();
+  presentSource_->attach(GL_COLOR_ATTACHMENT0, renderer_->ldr());
+  presentSource_->checkComplete();
+  pendingSize_ = {width, height};
+}
+
+void Viewer::run(int frames) {
+  while (!window_.shouldClose() && (frames <= 0 || framesRendered_ < frames)) frame();
+  checkGlError("the viewer");
+  if (frames > 0 && !options_.screenshot.empty()) {
+    saveScreenshot(options_.screenshot);
+    std::printf("wrote %s\n", options_.screenshot.c_str());
+  }
+}
+
+void Viewer::frame() {
+  glfwPollEvents();
+  if (pendingSize_.x <= 0 || pendingSize_.y <= 0) {  // minimised: nothing to draw into until it comes back
+    glfwWaitEventsTimeout(0.1);
+    return;
+  }
+  if (pendingSize_ != frameSize()) resize(pendingSize_.x, pendingSize_.y);
+
+  const Clock::time_point now = Clock::now();
+  const double frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
+  lastFrame_ = now;
+  const float step = std::min(static_cast<float>(frameMs / 1000.0), kMaxStepSeconds);
+  flyFromHeldKeys(step);
+  if (!options_.paused) animateLights(step);
+
+  renderer_->setCamera(camera_.camera());
+  FrameOptions frameOptions = options_.frame;
+  frameOptions.debugView = view_ == ViewerView::Clusters ? ClusterDebugView::Clusters : ClusterDebugView::None;
+  renderer_->renderFrame(frameOptions, profiler_);
+  if (view_ != ViewerView::Final && view_ != ViewerView::Clusters) {
+    const auto channel = static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
+    gbufferDebug_.render(channel, renderer_->gbuffer(), renderer_->frameUniforms(), renderer_->ldr());
+  }
+  present();
+  ++framesRendered_;
+  for (const FrameTiming& t : profiler_.takeResults(false)) lastTiming_ = t;
+  updateTitle(frameMs);
+}
+
+void Viewer::present() {
+  const glm::ivec2 size = frameSize();
+  const glm::ivec2 target = window_.framebufferSize();
+  glBlitNamedFramebuffer(presentSource_->id(), 0, 0, 0, size.x, size.y, 0, 0, target.x, target.y,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  window_.swapBuffers();
+}
+
+void Viewer::animateLights(float seconds) {
+  lightTime_ += seconds;
+  // Every light circles the vertical axis through the scene camera's target, all at one angular speed.
+  const glm::vec3 centre = scene_.camera.target;
+  const float angle = lightTime_ * kLightOrbitRadiansPerSecond;
+  const float c = std::cos(angle), s = std::sin(angle);
+  for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    const glm::vec3 d = scene_.lights[i].position - centre;
+    movedLights_[i].position = centre + glm::vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+  }
+  renderer_->setLights(movedLights_);
+}
+
+ImageRgba8 Viewer::screenshot() const { return readbackRgba8(renderer_->ldr()); }
+
+void Viewer::saveScreenshot(const std::string& path) const { writePng(path, screenshot()); }
+
+}  // namespace pbr

@@ -1,0 +1,107 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "app/accuracy_variants.hpp"
+#include "app/brdf_slice.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+
+using namespace pbr;
+
+namespace {
+
+double meanOver(const BrdfSlice& s, double loDeg, double hiDeg) {
+  double sum = 0.0;
+  int n = 0;
+  for (int r = 0; r < s.roughnesses; ++r)
+    for (int a = 0; a < s.angles; ++a) {
+      const double deg = (a + 0.5) * 90.0 / s.angles;
+      if (deg >= loDeg && deg <= hiDeg) sum += s.at(a, r), ++n;
+    }
+  return sum / n;
+}
+
+}  // namespace
+
+// A metal has no diffuse lobe and the same Schlick Fresnel in the GLSL and reference models, so with exact
+// Fresnel selected the slice isolates the visibility term.
+TEST_CASE("accuracy slices: the exact variant matches the reference BRDF and Hammon's form errs most at grazing angles") {
+  PBR_REQUIRE_GL();
+  const ShaderLibrary shaders;
+  const SliceMaterial metal{glm::vec3(0.95f, 0.64f, 0.54f), 1.0f};
+  const BrdfSlice exact = computeBrdfSlice(shaders, parseShadingVariant("fresnel=exact"), metal, 45, 16);
+  float worstExact = 0.0f;
+  for (float e : exact.relativeError) worstExact = std::max(worstExact, e);
+  MESSAGE("exact variant: largest relative BRDF error " << worstExact);
+  CHECK(worstExact < 1e-3f);
+
+  const BrdfSlice hammon = computeBrdfSlice(shaders, parseShadingVariant("visibility=hammon,fresnel=exact"), metal, 45, 16);
+  for (int r = 0; r < hammon.roughnesses; ++r) {
+    int worst = 0;
+    for (int a = 1; a < hammon.angles; ++a)
+      if (hammon.at(a, r) > hammon.at(worst, r)) worst = a;
+    if (hammon.at(worst, r) < 1e-3f) continue;  // roughness near 1, where both forms agree
+    CAPTURE(r);
+    CHECK((worst + 0.5) * 90.0 / hammon.angles > 60.0);
+  }
+  const double grazing = meanOver(hammon, 70.0, 90.0), frontal = meanOver(hammon, 0.0, 30.0);
+  MESSAGE("Hammon: mean relative error " << frontal << " at 0-30 degrees, " << grazing << " at 70-90 degrees");
+  CHECK(grazing > 5.0 * frontal);
+}
+
+TEST_CASE("pbr accuracy: one CSV row per variant with time and error, error maps and slices") {
+  PBR_REQUIRE_GL();
+  const test::TempDir dir;
+  const test::PbrRun run = test::runPbr(dir, {"accuracy", "--size", "32x18", "--frames", "1", "--scenes",
+                                              "fresnel-floor:40", "--out-dir", dir.file("acc"), "--no-chart",
+                                              "--slices", "--slice-size", "16x8"});
+  REQUIRE_MESSAGE(run.exitCode == 0, run.err);
+  std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line.rfind("variant,scene,model,terms,hdr_format,lighting_ms,relative_rmse,", 0) == 0);
+  size_t rows = 0;
+  for (; std::getline(csv, line); ++rows) {
+    CAPTURE(line);
+    // The terms column is quoted and holds commas: the numbers are the last six fields.
+    std::vector<std::string> f;
+    std::stringstream in(line.substr(line.rfind('"') + 2));
+    for (std::string item; std::getline(in, item, ',');) f.push_back(item);
+    REQUIRE(f.size() == 7);  // hdr_format, lighting_ms, relative_rmse, mean, max, share, pixels
+    const std::string variant = line.substr(0, line.find(','));
+    CHECK(variant == accuracyLadder()[rows].name);
+    CHECK(std::stod(f[1]) > 0.0);
+    const double rmse = std::stod(f[2]);
+    CHECK(std::isfinite(rmse));
+    CHECK(rmse >= 0.0);
+    CHECK(std::stoi(f[6]) > 0);
+    CHECK(std::filesystem::exists(dir.path() / "acc" / ("error-" + variant + "-fresnel-floor-40.png")));
+  }
+  CHECK(rows == accuracyLadder().size());
+  CHECK(std::filesystem::exists(dir.path() / "acc" / "slice-hammon-metal.png"));
+  CHECK(test::readFile(dir.path() / "acc" / "slices.csv").find("hammon,dielectric,") != std::string::npos);
+}
+
+TEST_CASE("pbr render --variant and --hdr-format select a permutation; unknown values are usage errors") {
+  PBR_REQUIRE_GL();
+  const test::TempDir dir;
+  const test::PbrRun ok = test::runPbr(dir, {"render", "--size", "32x18", "--scene", "sphere-grid", "--variant",
+                                             "visibility=separable,ndf=beckmann,fresnel=exact,diffuse=burley",
+                                             "--hdr-format", "r11g11b10f", "--hdr", dir.file("f.pfm")});
+  REQUIRE_MESSAGE(ok.exitCode == 0, ok.err);
+  CHECK(ok.out.find("visibility=separable,ndf=beckmann,fresnel=exact,diffuse=burley") != std::string::npos);
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--variant", "ndf=phong"},
+                                              std::vector<std::string>{"--variant", "specular=ggx"},
+                                              std::vector<std::string>{"--variant", "ndf"},
+                                              std::vector<std::string>{"--hdr-format", "rgba8"}}) {
+    std::vector<std::string> args = {"render", "--size", "32x18"};
+    args.insert(args.end(), bad.begin(), bad.end());
+    const test::PbrRun run = test::runPbr(dir, args);
+    CAPTURE(bad[1]);
+    CHECK(run.exitCode == 2);
+    CHECK(test::isOneLine(run.err));
+  }
+}
