@@ -25,6 +25,8 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) 
 LightClusters::LightClusters(const ShaderLibrary& shaders, const ClusterConfig& config)
     : config_(config),
       boundsProgram_(shaders.compute("lighting/cluster_bounds.comp")),
+      viewLightsProgram_(shaders.compute("lighting/cluster_lights.comp")),
+      tilesProgram_(shaders.compute("lighting/cluster_tiles.comp")),
       countProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
       countStatsProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
       scanProgram_(shaders.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "0"}})),
@@ -45,7 +47,9 @@ LightClusters::~LightClusters() {
 
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
-  for (const auto* b : {&bounds_, &headers_, &indices_, &visible_}) total += *b ? (*b)->size() : 0;
+  for (const auto* b : {&bounds_, &headers_, &indices_, &visible_, &viewLights_, &tileMasks_}) {
+    total += *b ? (*b)->size() : 0;
+  }
   return total;
 }
 
@@ -103,6 +107,14 @@ void LightClusters::ensureCapacity(uint64_t entries) {
   capacity_ = static_cast<uint32_t>(entries);
 }
 
+// Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound.
+void LightClusters::ensureLightBuffers(uint32_t lights) {
+  const uint64_t tiles = uint64_t(dims_.x) * dims_.y, words = (std::max(lights, 1u) + 31u) / 32u;
+  const uint64_t viewBytes = words * 32 * 16, maskBytes = tiles * words * 4;
+  if (!viewLights_ || viewLights_->size() < viewBytes) viewLights_ = std::make_unique<Buffer>(viewBytes, nullptr, 0);
+  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = std::make_unique<Buffer>(maskBytes, nullptr, 0);
+}
+
 void LightClusters::growFromPastDemand() {
   for (PendingStatus& p : pending_) {
     if (!p.fence) continue;
@@ -119,7 +131,9 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
                            bool stats) {
   if (!bounds_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f, frame);
   growFromPastDemand();
+  ensureLightBuffers(lights.count());
   const uint32_t clusters = blockData_.counts.y;
+  const uint32_t tiles = dims_.x * dims_.y, words = (lights.count() + 31u) / 32u;
   blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
   if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) {
@@ -135,16 +149,26 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
   indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
   status_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterStatusSsbo);
+  viewLights_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterViewLightsSsbo);
+  tileMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterTileMasksSsbo);
   if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightVisibleSsbo);
 
+  viewLightsProgram_.use();
+  glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  tilesProgram_.use();
+  glDispatchCompute(groupsFor(tiles * words, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // One workgroup per tile and 8 slices (cluster_assign.comp).
+  const GLuint sliceGroups = groupsFor(dims_.z, 8);
   (stats ? countStatsProgram_ : countProgram_).use();
-  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+  glDispatchCompute(tiles, sliceGroups, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   (stats ? scanStatsProgram_ : scanProgram_).use();
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   fillProgram_.use();
-  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+  glDispatchCompute(tiles, sliceGroups, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   PendingStatus& slot = pending_[pendingNext_];

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,11 +16,14 @@ namespace {
 
 struct Box {
   glm::dvec3 lo, hi;
+  std::array<glm::dvec3, 4> planes;  // unit inward normals of the tile column's side planes, through the eye
+  double planePad;
 };
 
 // The froxel bounds as the clustering contract states them, in double precision: screen tiles of `tile` pixels
 // x exponential slices z_k = near (far/near)^(k/S), the view-space AABB of the 8 corners, widened by 1e-4 of
-// its largest coordinate magnitude plus 1e-6.
+// its largest coordinate magnitude plus 1e-6; and the tile's four side planes, widened by 1e-4 of the distance to
+// the column's farthest corner on the far plane plus 1e-6.
 std::vector<Box> cpuClusterBounds(const Camera& cam, int width, int height, int tile, int slices) {
   const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
   const double tanHalf = std::tan(glm::radians(double(cam.fovYDeg)) / 2.0);
@@ -32,7 +36,12 @@ std::vector<Box> cpuClusterBounds(const Camera& cam, int width, int height, int 
       for (int tx = 0; tx < tilesX; ++tx) {
         const double x0 = double(tx * tile) / width * 2 - 1, x1 = double(std::min((tx + 1) * tile, width)) / width * 2 - 1;
         const double y0 = double(ty * tile) / height * 2 - 1, y1 = double(std::min((ty + 1) * tile, height)) / height * 2 - 1;
-        Box b{glm::dvec3(1e300), glm::dvec3(-1e300)};
+        Box b{glm::dvec3(1e300), glm::dvec3(-1e300), {}, 0.0};
+        const double sx = aspect * tanHalf, sy = tanHalf;
+        b.planes = {glm::normalize(glm::dvec3(1, 0, x0 * sx)), glm::normalize(glm::dvec3(-1, 0, -x1 * sx)),
+                    glm::normalize(glm::dvec3(0, 1, y0 * sy)), glm::normalize(glm::dvec3(0, -1, -y1 * sy))};
+        const glm::dvec3 farCorner(std::max(std::abs(x0), std::abs(x1)) * sx, std::max(std::abs(y0), std::abs(y1)) * sy, 1);
+        b.planePad = 1e-4 * cam.farPlane * glm::length(farCorner) + 1e-6;
         for (double nx : {x0, x1}) {
           for (double ny : {y0, y1}) {
             for (double z : {zNear, zFar}) {
@@ -53,10 +62,13 @@ std::vector<Box> cpuClusterBounds(const Camera& cam, int width, int height, int 
   return boxes;
 }
 
-// Signed distance from the sphere's surface to the box: negative or zero means they intersect.
-double sphereBoxGap(const glm::dvec3& c, double r, const Box& b) {
+// How far the sphere misses the cluster: its gap to the box, or to the farthest-off padded side plane; negative
+// or zero means the light is listed.
+double sphereClusterGap(const glm::dvec3& c, double r, const Box& b) {
   const glm::dvec3 d = glm::max(b.lo - c, 0.0) + glm::max(c - b.hi, 0.0);
-  return std::sqrt(glm::dot(d, d)) - r;
+  double gap = std::sqrt(glm::dot(d, d)) - r;
+  for (const glm::dvec3& n : b.planes) gap = std::max(gap, -glm::dot(n, c) - b.planePad - r);
+  return gap;
 }
 
 }  // namespace
@@ -105,10 +117,11 @@ TEST_CASE("clusters: GPU light lists equal a CPU froxel/sphere test for a fixed 
     listed += list.size();
     const double scale = std::max(glm::length(boxes[c].lo), glm::length(boxes[c].hi));
     for (size_t i = 0; i < scene.lights.size(); ++i) {
-      const double gap = sphereBoxGap(centers[i], scene.lights[i].radius, boxes[c]);
+      const double gap = sphereClusterGap(centers[i], scene.lights[i].radius, boxes[c]);
       const bool inList = std::binary_search(list.begin(), list.end(), static_cast<uint32_t>(i));
-      // Float rounding on the GPU may decide spheres that touch a box within 1e-5 of its size either way.
-      if (std::abs(gap) < 1e-5 * scale) {
+      // Float rounding on the GPU may decide spheres that touch a box within 1e-5 of its size either way, and
+      // a side plane within 1e-5 of the light's distance.
+      if (std::abs(gap) < 1e-5 * std::max(scale, glm::length(centers[i]))) {
         ++borderline;
         continue;
       }

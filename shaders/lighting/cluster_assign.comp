@@ -1,25 +1,24 @@
 #version 450 core
-// Light assignment, compiled twice: ASSIGN_FILL 0 counts the lights touching each cluster, ASSIGN_FILL 1 writes
-// their indices at the offsets the scan pass computed. Each workgroup walks the frame's lights in ascending
-// order, a batch at a time, transforming each light to view space once into shared memory; each invocation
-// tests its own cluster. Ascending order keeps every list sorted, so clustered shading sums lights in the same
-// order as the brute-force path and the two agree bit for bit.
-layout(local_size_x = 64) in;
+// Fine level of light assignment, compiled twice: ASSIGN_FILL 0 counts the lights touching each cluster,
+// ASSIGN_FILL 1 writes their indices at the offsets the scan pass computed. A workgroup holds slices of one
+// screen tile and visits only the lights of that tile's mask (cluster_tiles.comp), lowest bit first, so every
+// list comes out in ascending order: clustered shading sums lights in the same order as the brute-force path
+// and the two agree bit for bit. A light is listed when it passed its tile's side planes and its sphere touches
+// the cluster's box.
+layout(local_size_x = 8) in;
 
-#include "../common/frame.glsl"
 #include "clusters.glsl"
-#include "lights.glsl"
 
 layout(std430, binding = CLUSTER_BOUNDS_SSBO) readonly buffer Bounds { ClusterBounds bounds[]; };
 layout(std430, binding = CLUSTER_SSBO) buffer Headers { ClusterHeader headers[]; };
+layout(std430, binding = CLUSTER_VIEW_LIGHTS_SSBO) readonly buffer ViewLights { vec4 viewLights[]; };
+layout(std430, binding = CLUSTER_TILE_MASKS_SSBO) readonly buffer TileMasks { uint tileMasks[]; };
 #if ASSIGN_FILL
 layout(std430, binding = LIGHT_INDEX_SSBO) writeonly buffer Indices { uint lightIndices[]; };
 #endif
 #if ASSIGN_STATS && !ASSIGN_FILL
 layout(std430, binding = LIGHT_VISIBLE_SSBO) buffer Visible { uint lightVisible[]; };
 #endif
-
-shared vec4 batch[64];  // view-space centre, radius
 
 ClusterBounds gBox;
 #if ASSIGN_FILL
@@ -28,58 +27,54 @@ uint gCursor;
 uint gCount;
 #endif
 
-void testLight(uint base, uint j) {
-  vec4 sphere = batch[j];
+void testLight(uint light) {
+  vec4 sphere = viewLights[light];
   if (!sphereIntersectsAabb(sphere.xyz, sphere.w, gBox.minView.xyz, gBox.maxView.xyz)) return;
 #if ASSIGN_FILL
-  lightIndices[gCursor++] = base + j;
+  lightIndices[gCursor++] = light;
 #else
   ++gCount;
 #if ASSIGN_STATS
-  lightVisible[base + j] = 1u;
+  lightVisible[light] = 1u;
 #endif
 #endif
 }
 
+void testLowestBit(inout uint bits, uint base) {
+  if (bits == 0u) return;
+  uint b = uint(findLSB(bits));
+  bits &= bits - 1u;
+  testLight(base + b);
+}
+
 void main() {
-  uint cluster = gl_GlobalInvocationID.x;
-  bool inRange = cluster < clusterCount();
-  gBox = bounds[min(cluster, clusterCount() - 1u)];
+  uint tile = gl_WorkGroupID.x;
+  uint slice = gl_WorkGroupID.y * gl_WorkGroupSize.x + gl_LocalInvocationIndex;
+  if (slice >= clusterGrid.dims.z) return;
+  uint cluster = slice * clusterGrid.dims.x * clusterGrid.dims.y + tile;
+  gBox = bounds[cluster];
 #if ASSIGN_FILL
-  ClusterHeader header = headers[min(cluster, clusterCount() - 1u)];
-  // A list that does not fit the index buffer is not written: lighting shades that cluster by brute force.
-  inRange = inRange && listFits(header);
+  ClusterHeader header = headers[cluster];
+  // A list that does not fit the index buffer is not written: lighting shades that cluster by brute force. Empty
+  // clusters (most of them) have nothing to write.
+  if (header.count == 0u || !listFits(header)) return;
   gCursor = header.offset;
 #else
   gCount = 0u;
 #endif
-  uint total = clusterGrid.counts.x;
-  for (uint base = 0u; base < total; base += 64u) {
-    uint li = base + gl_LocalInvocationIndex;
-    if (li < total) {
-      vec4 pr = lights[li].positionRadius;
-      batch[gl_LocalInvocationIndex] = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w);
+  uint words = clusterMaskWords();
+  for (uint w = 0u; w < words; ++w) {
+    uint bits = tileMasks[tile * words + w];
+    // Four bits per iteration for llvmpipe's limit of 65535 loop iterations per invocation (see deferred.comp):
+    // a tile reached by all of 65,536 lights takes 2,048 + 16,384 iterations.
+    while (bits != 0u) {
+      testLowestBit(bits, w * 32u);
+      testLowestBit(bits, w * 32u);
+      testLowestBit(bits, w * 32u);
+      testLowestBit(bits, w * 32u);
     }
-    barrier();
-    uint n = min(64u, total - base);
-    if (inRange) {
-      // Unrolled by 8 for llvmpipe's limit of 65535 loop iterations per invocation (see deferred.comp).
-      uint j = 0u;
-      for (; j + 8u <= n; j += 8u) {
-        testLight(base, j);
-        testLight(base, j + 1u);
-        testLight(base, j + 2u);
-        testLight(base, j + 3u);
-        testLight(base, j + 4u);
-        testLight(base, j + 5u);
-        testLight(base, j + 6u);
-        testLight(base, j + 7u);
-      }
-      for (; j < n; ++j) testLight(base, j);
-    }
-    barrier();
   }
 #if !ASSIGN_FILL
-  if (inRange) headers[cluster] = ClusterHeader(0u, gCount);
+  headers[cluster] = ClusterHeader(0u, gCount);
 #endif
 }

@@ -20,6 +20,9 @@ struct ClusterBounds {
 
 uint clusterCount() { return clusterGrid.counts.y; }
 
+// 32-bit words of one tile's light mask (cluster_tiles.comp).
+uint clusterMaskWords() { return (clusterGrid.counts.x + 31u) / 32u; }
+
 // Whether a cluster's list was written; one that did not fit the index list is shaded by brute force.
 // Written so that offset + count cannot wrap.
 bool listFits(ClusterHeader h) {
