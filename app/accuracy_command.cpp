@@ -123,7 +123,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::string csvPath = (dir / "accuracy.csv").string();
   std::ofstream csv(csvPath);
   if (!csv) throw std::runtime_error(csvPath + ": cannot write");
-  csv << "variant,scene,model,terms,hdr_format,lighting_ms,relative_rmse,mean_levels,max_levels,share_over_2,pixels\n";
+  csv << "variant,scene,model,terms,hdr_format,gbuffer,lighting_ms,relative_rmse,mean_levels,max_levels,share_over_2,"
+         "pixels\n";
   std::printf("%-14s %-18s %10s %10s %8s %6s %8s\n", "variant", "scene", "light ms", "rel RMSE", "mean lv", "max",
               ">2 lv");
   for (const AccuracyScene& s : scenes) {
@@ -134,14 +135,17 @@ int runAccuracy(const std::vector<std::string>& argv) {
       options.model = v.model;
       options.variant = v.shading;
       options.exposure = s.scene.exposure;
-      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, frames + 1, {}, mode, v.hdr);
+      RendererConfig config;
+      config.hdrFormat = v.hdr;
+      config.gbuffer = v.gbuffer;
+      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, frames + 1, config, mode);
       const std::vector<FrameTiming> warm(f.timings.begin() + 1, f.timings.end());
       double lightingMs = 0.0;
       for (const PassTiming& p : medianPassTimes(warm))
         if (p.name == "lighting") lightingMs = p.ms;
       const ErrorMetrics m = measureError(f.hdr, f.ldr, ref, refLdr);
       csv << v.name << ',' << s.label << ',' << toString(v.model) << ",\""
-          << (v.model == ShadingModel::Pbr ? toString(v.shading) : "") << "\"," << toString(v.hdr) << ','
+          << (v.model == ShadingModel::Pbr ? toString(v.shading) : "") << "\"," << toString(v.hdr) << ',' << toString(v.gbuffer) << ','
           << lightingMs << ',' << m.relativeRmse << ',' << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2
           << ',' << m.pixels << '\n';
       std::printf("%-14s %-18s %10.3f %10.4g %8.3f %6.0f %8.4f\n", v.name.c_str(), s.label.c_str(), lightingMs,

@@ -10,8 +10,9 @@ namespace pbr {
 
 namespace {
 
-AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, HdrFormat hdr = HdrFormat::Rgba16f) {
-  return {name, ShadingModel::Pbr, parseShadingVariant(terms), hdr};
+AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, HdrFormat hdr = HdrFormat::Rgba16f,
+                           GBufferPrecision gbuffer = GBufferPrecision::Lean) {
+  return {name, ShadingModel::Pbr, parseShadingVariant(terms), hdr, gbuffer};
 }
 
 }  // namespace
@@ -21,6 +22,7 @@ const std::vector<AccuracyVariant>& accuracyLadder() {
       // The reference model's terms: only float precision, tessellation and the ambient integral differ.
       pbrVariant("exact", "fresnel=exact"),
       pbrVariant("exact-rgba32f", "fresnel=exact", HdrFormat::Rgba32f),
+      pbrVariant("exact-float", "fresnel=exact", HdrFormat::Rgba32f, GBufferPrecision::Float),
       pbrVariant("default", ""),
       pbrVariant("hammon", "visibility=hammon"),
       pbrVariant("separable", "visibility=separable"),
@@ -28,8 +30,9 @@ const std::vector<AccuracyVariant>& accuracyLadder() {
       pbrVariant("lambert", "diffuse=lambert"),
       pbrVariant("burley", "diffuse=burley"),
       pbrVariant("r11g11b10f", "", HdrFormat::R11g11b10f),
+      pbrVariant("gbuffer-float", "", HdrFormat::Rgba16f, GBufferPrecision::Float),
       pbrVariant("fast", "visibility=hammon,diffuse=lambert", HdrFormat::R11g11b10f),
-      {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f},
+      {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f, GBufferPrecision::Lean},
   };
   return ladder;
 }

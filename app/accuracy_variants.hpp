@@ -3,16 +3,19 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "gbuffer/gbuffer.hpp"
 #include "lighting/shading_model.hpp"
 
 namespace pbr {
 
-// One rung of the speed/accuracy ladder: a shading model, its PBR terms and the HDR target's format.
+// One rung of the speed/accuracy ladder: a shading model, its PBR terms and the precision of the HDR target and
+// the G-buffer.
 struct AccuracyVariant {
   std::string name;
   ShadingModel model = ShadingModel::Pbr;
   ShadingVariant shading;
   HdrFormat hdr = HdrFormat::Rgba16f;
+  GBufferPrecision gbuffer = GBufferPrecision::Lean;
 };
 
 // Every variant `pbr accuracy` knows, the reference-equivalent one ("exact") first.

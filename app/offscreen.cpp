@@ -3,9 +3,9 @@
 namespace pbr {
 
 RenderedFrames renderOffscreen(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
-                               const FrameOptions& options, int frames, const ClusterConfig& clusters,
-                               TimingMode timing, HdrFormat hdrFormat) {
-  Renderer renderer(shaders, scene, size.x, size.y, clusters, nullptr, hdrFormat);
+                               const FrameOptions& options, int frames, const RendererConfig& config,
+                               TimingMode timing) {
+  Renderer renderer(shaders, scene, size.x, size.y, config);
   Profiler profiler(timing);
   RenderedFrames out;
   for (int i = 0; i < frames; ++i) {

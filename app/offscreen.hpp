@@ -17,7 +17,7 @@ struct RenderedFrames {
 // Renders `frames` frames of `scene` off screen and captures the last one. More than one frame lets the clustered
 // path size its light-index list from measured demand before the captured frame.
 RenderedFrames renderOffscreen(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
-                               const FrameOptions& options, int frames = 2, const ClusterConfig& clusters = {},
-                               TimingMode timing = TimingMode::Serializing, HdrFormat hdrFormat = HdrFormat::Rgba16f);
+                               const FrameOptions& options, int frames = 2, const RendererConfig& config = {},
+                               TimingMode timing = TimingMode::Serializing);
 
 }  // namespace pbr

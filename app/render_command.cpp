@@ -21,6 +21,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--variant", "K=V,...", "PBR variant: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
                                "fresnel=schlick|exact, diffuse=lambert-1-f|lambert|burley (default: the first of each)"},
       {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
+      {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 28 bytes)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
@@ -120,12 +121,14 @@ int runRender(const std::vector<std::string>& argv) {
   const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
   ShadingVariant variant = parseShadingVariant(args.get("--variant", ""));
   if (args.has("--visibility")) variant.visibility = parseVisibility(args.get("--visibility", "exact"));
-  const HdrFormat hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
+  RendererConfig rendererConfig;
+  rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
+  rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer", "lean"));
   SceneParams sceneParams;
   if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const Culling culling = parseCulling(args.get("--culling", "clustered"));
-  ClusterConfig clusterConfig;
+  ClusterConfig& clusterConfig = rendererConfig.clusters;
   clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
   clusterConfig.slices = args.getInt("--slices", clusterConfig.slices, 1, 256);
   const bool stats = args.has("--stats");
@@ -156,7 +159,8 @@ int runRender(const std::vector<std::string>& argv) {
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(timing, info.renderer));
   Profiler precomputeProfiler(profiler.mode());
-  Renderer renderer(shaders, scene, size.x, size.y, clusterConfig, &precomputeProfiler, hdrFormat);
+  rendererConfig.precomputeProfiler = &precomputeProfiler;
+  Renderer renderer(shaders, scene, size.x, size.y, rendererConfig);
   if (renderer.ibl()) {
     std::printf("environment: %s, IBL precomputation (%s):\n",
                 scene.environment->file.empty() ? "procedural sky" : scene.environment->file.c_str(),

@@ -14,23 +14,23 @@ Environment loadEnvironment(const EnvironmentDesc& e) {
 }  // namespace
 
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
-                   const ClusterConfig& clusterConfig, Profiler* precomputeProfiler, HdrFormat hdrFormat)
+                   const RendererConfig& config)
     : scene_(scene),
       width_(width),
       height_(height),
       frameData_(makeFrameBlock(scene.camera, width, height)),
       frame_(frameData_),
-      hdr_(glInternalFormat(hdrFormat), width, height),
-      gbuffer_(width, height, hdr_),
+      hdr_(glInternalFormat(config.hdrFormat), width, height),
+      gbuffer_(width, height, hdr_, config.gbuffer),
       gbufferPass_(shaders, scene),
-      clusters_(shaders, clusterConfig),
+      clusters_(shaders, config.clusters),
       lightingPass_(shaders),
       postPass_(shaders),
       debugPass_(shaders),
       ldr_(GL_RGBA8, width, height) {
   lights_.upload(scene.lights);
   if (scene.environment) {
-    ibl_ = std::make_unique<IblMaps>(shaders, loadEnvironment(*scene.environment), IblSettings{}, precomputeProfiler);
+    ibl_ = std::make_unique<IblMaps>(shaders, loadEnvironment(*scene.environment), IblSettings{}, config.precomputeProfiler);
   }
 }
 

@@ -47,15 +47,21 @@ struct FrameCapture {
   ImageRgbaF* hdr = nullptr;  // radiance before exposure, as the lighting pass wrote it
 };
 
+// What a renderer is built with, beyond the scene and the frame size.
+struct RendererConfig {
+  ClusterConfig clusters;
+  HdrFormat hdrFormat = HdrFormat::Rgba16f;
+  GBufferPrecision gbuffer = GBufferPrecision::Lean;
+  Profiler* precomputeProfiler = nullptr;  // times the IBL precomputation when the scene has an environment
+};
+
 // The whole frame: G-buffer -> deferred lighting (HDR, RGBA16F by default) -> post (RGBA8), with each pass timed.
 class Renderer {
  public:
-  // A scene with an environment has its IBL maps precomputed here, once; with `precomputeProfiler` that is one
-  // profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
+  // A scene with an environment has its IBL maps precomputed here, once; with config.precomputeProfiler that is
+  // one profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
   // std::runtime_error naming the file when the environment's .hdr cannot be used.
-  Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
-           const ClusterConfig& clusterConfig = {}, Profiler* precomputeProfiler = nullptr,
-           HdrFormat hdrFormat = HdrFormat::Rgba16f);
+  Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height, const RendererConfig& config = {});
 
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
 

@@ -4,12 +4,23 @@
 
 namespace pbr {
 
-GBuffer::GBuffer(int w, int h, const Texture& radiance)
+GBufferPrecision parseGBufferPrecision(const std::string& name) {
+  if (name == "lean") return GBufferPrecision::Lean;
+  if (name == "float") return GBufferPrecision::Float;
+  throw std::invalid_argument("unknown G-buffer precision '" + name + "' (expected lean or float)");
+}
+
+const char* toString(GBufferPrecision precision) { return precision == GBufferPrecision::Lean ? "lean" : "float"; }
+
+// Both layouts hold the same encodings (octahedral normal in [0,1]^2, linear values once fetched), so the shaders
+// are the same: only the storage formats differ.
+GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p)
     : width(w),
       height(h),
-      baseColor(GL_SRGB8_ALPHA8, w, h),
-      normal(GL_RG16, w, h),
-      material(GL_RGBA8, w, h),
+      precision(p),
+      baseColor(p == GBufferPrecision::Lean ? GL_SRGB8_ALPHA8 : GL_RGBA16F, w, h),
+      normal(p == GBufferPrecision::Lean ? GL_RG16 : GL_RG32F, w, h),
+      material(p == GBufferPrecision::Lean ? GL_RGBA8 : GL_RGBA16F, w, h),
       depth(GL_DEPTH_COMPONENT32F, w, h) {
   const GLenum f = radiance.format();
   if (radiance.width() != w || radiance.height() != h ||

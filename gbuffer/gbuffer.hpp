@@ -1,23 +1,35 @@
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "core/gl_objects.hpp"
 
 namespace pbr {
 
+// Lean: the 16-byte layout of gbuffer/README.md. Float: the same channels unquantised (RGBA16F base colour and
+// material, RG32F octahedral normal; 28 bytes per pixel), to measure what the lean layout's quantisation costs.
+enum class GBufferPrecision { Lean, Float };
+GBufferPrecision parseGBufferPrecision(const std::string& name);  // "lean" | "float"
+const char* toString(GBufferPrecision precision);
+
 // The G-buffer's attachments (layout and bytes per pixel in gbuffer/README.md). `radiance` is the frame's HDR
 // target, attached as colour attachment 3: the geometry pass writes emitted radiance there and the lighting pass
 // adds reflected light on top, so emission needs no attachment of its own. It must outlive the G-buffer.
 struct GBuffer {
-  GBuffer(int width, int height, const Texture& radiance);
+  GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean);
 
   static constexpr int kBytesPerPixel = 4 + 4 + 4 + 4;
-  size_t bytes() const { return static_cast<size_t>(width) * static_cast<size_t>(height) * kBytesPerPixel; }
+  static constexpr int kFloatBytesPerPixel = 8 + 8 + 8 + 4;
+  size_t bytes() const {
+    return static_cast<size_t>(width) * static_cast<size_t>(height) *
+           (precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel);
+  }
 
   int width, height;
-  Texture baseColor;  // GL_SRGB8_ALPHA8
-  Texture normal;     // GL_RG16, octahedral
-  Texture material;   // GL_RGBA8, roughness + metalness + occlusion
+  GBufferPrecision precision;
+  Texture baseColor;  // GL_SRGB8_ALPHA8 (float: GL_RGBA16F, linear)
+  Texture normal;     // GL_RG16, octahedral (float: GL_RG32F)
+  Texture material;   // GL_RGBA8, roughness + metalness + occlusion (float: GL_RGBA16F)
   Texture depth;      // GL_DEPTH_COMPONENT32F, reversed Z
   Framebuffer framebuffer;
 };

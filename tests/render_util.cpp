@@ -8,7 +8,7 @@ namespace pbr::test {
 RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames,
                           const ClusterConfig& clusters) {
   const ShaderLibrary shaders;
-  return renderOffscreen(shaders, scene, size, options, frames, clusters);
+  return renderOffscreen(shaders, scene, size, options, frames, RendererConfig{clusters});
 }
 
 double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor) {

@@ -62,7 +62,7 @@ TEST_CASE("pbr accuracy: one CSV row per variant with time and error, error maps
   std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));
   std::string line;
   std::getline(csv, line);
-  CHECK(line.rfind("variant,scene,model,terms,hdr_format,lighting_ms,relative_rmse,", 0) == 0);
+  CHECK(line.rfind("variant,scene,model,terms,hdr_format,gbuffer,lighting_ms,relative_rmse,", 0) == 0);
   size_t rows = 0;
   for (; std::getline(csv, line); ++rows) {
     CAPTURE(line);
@@ -70,14 +70,14 @@ TEST_CASE("pbr accuracy: one CSV row per variant with time and error, error maps
     std::vector<std::string> f;
     std::stringstream in(line.substr(line.rfind('"') + 2));
     for (std::string item; std::getline(in, item, ',');) f.push_back(item);
-    REQUIRE(f.size() == 7);  // hdr_format, lighting_ms, relative_rmse, mean, max, share, pixels
+    REQUIRE(f.size() == 8);  // hdr_format, gbuffer, lighting_ms, relative_rmse, mean, max, share, pixels
     const std::string variant = line.substr(0, line.find(','));
     CHECK(variant == accuracyLadder()[rows].name);
-    CHECK(std::stod(f[1]) > 0.0);
-    const double rmse = std::stod(f[2]);
+    CHECK(std::stod(f[2]) > 0.0);
+    const double rmse = std::stod(f[3]);
     CHECK(std::isfinite(rmse));
     CHECK(rmse >= 0.0);
-    CHECK(std::stoi(f[6]) > 0);
+    CHECK(std::stoi(f[7]) > 0);
     CHECK(std::filesystem::exists(dir.path() / "acc" / ("error-" + variant + "-fresnel-floor-40.png")));
   }
   CHECK(rows == accuracyLadder().size());

@@ -95,7 +95,7 @@ TEST_CASE("clusters: GPU light lists equal a CPU froxel/sphere test for a fixed 
   config.tileSize = 32;
   config.slices = 16;
   const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, width, height, config);
+  Renderer renderer(shaders, scene, width, height, RendererConfig{config});
   Profiler profiler(TimingMode::Serializing);
   renderer.renderFrame({}, profiler);
   renderer.renderFrame({}, profiler);

@@ -109,7 +109,9 @@ TEST_CASE("ibl render: a white sphere in a uniform environment of radiance 1 ref
   const ShaderLibrary shaders;
   const int size = 48;
   Profiler precompute(TimingMode::Serializing);
-  Renderer renderer(shaders, scene, size, size, {}, &precompute);
+  RendererConfig config;
+  config.precomputeProfiler = &precompute;
+  Renderer renderer(shaders, scene, size, size, config);
   const std::vector<FrameTiming> timings = precompute.takeResults(true);
   REQUIRE(timings.size() == 1);
   for (const char* pass : {"ibl environment", "ibl irradiance", "ibl specular", "ibl dfg"}) {

@@ -26,6 +26,7 @@ const std::map<std::string, Bounds>& bounds() {
   static const std::map<std::string, Bounds> b = {
       {"exact", {0.10, 0.005, 0.005, 0.015, 0.015}},
       {"exact-rgba32f", {0.10, 0.005, 0.005, 0.015, 0.015}},
+      {"exact-float", {0.10, 0.001, 0.002, 0.004, 0.004}},     // unquantised G-buffer: no roughness rounding
       {"default", {0.10, 0.005, 0.03, 0.13, 0.09}},      // Schlick: exact at normal incidence only
       {"hammon", {0.10, 0.005, 0.035, 0.20, 0.21}},      // visibility error grows towards grazing
       {"separable", {0.10, 0.005, 0.03, 0.13, 0.09}},
@@ -33,6 +34,7 @@ const std::map<std::string, Bounds>& bounds() {
       {"lambert", {0.18, 0.05, 0.07, 0.20, 0.12}},       // no (1 - F) weight: too bright
       {"burley", {0.18, 0.05, 0.07, 0.20, 0.11}},
       {"r11g11b10f", {0.10, 0.015, 0.03, 0.13, 0.08}},   // 6-bit mantissas on top of Schlick
+      {"gbuffer-float", {0.10, 0.005, 0.03, 0.13, 0.09}},
       {"fast", {0.18, 0.05, 0.07, 0.24, 0.23}},
   };
   return b;
@@ -50,7 +52,10 @@ std::map<std::string, double> errors(const std::string& sceneSpec) {
     FrameOptions options;
     options.variant = v.shading;
     options.exposure = s.scene.exposure;
-    const RenderedFrames f = renderOffscreen(shaders, s.scene, kSize, options, 2, {}, TimingMode::Serializing, v.hdr);
+    RendererConfig config;
+    config.hdrFormat = v.hdr;
+    config.gbuffer = v.gbuffer;
+    const RenderedFrames f = renderOffscreen(shaders, s.scene, kSize, options, 2, config);
     out[v.name] = measureError(f.hdr, f.ldr, ref, refLdr).relativeRmse;
     MESSAGE(sceneSpec << " " << v.name << ": relative RMSE " << out[v.name]);
   }

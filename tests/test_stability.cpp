@@ -155,7 +155,9 @@ TEST_CASE("stability: a 1e9-lumen light stays finite and in range in every HDR t
   const ShaderLibrary shaders;
   for (HdrFormat format : {HdrFormat::Rgba16f, HdrFormat::R11g11b10f, HdrFormat::Rgba32f}) {
     CAPTURE(toString(format));
-    Renderer renderer(shaders, s, kWidth, kHeight, {}, nullptr, format);
+    RendererConfig config;
+    config.hdrFormat = format;
+    Renderer renderer(shaders, s, kWidth, kHeight, config);
     Profiler profiler(TimingMode::Serializing);
     ImageRgbaF hdr;
     renderer.renderFrame(FrameOptions{}, profiler, {nullptr, &hdr});
