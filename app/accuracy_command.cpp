@@ -9,6 +9,7 @@
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
 #include "app/args.hpp"
+#include "app/chart_script.hpp"
 #include "app/brdf_slice.hpp"
 #include "app/commands.hpp"
 #include "app/error_map.hpp"
@@ -46,12 +47,6 @@ std::vector<std::string> splitList(const std::string& list) {
   for (std::string item; std::getline(in, item, ',');)
     if (!item.empty()) out.push_back(item);
   return out;
-}
-
-std::string shellQuote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
 }
 
 void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant>& variants, glm::ivec2 grid,
@@ -160,10 +155,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   checkGlError("accuracy");
   if (!args.has("--no-chart")) {
     const std::string png = (dir / "accuracy.png").string();
-    const std::string cmd = "/usr/bin/python3 " + shellQuote(std::string(PBR_SCRIPT_DIR) + "/plot_accuracy.py") + " " +
-                            shellQuote(csvPath) + " " + shellQuote(png);
     // The CSV is the result; a machine without matplotlib still gets it.
-    if (std::system(cmd.c_str()) == 0) std::printf("wrote %s\n", png.c_str());
+    if (runChartScript("plot_accuracy.py", {csvPath, png})) std::printf("wrote %s\n", png.c_str());
     else std::fprintf(stderr, "pbr accuracy: chart skipped (scripts/plot_accuracy.py needs python3-matplotlib)\n");
   }
   return 0;

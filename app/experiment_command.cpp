@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/args.hpp"
+#include "app/chart_script.hpp"
 #include "app/commands.hpp"
 #include "app/experiments.hpp"
 #include "core/context.hpp"
@@ -21,12 +22,6 @@ const std::vector<OptionSpec>& experimentOptions() {
   return specs;
 }
 
-std::string shellQuote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 void printTable(const ExperimentTable& t) {
   std::printf("%-16s", t.xLabel.c_str());
   for (const std::string& c : t.columns) std::printf(" %22s", c.c_str());
@@ -38,13 +33,11 @@ void printTable(const ExperimentTable& t) {
   }
 }
 
-// Charts are drawn by scripts/plot_csv.py with Debian's matplotlib (installed by scripts/install-deps.sh).
 void writeChart(const std::string& csv, const std::string& png, const ExperimentResult& r) {
-  std::string cmd = "/usr/bin/python3 " + shellQuote(std::string(PBR_SCRIPT_DIR) + "/plot_csv.py") + " " + shellQuote(csv) +
-                    " " + shellQuote(png) + " --title " + shellQuote(r.chartTitle) + " --ylabel " + shellQuote(r.yLabel);
-  if (r.logX) cmd += " --logx";
-  if (r.logY) cmd += " --logy";
-  if (std::system(cmd.c_str()) != 0) {
+  std::vector<std::string> args = {csv, png, "--title", r.chartTitle, "--ylabel", r.yLabel};
+  if (r.logX) args.push_back("--logx");
+  if (r.logY) args.push_back("--logy");
+  if (!runChartScript("plot_csv.py", args)) {
     throw std::runtime_error(png + ": the chart could not be drawn (scripts/plot_csv.py needs python3-matplotlib)");
   }
 }
