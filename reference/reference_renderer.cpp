@@ -71,6 +71,10 @@ bool ReferenceFrame::interior(int x, int y) const {
 }
 
 ReferenceFrame renderReference(const Scene& scene, int width, int height, int threads) {
+  if (scene.environment) {
+    throw SceneError(scene.name + ": environment: the reference renderer has no image-based lighting (point lights "
+                                  "and uniform ambient only)");
+  }
   const AnalyticScene shapes(scene);
   const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, threads);
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));

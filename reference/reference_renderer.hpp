@@ -9,7 +9,8 @@ namespace pbr::reference {
 // Renders a scene of analytic shapes and point lights by ray-casting each pixel centre in double precision and
 // evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and attenuation. The
 // uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated numerically.
-// `threads` 0 uses every hardware thread. Throws SceneError for objects that are not analytic shapes.
+// `threads` 0 uses every hardware thread. Throws SceneError for objects that are not analytic shapes and for
+// scenes with an environment, rather than render them without it.
 struct ReferenceFrame {
   ImageRgbaF radiance;          // linear, before exposure, rows from the top like the renderer's HDR capture
   std::vector<int> objectIds;   // per pixel: the object hit, -1 for none

@@ -4,7 +4,9 @@
 #include <initializer_list>
 
 #include "reference/directional_albedo.hpp"
+#include "core/builtin_scenes.hpp"
 #include "reference/reference_brdf.hpp"
+#include "reference/reference_renderer.hpp"
 
 using namespace pbr::reference;
 
@@ -37,4 +39,13 @@ TEST_CASE("reference: directional albedo of the reference BRDF stays within [0, 
   CHECK(directionalAlbedo({dvec3(0.0), 0.05, 0.0}, 1.0).x == doctest::Approx(0.04).epsilon(0.05));
   // GGX's visibility term stays finite and symmetric.
   CHECK(smithVisibilityExact(0.3, 0.7, 0.2) == doctest::Approx(smithVisibilityExact(0.7, 0.3, 0.2)));
+}
+
+TEST_CASE("reference: scenes it cannot render exactly are refused, not approximated") {
+  pbr::Scene withEnvironment = pbr::makeBuiltinScene("sphere-grid");
+  withEnvironment.environment = pbr::EnvironmentDesc{};
+  CHECK_THROWS_AS(renderReference(withEnvironment, 8, 8), pbr::SceneError);
+  pbr::Scene withMesh = pbr::makeBuiltinScene("sphere-grid");
+  withMesh.objects[0].shape = pbr::Shape::Mesh;
+  CHECK_THROWS_AS(renderReference(withMesh, 8, 8), pbr::SceneError);
 }
