@@ -5,17 +5,11 @@
 #include "app/experiments.hpp"
 #include "app/offscreen.hpp"
 #include "core/builtin_scenes.hpp"
+#include "reference/reference_brdf.hpp"
 
 namespace pbr {
 
 namespace {
-
-// The renderer's windowed inverse-square attenuation, for normalising what the floor reflects.
-double attenuation(double d, double radius) {
-  const double x = d / radius;
-  const double window = std::max(0.0, 1.0 - x * x * x * x);
-  return std::min(window * window / std::max(d * d, 1e-4), 1.0);
-}
 
 // Red radiance of the centre pixel: with odd frame sides its ray is the view axis, which meets the floor at the
 // fresnel-floor's mirror point, where the half vector equals the normal.
@@ -40,7 +34,7 @@ ExperimentResult runFresnelExperiment(const ShaderLibrary& shaders, glm::ivec2 r
     specular.objects[0].material.baseColor = glm::vec3(0.0f);
     specular.objects[0].material.baseColorTexture = -1;
     const PointLight& light = specular.lights.at(0);
-    const double att = attenuation(glm::length(light.position - specular.camera.target), light.radius);
+    const double att = reference::attenuation(glm::length(light.position - specular.camera.target), light.radius);
     const double intensity = light.luminousPower / (4.0 * glm::pi<double>());
 
     std::vector<double> row;

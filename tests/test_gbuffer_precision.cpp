@@ -1,33 +1,12 @@
 #include <doctest/doctest.h>
 
-#include <cmath>
-
+#include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
 #include "app/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"
 
 using namespace pbr;
-
-namespace {
-
-// sqrt(sum (gpu - ref)^2 / sum ref^2) over the colour channels of pixels inside objects.
-double relativeRmse(const ImageRgbaF& gpu, const reference::ReferenceFrame& ref) {
-  double num = 0.0, den = 0.0;
-  for (int y = 0; y < gpu.height; ++y) {
-    for (int x = 0; x < gpu.width; ++x) {
-      if (!ref.interior(x, y) || ref.objectIds[size_t(y) * gpu.width + x] < 0) continue;
-      for (int c = 0; c < 3; ++c) {
-        const double d = double(gpu.at(x, y)[c]) - ref.radiance.at(x, y)[c];
-        num += d * d;
-        den += double(ref.radiance.at(x, y)[c]) * ref.radiance.at(x, y)[c];
-      }
-    }
-  }
-  return std::sqrt(num / den);
-}
-
-}  // namespace
 
 TEST_CASE("G-buffer precision: the float layout removes the lean layout's quantisation error") {
   PBR_REQUIRE_GL();
@@ -39,9 +18,14 @@ TEST_CASE("G-buffer precision: the float layout removes the lean layout's quanti
   options.variant = parseShadingVariant("fresnel=exact");
   RendererConfig config;
   config.hdrFormat = HdrFormat::Rgba32f;
-  const double lean = relativeRmse(renderOffscreen(shaders, floor.scene, size, options, 1, config).hdr, ref);
+  const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, floor.scene.exposure);
+  auto error = [&](const RendererConfig& c) {
+    const RenderedFrames f = renderOffscreen(shaders, floor.scene, size, options, 1, c);
+    return measureError(f.hdr, f.ldr, ref, refLdr).relativeRmse;
+  };
+  const double lean = error(config);
   config.gbuffer = GBufferPrecision::Float;
-  const double full = relativeRmse(renderOffscreen(shaders, floor.scene, size, options, 1, config).hdr, ref);
+  const double full = error(config);
   MESSAGE("relative RMSE against the reference: lean " << lean << ", float " << full);
   // The floor's roughness 0.3 is stored as 76/255 in RG8: the GGX peak moves by about 2.6%.
   CHECK(lean > 1e-3);
