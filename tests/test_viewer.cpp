@@ -41,7 +41,7 @@ std::unique_ptr<Viewer> openViewer(glm::ivec2 size = kSize, const std::string& s
       MESSAGE("no window (" << std::string(e.what()) << "); allowed by PBR_ALLOW_NO_GL=1");
     } else {
       FAIL("no OpenGL 4.5 window: " << std::string(e.what())
-                                    << " (run under xvfb-run; set PBR_ALLOW_NO_GL=1 to allow this)");
+                                    << " (run under tests/under_xvfb.sh; set PBR_ALLOW_NO_GL=1 to allow this)");
     }
     return nullptr;
   }
