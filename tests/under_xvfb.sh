@@ -1,7 +1,7 @@
 #!/bin/sh
 # Runs a command on a virtual X display: the viewer tests open real windows and CI has no display.
-# Xvfb picks a free display itself and reports it once it accepts connections (-displayfd), which avoids the race
-# of xvfb-run -a, where a display whose previous server is still shutting down can be chosen and fail to open.
+# Xvfb picks a free display itself and reports it once it accepts connections (-displayfd), so no display number
+# is guessed and nothing waits on a fixed delay.
 if ! command -v Xvfb >/dev/null 2>&1; then
   if [ "${PBR_ALLOW_NO_GL:-}" = 1 ]; then
     echo "Xvfb not found (Debian package xvfb); not run, allowed by PBR_ALLOW_NO_GL=1"
