@@ -123,7 +123,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   std::printf("%-14s %-18s %10s %10s %8s %6s %8s\n", "variant", "scene", "light ms", "rel RMSE", "mean lv", "max",
               ">2 lv");
   for (const AccuracyScene& s : scenes) {
-    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, threads);
+    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, {threads});
     const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
     for (const AccuracyVariant& v : variants) {
       FrameOptions options;

@@ -48,7 +48,7 @@ int runReference(const std::vector<std::string>& argv) {
   const Scene scene = resolveScene(args.get("--scene", "sphere-grid"), params);
 
   const auto start = std::chrono::steady_clock::now();
-  const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, threads);
+  const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, {threads});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeHdr(out, frame.radiance);
   std::printf("reference: %s, %dx%d, %zu lights, %.2f s on %u threads (CPU, double precision)\nwrote %s\n",

@@ -70,7 +70,8 @@ bool ReferenceFrame::interior(int x, int y) const {
   return true;
 }
 
-ReferenceFrame renderReference(const Scene& scene, int width, int height, int threads) {
+ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {
+  const int threads = options.threads;
   if (scene.environment) {
     throw SceneError(scene.name + ": environment: the reference renderer has no image-based lighting (point lights "
                                   "and uniform ambient only)");

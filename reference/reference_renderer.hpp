@@ -9,7 +9,7 @@ namespace pbr::reference {
 // Renders a scene of analytic shapes and point lights by ray-casting each pixel centre in double precision and
 // evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and attenuation. The
 // uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated numerically.
-// `threads` 0 uses every hardware thread. Throws SceneError for objects that are not analytic shapes and for
+// Throws SceneError for objects that are not analytic shapes and for
 // scenes with an environment, rather than render them without it.
 struct ReferenceFrame {
   ImageRgbaF radiance;          // linear, before exposure, rows from the top like the renderer's HDR capture
@@ -18,6 +18,11 @@ struct ReferenceFrame {
   // tessellated mesh and the exact shape legitimately cover different pixels.
   bool interior(int x, int y) const;
 };
-ReferenceFrame renderReference(const Scene& scene, int width, int height, int threads = 0);
+
+// How the reference renders; each field is one independent axis of what is compared.
+struct ReferenceOptions {
+  int threads = 0;  // 0: every hardware thread
+};
+ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});
 
 }  // namespace pbr::reference
