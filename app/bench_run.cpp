@@ -27,6 +27,21 @@ double processCpuMs() {
 
 }  // namespace
 
+TimedFrames timeFrames(Renderer& renderer, const FrameOptions& options, Profiler& profiler, int frames,
+                       const std::function<void(int done)>& afterFrame) {
+  profiler.takeResults(true);
+  TimedFrames out;
+  const BenchClock::time_point start = BenchClock::now();
+  const double cpuStartMs = processCpuMs();
+  for (int i = 0; i < frames; ++i) {
+    renderer.renderFrame(options, profiler);
+    if (afterFrame) afterFrame(i + 1);
+  }
+  out.frames = profiler.takeResults(true);
+  out.processCpuShare = (processCpuMs() - cpuStartMs) / (msSince(start) * availableCpus());
+  return out;
+}
+
 BenchResult runBenchConfig(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config,
                            const BenchSettings& settings, TimingMode timing, BenchClock::time_point sweepStart,
                            const FrameProgress& progress) {
@@ -58,22 +73,13 @@ BenchResult runBenchConfig(const ShaderLibrary& shaders, const Scene& scene, con
     r.elapsedSeconds = msSince(start) * 1e-3;
     return r;
   }
-  for (int i = 1; i < settings.warmup; ++i) {
-    renderer.renderFrame(options, profiler);
-    progress(i + 1, total);
-  }
+  renderer.warmUp(options, profiler, settings.warmup - 1);
+  progress(settings.warmup, total);
   r.timelineStartMs = msSince(sweepStart);
-  const BenchClock::time_point timedStart = BenchClock::now();
-  const double cpuStartMs = processCpuMs();
-  for (int i = 0; i < settings.frames; ++i) {
-    renderer.renderFrame(options, profiler);
-    progress(settings.warmup + i + 1, total);
-  }
-  std::vector<FrameTiming> timed = profiler.takeResults(true);
-  r.processCpuShare = (processCpuMs() - cpuStartMs) / (msSince(timedStart) * availableCpus());
-  for (FrameTiming& f : timed) {
-    if (f.frame >= settings.warmup) r.frames.push_back(std::move(f));
-  }
+  TimedFrames timed = timeFrames(renderer, options, profiler, settings.frames,
+                                 [&](int done) { progress(settings.warmup + done, total); });
+  r.frames = std::move(timed.frames);
+  r.processCpuShare = timed.processCpuShare;
   r.memory = {renderer.gbuffer().bytes(), renderer.clusters().bytes(), renderer.lights().bytes()};
 
   // The counters cost time: they come from one more frame, timed by nobody, so they never distort the timings.

@@ -6,6 +6,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "core/context.hpp"
+#include "core/provenance.hpp"
 
 namespace {
 
@@ -27,7 +28,7 @@ const Command kCommands[] = {
 void printUsage(FILE* out) {
   std::fprintf(out, "usage: pbr <command> [options]\n\nA clustered deferred renderer (OpenGL 4.5, headless EGL).\n\ncommands:\n");
   for (const Command& c : kCommands) std::fprintf(out, "  %-10s %s\n", c.name, c.summary);
-  std::fprintf(out, "\n'pbr <command> --help' describes a command's options.\n");
+  std::fprintf(out, "\n'pbr <command> --help' describes a command's options; 'pbr --version' the build.\n");
 }
 
 }  // namespace
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
   if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
     printUsage(all.empty() ? stderr : stdout);
     return all.empty() ? 2 : 0;
+  }
+  if (all[0] == "--version") {
+    std::printf("%s\n", pbr::versionLine().c_str());
+    return 0;
   }
   for (const Command& c : kCommands) {
     if (all[0] != c.name) continue;

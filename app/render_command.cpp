@@ -1,9 +1,12 @@
 #include <cstdio>
 #include <iostream>
 
+#include <fstream>
+
 #include "app/args.hpp"
+#include "app/bench_report.hpp"
+#include "app/bench_run.hpp"
 #include "app/commands.hpp"
-#include "app/frame_stats.hpp"
 #include "app/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
@@ -26,9 +29,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
-      {"--slices", "S", "cluster depth slices, exponential between near and far (default 24)"},
+      {"--slices", "S", "cluster depth slices, exponential between near and far (default 60)"},
       {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices"},
-      {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency); slower"},
+      {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
       {"--environment", "F.hdr|sky", "image-based lighting (PBR) and background from a Radiance .hdr or the "
@@ -36,30 +39,50 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"},
       {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
       {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
-      {"--frames", "K", "render K frames and report median pass times over frames 2..K (default 1)"},
+      {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet (default 2)"},
+      {"--frames", "K", "timed frames: median and spread of each pass over them (default 5)"},
+      {"--json", "F", "write the timings (every timed frame), light statistics and provenance as JSON (pbr bench schema)"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
   };
   return specs;
 }
 
-void printTimings(const std::vector<FrameTiming>& frames, TimingMode mode) {
-  // The first frame pays for shader compilation and first-touch allocations: leave it out when there are others.
-  std::vector<FrameTiming> warm(frames.size() > 1 ? frames.begin() + 1 : frames.begin(), frames.end());
-  std::printf("timing: %s, median of %zu frame%s%s\n", describe(mode), warm.size(), warm.size() == 1 ? "" : "s",
-              frames.size() > 1 ? " after 1 warm-up" : "");
-  for (const PassTiming& p : medianPassTimes(warm)) std::printf("  %-10s %9.3f ms\n", p.name.c_str(), p.ms);
-  std::vector<double> gpu, cpu;
-  for (const FrameTiming& f : warm) {
-    gpu.push_back(f.gpuMs);
-    cpu.push_back(f.cpuMs);
-  }
-  std::printf("  %-10s %9.3f ms\n", "frame", median(gpu));
-  std::printf("  %-10s %9.3f ms (CPU clock)\n", "wall", median(cpu));
+void printPasses(const std::vector<PassTiming>& passes, double frameMs) {
+  for (const PassTiming& p : passes) std::printf("  %-10s %9.3f ms\n", p.name.c_str(), p.ms);
+  std::printf("  %-10s %9.3f ms\n", "frame", frameMs);
 }
 
-void printLightStats(const Renderer& renderer, const FrameOptions& options) {
-  const LightStats s = renderer.lightStats();
+// The first frame pays for shader compilation and first-touch allocations: it is reported alone, never in the
+// medians.
+void printFirstFrame(const FrameTiming& first) {
+  std::printf("first frame (shader compilation, allocation; not in the medians): %.3f ms:", first.gpuMs);
+  for (const PassTiming& p : first.passes) std::printf(" %s %.3f", p.name.c_str(), p.ms);
+  std::printf("\n");
+}
+
+void printWarmUp(const WarmUpReport& w) {
+  std::printf("warm-up: %d untimed frame%s after the first", w.frames, w.frames == 1 ? "" : "s");
+  if (w.listSizingFrames) {
+    std::printf(" (%d of them to size the light-index list to the measured demand)", w.listSizingFrames);
+  }
+  std::printf("\n");
+  if (w.overflowedClusters) {
+    std::printf("warm-up: the light-index list reached its limit: %u clusters are shaded by brute force in every "
+                "timed frame\n", w.overflowedClusters);
+  }
+}
+
+void printTimings(const BenchResult& r, TimingMode mode) {
+  std::printf("timing: %s, median of %zu warm frames (p10-p90 of the frame %.3f-%.3f ms)\n", describe(mode),
+              r.frames.size(), r.frameTime.p10, r.frameTime.p90);
+  std::vector<PassTiming> passes;
+  for (const PassSummary& p : r.passes) passes.push_back({p.name, p.ms.median, 0.0});
+  printPasses(passes, r.frameTime.median);
+  std::printf("  %-10s %9.3f ms (CPU clock)\n", "wall", r.cpuTime.median);
+}
+
+void printLightStats(const LightStats& s, const Renderer& renderer, const FrameOptions& options) {
   std::printf("lights: %u in the frame", s.lights);
   if (options.culling == Culling::Clustered) {
     const glm::uvec3 d = renderer.clusters().dims();
@@ -137,9 +160,11 @@ int runRender(const std::vector<std::string>& argv) {
     throw UsageError("--debug needs --culling clustered");
   }
   const glm::ivec2 size = args.getSize("--size", {1280, 720});
-  const int frames = args.getInt("--frames", 1, 1, 100000);
+  const int warmup = args.getInt("--warmup", 2, 0, 100000);
+  const int frames = args.getInt("--frames", 5, 1, 100000);
   const std::string outPng = args.get("--out", "");
   const std::string outHdr = args.get("--hdr", "");
+  const std::string outJson = args.get("--json", "");
   const std::string timing = args.get("--timing", "auto");
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");  // reject a bad mode before making a context
@@ -167,19 +192,28 @@ int runRender(const std::vector<std::string>& argv) {
                 describe(precomputeProfiler.mode()));
     printPrecomputeTimings(precomputeProfiler.takeResults(true));
   }
-  const FrameOptions options{model, variant, culling, exposure, stats, debugView};
+  FrameOptions options{model, variant, culling, exposure, false, debugView};
+  renderer.renderFrame(options, profiler);
+  printFirstFrame(profiler.takeResults(true).front());
+  printWarmUp(renderer.warmUp(options, profiler, warmup));
+
+  BenchResult result;
+  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), culling, model, 1.0f};
+  TimedFrames timed = timeFrames(renderer, options, profiler, frames);
+  result.frames = std::move(timed.frames);
+  result.processCpuShare = timed.processCpuShare;
+  result.summarize();
+  result.memory = {renderer.gbuffer().bytes(), renderer.clusters().bytes(), renderer.lights().bytes()};
+  printTimings(result, profiler.mode());
+
+  // Captures and GPU counters come from one more frame that nobody times.
   ImageRgba8 ldr;
   ImageRgbaF hdr;
-  for (int i = 0; i < frames; ++i) {
-    FrameCapture capture;
-    if (i == frames - 1) {
-      capture.ldr = outPng.empty() ? nullptr : &ldr;
-      capture.hdr = outHdr.empty() ? nullptr : &hdr;
-    }
-    renderer.renderFrame(options, profiler, capture);
-  }
-  printTimings(profiler.takeResults(true), profiler.mode());
-  printLightStats(renderer, options);
+  options.stats = stats || !outJson.empty();
+  Profiler untimed(profiler.mode());
+  renderer.renderFrame(options, untimed, {outPng.empty() ? nullptr : &ldr, outHdr.empty() ? nullptr : &hdr});
+  result.stats = renderer.lightStats();
+  printLightStats(result.stats, renderer, options);
   checkGlError("rendering");
 
   if (!outPng.empty()) {
@@ -189,6 +223,26 @@ int runRender(const std::vector<std::string>& argv) {
   if (!outHdr.empty()) {
     writeHdr(outHdr, hdr);
     std::printf("wrote %s\n", outHdr.c_str());
+  }
+  if (!outJson.empty()) {
+    BenchReport report;
+    report.provenance = collectProvenance(info, profiler.mode());
+    report.provenance.set("shading_variant", model == ShadingModel::Pbr ? toString(variant) : "n/a");
+    report.settings.scene = scene.name;
+    report.settings.size = size;
+    report.settings.lights = {result.config.lights};
+    report.settings.culling = {culling};
+    report.settings.models = {model};
+    report.settings.warmup = warmup;
+    report.settings.frames = frames;
+    report.settings.maxSeconds = 0.0;
+    report.settings.timing = timing;
+    report.results.push_back(std::move(result));
+    std::ofstream out(outJson);
+    writeBenchJson(out, report);
+    out.close();
+    if (!out) throw std::runtime_error(outJson + ": cannot write");
+    std::printf("wrote %s\n", outJson.c_str());
   }
   return 0;
 }

@@ -75,6 +75,22 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
   lastOptions_ = options;
 }
 
+WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, int frames) {
+  WarmUpReport report;
+  for (; report.frames < frames; ++report.frames) renderFrame(options, profiler);
+  if (options.culling != Culling::Clustered) return report;
+  // Light lists only grow: a few rounds fit any static frame; the bound guards against a list at its limit.
+  constexpr int kMaxSizingFrames = 4;
+  while (clusters_.readStatus().overflowed > 0 && report.listSizingFrames < kMaxSizingFrames &&
+         clusters_.growToDemand()) {
+    renderFrame(options, profiler);
+    ++report.frames;
+    ++report.listSizingFrames;
+  }
+  report.overflowedClusters = clusters_.readStatus().overflowed;
+  return report;
+}
+
 LightStats Renderer::lightStats() const {
   LightStats s;
   s.lights = lights_.count();

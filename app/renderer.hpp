@@ -55,6 +55,13 @@ struct RendererConfig {
   Profiler* precomputeProfiler = nullptr;  // times the IBL precomputation when the scene has an environment
 };
 
+// What Renderer::warmUp did before the timed frames.
+struct WarmUpReport {
+  int frames = 0;            // untimed frames rendered
+  int listSizingFrames = 0;  // of those, frames added because a cluster's light list did not fit yet
+  uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list at its limit)
+};
+
 // The whole frame: G-buffer -> deferred lighting (HDR, RGBA16F by default) -> post (RGBA8), with each pass timed.
 class Renderer {
  public:
@@ -64,6 +71,11 @@ class Renderer {
   Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height, const RendererConfig& config = {});
 
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
+  // After at least one frame: renders `frames` more untimed frames, then, with clustered culling, more until every cluster's light
+  // list fits (each grows the list at once to the measured demand), so that no timed frame pays for a list sized
+  // a frame late. Stops early when the list has reached its memory limit: the report says how many clusters
+  // still fall back to brute force.
+  WarmUpReport warmUp(const FrameOptions& options, Profiler& profiler, int frames);
 
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
   // changes); new lights replace the light buffer.

@@ -88,8 +88,30 @@ void Viewer::frame() {
   }
   present();
   ++framesRendered_;
-  for (const FrameTiming& t : profiler_.takeResults(false)) lastTiming_ = t;
-  updateTitle(frameMs);
+  recordTimings(frameMs);
+  updateTitle();
+}
+
+void Viewer::recordTimings(double frameMs) {
+  constexpr size_t kWindow = 60;  // frames in the medians: a second or two at interactive rates
+  const FrameOptions& f = options_.frame;
+  const glm::ivec2 size = frameSize();
+  const std::string configuration = std::string(toString(f.model)) + toString(f.culling) + toString(view_) +
+                                    std::to_string(lightCount()) + "@" + std::to_string(size.x) + "x" +
+                                    std::to_string(size.y);
+  const int thisFrame = framesRendered_ - 1;
+  if (configuration != lastConfiguration_) {
+    lastConfiguration_ = configuration;
+    warmFrom_ = thisFrame + 2;
+    warmTimings_.clear();
+    warmFrameMs_.clear();
+  }
+  if (thisFrame >= warmFrom_) warmFrameMs_.push_back(frameMs);
+  for (FrameTiming& t : profiler_.takeResults(false)) {
+    if (t.frame >= warmFrom_) warmTimings_.push_back(std::move(t));
+  }
+  while (warmTimings_.size() > kWindow) warmTimings_.pop_front();
+  while (warmFrameMs_.size() > kWindow) warmFrameMs_.pop_front();
 }
 
 void Viewer::present() {

@@ -1,5 +1,6 @@
 #pragma once
 #include <chrono>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,7 +65,8 @@ class Viewer {
   void animateLights(float seconds);
   void setLightCount(size_t count);
   void present();
-  void updateTitle(double frameMs);
+  void updateTitle();
+  void recordTimings(double frameMs);
 
   ViewerOptions options_;
   WindowContext window_;  // declared first: every GL object below goes while its context still exists
@@ -84,7 +86,12 @@ class Viewer {
   int framesRendered_ = 0;
   int screenshotsSaved_ = 0;
   Clock::time_point lastFrame_, lastTitle_;
-  FrameTiming lastTiming_;
+  // Warm frames only: a frame after a change of model, culling, view, light count or size compiles shaders and
+  // resizes lists, so timings restart two frames after any change.
+  std::deque<FrameTiming> warmTimings_;
+  std::deque<double> warmFrameMs_;  // wall time between presented warm frames
+  std::string lastConfiguration_;
+  int warmFrom_ = 0;  // the first profiler frame counted as warm
 };
 
 }  // namespace pbr

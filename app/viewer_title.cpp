@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "app/frame_stats.hpp"
+
 
 namespace pbr {
 
@@ -12,18 +14,22 @@ namespace {
 constexpr double kTitleIntervalMs = 250.0;  // often enough to read as live, rarely enough to be legible
 }
 
-void Viewer::updateTitle(double frameMs) {
+void Viewer::updateTitle() {
   const Clock::time_point now = Clock::now();
   if (framesRendered_ > 1 && std::chrono::duration<double, std::milli>(now - lastTitle_).count() < kTitleIntervalMs) {
     return;
   }
   lastTitle_ = now;
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "pbr view | %.1f ms |", frameMs);
-  std::string title = buffer;
-  for (const PassTiming& p : lastTiming_.passes) {
-    std::snprintf(buffer, sizeof buffer, " %s %.2f", p.name.c_str(), p.ms);
-    title += buffer;
+  std::string title = "pbr view | warming up |";
+  if (!warmTimings_.empty() && !warmFrameMs_.empty()) {
+    std::snprintf(buffer, sizeof buffer, "pbr view | %.1f ms (median of %zu warm) |",
+                  median(std::vector<double>(warmFrameMs_.begin(), warmFrameMs_.end())), warmFrameMs_.size());
+    title = buffer;
+    for (const PassTiming& p : medianPassTimes(std::vector<FrameTiming>(warmTimings_.begin(), warmTimings_.end()))) {
+      std::snprintf(buffer, sizeof buffer, " %s %.2f", p.name.c_str(), p.ms);
+      title += buffer;
+    }
   }
   const FrameOptions& f = options_.frame;
   std::snprintf(buffer, sizeof buffer, " ms (%s) | %zu lights | %s %s | %s | exposure %.2f%s",

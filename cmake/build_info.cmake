@@ -1,4 +1,4 @@
-# Build facts for benchmark provenance: git commit, commit date, uncommitted changes, build type and compiler.
+# Build facts for benchmark provenance and `pbr --version`: version, git commit, commit date, uncommitted changes, build type and compiler.
 #
 # Included from a CMakeLists.txt it defines `pbr_build_info`, an interface target whose consumers can include
 # "pbr_build_info.hpp". The header is regenerated on every build, not at configure time, so a binary always
@@ -30,6 +30,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
        "#define PBR_GIT_COMMIT \"${commit}\"\n"
        "#define PBR_GIT_COMMIT_DATE \"${commit_date}\"\n"
        "#define PBR_GIT_DIRTY \"${dirty}\"\n"
+       "#define PBR_VERSION \"${VERSION}\"\n"
        "#define PBR_BUILD_TYPE \"${BUILD_TYPE}\"\n"
        "#define PBR_COMPILER \"${COMPILER}\"\n")
   file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)
@@ -40,7 +41,7 @@ endif()
 set(_pbr_build_info_dir ${CMAKE_BINARY_DIR}/generated)
 add_custom_target(pbr_build_info_header
   COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DOUT=${_pbr_build_info_dir}/pbr_build_info.hpp
-          -DBUILD_TYPE=$<CONFIG> "-DCOMPILER=${CMAKE_CXX_COMPILER_ID} ${CMAKE_CXX_COMPILER_VERSION}"
+          -DBUILD_TYPE=$<CONFIG> -DVERSION=${PROJECT_VERSION} "-DCOMPILER=${CMAKE_CXX_COMPILER_ID} ${CMAKE_CXX_COMPILER_VERSION}"
           -P ${CMAKE_CURRENT_LIST_FILE}
   BYPRODUCTS ${_pbr_build_info_dir}/pbr_build_info.hpp
   COMMENT "Recording git commit and build type"

@@ -134,12 +134,22 @@ Provenance collectProvenance(const ContextInfo& gl, TimingMode timing) {
   p.set("lp_num_threads", lpThreads && *lpThreads ? lpThreads : "unset");
   p.set("load_average", loadAverage());
   p.set("scheduling", scheduling());
+  p.set("version", PBR_VERSION);
   p.set("build_type", PBR_BUILD_TYPE);
   p.set("compiler", PBR_COMPILER);
   p.set("git_commit", PBR_GIT_COMMIT);
   p.set("git_commit_date", PBR_GIT_COMMIT_DATE);
   p.set("git_dirty", PBR_GIT_DIRTY);
   return p;
+}
+
+}  // namespace pbr
+
+namespace pbr {
+
+std::string versionLine() {
+  return std::string("pbr ") + PBR_VERSION + " (commit " + PBR_GIT_COMMIT + ", " + PBR_GIT_COMMIT_DATE +
+         ", uncommitted changes: " + PBR_GIT_DIRTY + "; " + PBR_BUILD_TYPE + ", " + PBR_COMPILER + ")";
 }
 
 }  // namespace pbr

@@ -21,6 +21,9 @@ struct Provenance {
 // date (UTC), the load average, the process's scheduling priority and its command line.
 Provenance collectProvenance(const ContextInfo& gl, TimingMode timing);
 
+// "pbr 0.2.0 (commit 1234abcd..., 2026-01-01T00:00:00Z, uncommitted changes: no; Release, GNU 12.2.0)".
+std::string versionLine();
+
 // The process's command line as typed (from /proc/self/cmdline), arguments quoted for a POSIX shell where needed.
 std::string processCommandLine();
 // The current time in UTC as ISO 8601, e.g. "2024-05-01T12:00:00Z".

@@ -203,6 +203,13 @@ std::vector<std::vector<uint32_t>> LightClusters::readLists() const {
   return lists;
 }
 
+bool LightClusters::growToDemand() {
+  const uint32_t before = capacity_;
+  const ClusterStatus s = readStatus();
+  if (s.demand > capacity_) ensureCapacity(static_cast<uint64_t>(s.demand) + s.demand / 4);
+  return capacity_ > before;
+}
+
 ClusterStatus LightClusters::readStatus() const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   ClusterStatus s{};

@@ -48,6 +48,9 @@ class LightClusters {
 
   // This frame's status; waits for the GPU (use at the end of a run or in stats mode).
   ClusterStatus readStatus() const;
+  // Grows the list at once to this frame's measured demand (waits for the GPU: for warm-up, not timed frames).
+  // False when the list cannot grow, at its memory limit or out of memory.
+  bool growToDemand();
 
   // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
   // a cluster that did not fit the index list reads as empty. Waits for the GPU: for tests and tools.
