@@ -61,7 +61,8 @@ AnalyticScene::AnalyticScene(const Scene& scene) {
     const SceneObject& o = scene.objects[i];
     if (o.shape == pbr::Shape::Mesh) {
       throw SceneError(scene.name + ": objects[" + std::to_string(i) +
-                       "]: the reference renderer ray-casts analytic shapes (plane, sphere, box) only");
+                       "]: a mesh has no exact shape (analytic geometry knows plane, sphere and box); "
+                       "the mesh geometry renders it");
     }
     const glm::dmat4 toWorld(o.transform);
     const glm::dmat4 toObject = glm::inverse(toWorld);

@@ -19,17 +19,24 @@ struct Ray {
 struct Hit {
   double t = 0.0;
   dvec3 position;
-  dvec3 normal;  // unit, facing the ray
+  dvec3 normal;  // unit shading normal; exact shapes' face the ray, interpolated ones may lean away at silhouettes
   size_t object = 0;
+};
+
+// A scene's geometry as the reference sees it: what a ray meets first.
+class RayCaster {
+ public:
+  virtual ~RayCaster() = default;
+  virtual std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const = 0;
 };
 
 // The analytic shapes of a scene, each with its transform inverted once, intersected exactly in double.
 // Front faces only, as the rasterizer culls back faces (a plane seen from below is not there).
-class AnalyticScene {
+class AnalyticScene final : public RayCaster {
  public:
   // Throws SceneError when an object is not an analytic shape (plane, sphere, box).
   explicit AnalyticScene(const Scene& scene);
-  std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const;
+  std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const override;
 
  private:
   struct Shape {

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "reference/directional_albedo.hpp"
+#include "reference/mesh_scene.hpp"
 #include "reference/raycast.hpp"
 
 namespace pbr::reference {
@@ -58,6 +61,12 @@ dvec3 lookupAlbedo(const std::vector<dvec3>& table, double NoV) {
 
 }  // namespace
 
+Geometry parseGeometry(const std::string& name) {
+  if (name == "meshes") return Geometry::Meshes;
+  if (name == "analytic") return Geometry::Analytic;
+  throw std::invalid_argument("unknown geometry '" + name + "' (expected meshes or analytic)");
+}
+
 bool ReferenceFrame::interior(int x, int y) const {
   const int w = radiance.width, h = radiance.height;
   const int id = objectIds[size_t(y) * w + x];
@@ -76,7 +85,9 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
     throw SceneError(scene.name + ": environment: the reference renderer has no image-based lighting (point lights "
                                   "and uniform ambient only)");
   }
-  const AnalyticScene shapes(scene);
+  const std::unique_ptr<const RayCaster> geometry =
+      options.geometry == Geometry::Meshes ? std::unique_ptr<const RayCaster>(std::make_unique<MeshScene>(scene))
+                                           : std::make_unique<AnalyticScene>(scene);
   const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, threads);
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
   ReferenceFrame frame{{width, height, std::vector<float>(size_t(width) * height * 4, 0.0f)},
@@ -88,7 +99,7 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
       // Clip to the camera's near and far planes along the view axis, as the rasterizer does.
       const double axial = glm::dot(ray.direction, forward);
       const std::optional<Hit> hit =
-          shapes.closestHit(ray, scene.camera.nearPlane / axial, scene.camera.farPlane / axial);
+          geometry->closestHit(ray, scene.camera.nearPlane / axial, scene.camera.farPlane / axial);
       dvec3 color(0.0);
       if (hit) {
         const ReferenceMaterial m = toReference(scene.objects[hit->object].material);

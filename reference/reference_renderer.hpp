@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 #include <vector>
 
 #include "core/image.hpp"
@@ -6,22 +7,33 @@
 
 namespace pbr::reference {
 
-// Renders a scene of analytic shapes and point lights by ray-casting each pixel centre in double precision and
-// evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and attenuation. The
-// uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated numerically.
-// Throws SceneError for objects that are not analytic shapes and for
-// scenes with an environment, rather than render them without it.
+// Renders a scene lit by point lights and uniform ambient light by ray-casting each pixel centre in double
+// precision and evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and
+// attenuation. The uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated
+// numerically. By default it ray-casts the triangles the GPU rasterizes (mesh_scene.hpp), so that a comparison
+// measures shading alone; Geometry::Analytic ray-casts the exact shapes (plane, sphere, box) instead, and the
+// difference between the two frames is the tessellation's error. Textures are ignored: material factors only.
+// Throws SceneError for scenes with an environment rather than render them without it, and, with analytic
+// geometry, for objects that are meshes rather than shapes.
 struct ReferenceFrame {
   ImageRgbaF radiance;          // linear, before exposure, rows from the top like the renderer's HDR capture
   std::vector<int> objectIds;   // per pixel: the object hit, -1 for none
   // Whether the pixel and its 8 neighbours see the same object: comparisons skip silhouettes, where a
-  // tessellated mesh and the exact shape legitimately cover different pixels.
+  // tessellated mesh and the exact shape, or a rasterizer's and a ray's rounding, cover different pixels.
   bool interior(int x, int y) const;
 };
+
+enum class Geometry {
+  Meshes,    // each object's triangle mesh, as rasterized
+  Analytic,  // the exact shape each object's mesh tessellates
+};
+// "meshes" or "analytic"; throws std::invalid_argument otherwise.
+Geometry parseGeometry(const std::string& name);
 
 // How the reference renders; each field is one independent axis of what is compared.
 struct ReferenceOptions {
   int threads = 0;  // 0: every hardware thread
+  Geometry geometry = Geometry::Meshes;
 };
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});
 

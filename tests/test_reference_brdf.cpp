@@ -45,7 +45,13 @@ TEST_CASE("reference: scenes it cannot render exactly are refused, not approxima
   pbr::Scene withEnvironment = pbr::makeBuiltinScene("sphere-grid");
   withEnvironment.environment = pbr::EnvironmentDesc{};
   CHECK_THROWS_AS(renderReference(withEnvironment, 8, 8), pbr::SceneError);
+  // A mesh has no exact shape to ray-cast: analytic geometry refuses it, mesh geometry renders its triangles.
   pbr::Scene withMesh = pbr::makeBuiltinScene("sphere-grid");
-  withMesh.objects[0].shape = pbr::Shape::Mesh;
-  CHECK_THROWS_AS(renderReference(withMesh, 8, 8), pbr::SceneError);
+  withMesh.objects[24].shape = pbr::Shape::Mesh;  // the centre sphere
+  ReferenceOptions analytic;
+  analytic.geometry = Geometry::Analytic;
+  CHECK_THROWS_AS(renderReference(withMesh, 8, 8, analytic), pbr::SceneError);
+  const ReferenceFrame meshes = renderReference(withMesh, 9, 9);  // the centre pixel sees the centre sphere
+  CHECK(meshes.objectIds[4 * 9 + 4] == 24);
+  CHECK(meshes.radiance.at(4, 4)[0] > 0.0f);
 }
