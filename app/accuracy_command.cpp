@@ -13,7 +13,6 @@
 #include "app/brdf_slice.hpp"
 #include "app/commands.hpp"
 #include "app/error_map.hpp"
-#include "app/frame_stats.hpp"
 #include "app/offscreen.hpp"
 #include "core/context.hpp"
 
@@ -28,8 +27,11 @@ const std::vector<OptionSpec>& accuracyOptions() {
        "fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80); textures are removed"},
       {"--variants", "LIST", "comma-separated variants or all (default): exact, exact-rgba32f, default, hammon, "
                              "separable, beckmann, lambert, burley, r11g11b10f, fast, blinn-phong"},
-      {"--size", "WxH", "frame size in pixels (default 160x90)"},
-      {"--frames", "K", "warm frames timed per variant and scene, after 1 warm-up (default 3)"},
+      {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
+      {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
+      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (default 128)"},
+      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn (default 5)"},
+      {"--no-cost", "", "skip the cost-per-pair measurement (the chart needs it)"},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go (default out/accuracy)"},
       {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
       {"--slice-size", "AxR", "slice grid: view angles x roughness values (default 90x64)"},
@@ -86,8 +88,10 @@ int runAccuracy(const std::vector<std::string>& argv) {
   Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr accuracy [options]",
-                                "Renders scenes with each shading variant, compares them with the CPU reference "
-                                "and writes a CSV (lighting time and error per variant and scene), a time-vs-error "
+                                "Measures each shading variant's cost per light-pixel pair (brute force, every light "
+                                "reaching every pixel), renders scenes with it, compares them with the CPU reference "
+                                "ray-casting the same triangles, and writes a CSV (cost and error per variant and "
+                                "scene, plus the tessellation's own error as the 'geometry' row), a cost-vs-error "
                                 "chart and per-pixel error maps (log10 relative error, colour scale below).",
                                 specs);
     return 0;
@@ -96,8 +100,12 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::vector<std::string> sceneSpecs =
       splitList(args.get("--scenes", "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
-  const glm::ivec2 size = args.getSize("--size", {160, 90});
-  const int frames = args.getInt("--frames", 3, 1, 1000);
+  const glm::ivec2 size = args.getSize("--size", {320, 180});
+  PairCostSettings cost;
+  cost.size = args.getSize("--pair-size", cost.size);
+  cost.lights = args.getInt("--pair-lights", 128, 1, 1 << 16);
+  cost.rounds = args.getInt("--rounds", 5, 1, 10000);
+  const bool measureCost = !args.has("--no-cost");
   const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");
   const bool slices = args.has("--slices");
   const glm::ivec2 sliceGrid = args.getSize("--slice-size", {90, 64});
@@ -111,21 +119,60 @@ int runAccuracy(const std::vector<std::string>& argv) {
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
   const TimingMode mode = chooseTimingMode(timing, info.renderer);
-  std::printf("renderer: %s | timing: %s, median of %d warm frames\n", info.renderer.c_str(), describe(mode), frames);
+  cost.timing = mode;
+  std::printf("renderer: %s | timing: %s\n", info.renderer.c_str(), describe(mode));
   std::filesystem::create_directories(dir);
   const ShaderLibrary shaders;
+
+  std::vector<PairCost> costs;
+  if (measureCost) {
+    std::printf("cost per light-pixel pair: %dx%d, %d lights reaching every pixel, brute force, %d rounds%s\n",
+                cost.size.x, cost.size.y, cost.lights, cost.rounds,
+                mode == TimingMode::Serializing ? " (CPU-rasterizer figures where the renderer is llvmpipe)" : "");
+    std::vector<PairCostVariant> costVariants;
+    for (const AccuracyVariant& v : variants) costVariants.push_back(pairCostVariant(v));
+    costs = measurePairCost(shaders, costVariants, cost);
+  }
 
   const std::string csvPath = (dir / "accuracy.csv").string();
   std::ofstream csv(csvPath);
   if (!csv) throw std::runtime_error(csvPath + ": cannot write");
-  csv << "variant,scene,model,terms,hdr_format,gbuffer,lighting_ms,relative_rmse,mean_levels,max_levels,share_over_2,"
-         "pixels\n";
-  std::printf("%-14s %-18s %10s %10s %8s %6s %8s\n", "variant", "scene", "light ms", "rel RMSE", "mean lv", "max",
-              ">2 lv");
+  csv << "# gl_renderer: " << info.renderer << "\n# timing_mode: " << describe(mode) << "\n# pair_cost_frame: "
+      << cost.size.x << "x" << cost.size.y << ", " << cost.lights << " lights reaching every pixel, brute force, "
+      << cost.rounds << " rounds\n# compared_frame: " << size.x << "x" << size.y << "\n";
+  csv << "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
+         "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels\n";
+  std::printf("%-16s %-18s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
+              "mean lv", "max", ">2 lv");
+  const auto writeRow = [&](const std::string& name, const std::string& scene, const std::string& model,
+                            const std::string& terms, const std::string& hdr, const std::string& gbuffer,
+                            const PairCost* c, const ErrorMetrics& m) {
+    const auto cell = [&](double v) { return c ? std::to_string(v) : std::string("n/a"); };
+    csv << name << ',' << scene << ',' << model << ",\"" << terms << "\"," << hdr << ',' << gbuffer << ','
+        << cell(c ? c->nsPerPair.median : 0) << ',' << cell(c ? c->nsPerPair.p10 : 0) << ','
+        << cell(c ? c->nsPerPair.p90 : 0) << ',' << cell(c ? c->fixedShare : 0) << ',' << m.relativeRmse << ','
+        << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << '\n';
+    char spread[40] = "-";
+    if (c) std::snprintf(spread, sizeof spread, "%.3f-%.3f", c->nsPerPair.p10, c->nsPerPair.p90);
+    std::printf("%-16s %-18s %9s %17s %10.4g %8.3f %6.0f %8.4f\n", name.c_str(), scene.c_str(),
+                c ? std::to_string(c->nsPerPair.median).substr(0, 6).c_str() : "-", spread, m.relativeRmse,
+                m.meanLevels, m.maxLevels, m.shareOver2);
+  };
   for (const AccuracyScene& s : scenes) {
-    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, {threads});
+    reference::ReferenceOptions refOptions;
+    refOptions.threads = threads;
+    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
     const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
-    for (const AccuracyVariant& v : variants) {
+    // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.
+    if (hasOnlyAnalyticShapes(s.scene)) {
+      refOptions.geometry = reference::Geometry::Analytic;
+      const reference::ReferenceFrame exact = reference::renderReference(s.scene, size.x, size.y, refOptions);
+      const ImageRgba8 exactLdr = postProcessReference(shaders, exact.radiance, s.scene.exposure);
+      writeRow("geometry", s.label, "reference", "triangle meshes against the exact shapes", "-", "-", nullptr,
+               measureError(ref.radiance, refLdr, exact, exactLdr));
+    }
+    for (size_t i = 0; i < variants.size(); ++i) {
+      const AccuracyVariant& v = variants[i];
       FrameOptions options;
       options.model = v.model;
       options.variant = v.shading;
@@ -133,18 +180,10 @@ int runAccuracy(const std::vector<std::string>& argv) {
       RendererConfig config;
       config.hdrFormat = v.hdr;
       config.gbuffer = v.gbuffer;
-      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, frames + 1, config, mode);
-      const std::vector<FrameTiming> warm(f.timings.begin() + 1, f.timings.end());
-      double lightingMs = 0.0;
-      for (const PassTiming& p : medianPassTimes(warm))
-        if (p.name == "lighting") lightingMs = p.ms;
-      const ErrorMetrics m = measureError(f.hdr, f.ldr, ref, refLdr);
-      csv << v.name << ',' << s.label << ',' << toString(v.model) << ",\""
-          << (v.model == ShadingModel::Pbr ? toString(v.shading) : "") << "\"," << toString(v.hdr) << ',' << toString(v.gbuffer) << ','
-          << lightingMs << ',' << m.relativeRmse << ',' << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2
-          << ',' << m.pixels << '\n';
-      std::printf("%-14s %-18s %10.3f %10.4g %8.3f %6.0f %8.4f\n", v.name.c_str(), s.label.c_str(), lightingMs,
-                  m.relativeRmse, m.meanLevels, m.maxLevels, m.shareOver2);
+      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, 3, config, mode);
+      writeRow(v.name, s.label, toString(v.model), v.model == ShadingModel::Pbr ? toString(v.shading) : "",
+               toString(v.hdr), toString(v.gbuffer), costs.empty() ? nullptr : &costs[i],
+               measureError(f.hdr, f.ldr, ref, refLdr));
       writePng((dir / ("error-" + v.name + "-" + s.label + ".png")).string(),
                errorMapImage(relativeErrorPerPixel(f.hdr, ref), size.x, size.y, 1e-4, 1.0));
     }
@@ -153,7 +192,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   std::printf("wrote %s and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(), dir.string().c_str());
   if (slices) writeSlices(shaders, variants, sliceGrid, dir);
   checkGlError("accuracy");
-  if (!args.has("--no-chart")) {
+  if (!args.has("--no-chart") && !costs.empty()) {
     const std::string png = (dir / "accuracy.png").string();
     // The CSV is the result; a machine without matplotlib still gets it.
     if (runChartScript("plot_accuracy.py", {csvPath, png})) std::printf("wrote %s\n", png.c_str());

@@ -17,6 +17,16 @@ AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, Hd
 
 }  // namespace
 
+PairCostVariant pairCostVariant(const AccuracyVariant& v) {
+  PairCostVariant out;
+  out.name = v.name;
+  out.options.model = v.model;
+  out.options.variant = v.shading;
+  out.config.hdrFormat = v.hdr;
+  out.config.gbuffer = v.gbuffer;
+  return out;
+}
+
 const std::vector<AccuracyVariant>& accuracyLadder() {
   static const std::vector<AccuracyVariant> ladder = {
       // The reference model's terms: only float precision, tessellation and the ambient integral differ.
@@ -57,6 +67,12 @@ std::vector<AccuracyVariant> selectVariants(const std::string& names) {
     }
   }
   return out;
+}
+
+bool hasOnlyAnalyticShapes(const Scene& scene) {
+  for (const SceneObject& o : scene.objects)
+    if (o.shape == Shape::Mesh) return false;
+  return true;
 }
 
 AccuracyScene loadAccuracyScene(const std::string& spec) {

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "app/pair_cost.hpp"
 #include "core/scene.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/shading_model.hpp"
@@ -18,6 +19,9 @@ struct AccuracyVariant {
   GBufferPrecision gbuffer = GBufferPrecision::Lean;
 };
 
+// The variant as the per-pair cost measurement takes it.
+PairCostVariant pairCostVariant(const AccuracyVariant& v);
+
 // Every variant `pbr accuracy` knows, the reference-equivalent one ("exact") first.
 const std::vector<AccuracyVariant>& accuracyLadder();
 // A comma-separated list of ladder names, or "all"; throws std::invalid_argument for an unknown name.
@@ -27,6 +31,9 @@ struct AccuracyScene {
   std::string label;  // file-name safe: fresnel-floor:40 becomes fresnel-floor-40
   Scene scene;
 };
+// True when every object is a plane, sphere or box: the reference can then also ray-cast the exact shapes.
+bool hasOnlyAnalyticShapes(const Scene& scene);
+
 // A built-in scene name or file, or "fresnel-floor:DEG" for that view angle. The reference ignores textures,
 // so base colour textures are removed.
 AccuracyScene loadAccuracyScene(const std::string& spec);

@@ -7,10 +7,12 @@
 #include <iostream>
 #include <memory>
 
+#include "app/accuracy_variants.hpp"
 #include "app/args.hpp"
 #include "app/bench_progress.hpp"
 #include "app/bench_report.hpp"
 #include "app/bench_run.hpp"
+#include "app/pair_cost_report.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
 #include "app/trace_writer.hpp"
@@ -33,6 +35,11 @@ const std::vector<OptionSpec>& benchOptions() {
        "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds (default 60)"},
       {"--constant-density", "",
        "scale light radii by sqrt(1024/lights), holding lights x radius^2 (the light density) constant"},
+      {"--pair-cost", "LIST",
+       "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
+       "brute force, lights reaching every pixel, at --size"},
+      {"--pair-lights", "N", "lights of the --pair-cost frame (default 64)"},
+      {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn (default 7)"},
       {"--csv", "F", "write the results as CSV (provenance in leading # lines)"},
       {"--json", "F", "write the results, every timed frame included, as JSON"},
       {"--trace", "F", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
@@ -114,6 +121,42 @@ void finishOutput(std::ofstream* out, const Args& args, const std::string& optio
   std::printf("wrote %s\n", args.get(option, "").c_str());
 }
 
+PairCostSettings parsePairCostSettings(const Args& args) {
+  PairCostSettings s;
+  s.size = args.getSize("--size", s.size);
+  s.lights = args.getInt("--pair-lights", s.lights, 1, 1 << 16);
+  s.rounds = args.getInt("--rounds", s.rounds, 1, 10000);
+  return s;
+}
+
+int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform platform) {
+  PairCostReport report;
+  report.variants = selectVariants(args.get("--pair-cost", ""));
+  report.settings = settings;
+  const std::unique_ptr<std::ofstream> csv = openOutput(args, "--csv");
+  const std::unique_ptr<std::ofstream> json = openOutput(args, "--json");
+  const std::string timingRequest = args.get("--timing", "auto");
+  auto context = createHeadlessContext(platform);
+  report.settings.timing = chooseTimingMode(timingRequest, context->info().renderer);
+  report.provenance = collectProvenance(context->info(), report.settings.timing);
+  const ShaderLibrary shaders;
+  std::vector<PairCostVariant> variants;
+  for (const AccuracyVariant& v : report.variants) variants.push_back(pairCostVariant(v));
+  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  report.costs = measurePairCost(shaders, variants, report.settings, [&](int done, int total) {
+    if (terminal) std::fprintf(stderr, "\rpair cost: %d/%d frames timed", done, total);
+    if (terminal && done == total) std::fprintf(stderr, "\n");
+  });
+  checkGlError("measuring the cost per light-pixel pair");
+  report.provenance.set("load_average_end", loadAverage());
+  printPairCostTable(std::cout, report);
+  if (csv) writePairCostCsv(*csv, report);
+  if (json) writePairCostJson(*json, report);
+  finishOutput(csv.get(), args, "--csv");
+  finishOutput(json.get(), args, "--json");
+  return 0;
+}
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& argv) {
@@ -127,8 +170,18 @@ int runBench(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const BenchSettings settings = parseSettings(args);
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  if (args.has("--pair-cost")) {
+    for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density"}) {
+      if (args.has(sweepOnly)) throw UsageError(std::string(sweepOnly) + " belongs to the sweep, not --pair-cost");
+    }
+    chooseTimingMode(args.get("--timing", "auto"), "");
+    return runPairCost(args, parsePairCostSettings(args), platform);
+  }
+  for (const char* pairOnly : {"--pair-lights", "--rounds"}) {
+    if (args.has(pairOnly)) throw UsageError(std::string(pairOnly) + " belongs to --pair-cost");
+  }
+  const BenchSettings settings = parseSettings(args);
 
   // Every scene before any rendering, so that a bad scene or light count fails at once.
   std::vector<Scene> scenes;

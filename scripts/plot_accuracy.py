@@ -1,6 +1,9 @@
 #!/usr/bin/python3
-"""Draws the speed/accuracy front of `pbr accuracy`: one point per variant, lighting time (median over the
-scenes) against relative RMSE in linear HDR (mean over the scenes), the Pareto-optimal variants joined."""
+"""Draws the speed/accuracy chart of `pbr accuracy`: one point per variant, its cost per evaluated light-pixel pair
+(median, with the p10-p90 spread as error bars) against its relative RMSE in linear HDR against the CPU reference.
+Left: the first scene of the CSV (sphere-grid by default); right: the mean over every scene. The 'geometry' row
+(the tessellated meshes against the exact shapes, at the reference's own shading) is drawn as a dashed line: it is
+no variant's error, but the error a comparison with exact shapes would have added to every variant."""
 import argparse
 import csv
 import statistics
@@ -14,35 +17,71 @@ except ImportError:
     sys.exit("plot_accuracy.py: matplotlib is missing (Debian package python3-matplotlib)")
 
 
+def read(path):
+    meta, rows = {}, []
+    with open(path, newline="") as f:
+        lines = []
+        for line in f:
+            if line.startswith("# "):
+                key, _, value = line[2:].partition(": ")
+                meta[key] = value.strip()
+            else:
+                lines.append(line)
+    rows = list(csv.DictReader(lines))
+    return meta, rows
+
+
+def panel(ax, points, geometry, title, xlabel):
+    # A variant is on the front when no other is both cheaper and more accurate.
+    front = sorted(p for p in points if not any(q[0] <= p[0] and q[3] < p[3] for q in points if q is not p))
+    ax.errorbar([p[0] for p in points], [p[3] for p in points],
+                xerr=[[p[0] - p[1] for p in points], [p[2] - p[0] for p in points]],
+                fmt="o", color="tab:blue", ecolor="tab:gray", capsize=3, zorder=3)
+    ax.plot([p[0] for p in front], [p[3] for p in front], color="tab:orange", label="speed/accuracy front")
+    for cost, _, _, error, name in points:
+        ax.annotate(name, (cost, error), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    if geometry is not None and geometry > 0:
+        ax.axhline(geometry, color="tab:green", linestyle="--", linewidth=1,
+                   label="geometry: tessellated vs exact shapes")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("relative RMSE vs CPU reference (same triangles)")
+    ax.set_yscale("log")
+    ax.set_title(title, fontsize=10)
+    ax.grid(True, alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="best")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("csv")
     parser.add_argument("png")
     args = parser.parse_args()
 
-    rows = {}
-    with open(args.csv, newline="") as f:
-        for r in csv.DictReader(f):
-            rows.setdefault(r["variant"], []).append(r)
-    points = []
-    for name, rs in rows.items():
-        time = statistics.median(float(r["lighting_ms"]) for r in rs)
-        error = statistics.mean(float(r["relative_rmse"]) for r in rs)
-        points.append((time, error, name))
+    meta, rows = read(args.csv)
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    variants = list(dict.fromkeys(r["variant"] for r in rows if r["variant"] != "geometry"))
 
-    # A variant is on the front when no other is both faster and more accurate.
-    front = sorted(p for p in points if not any(q[0] <= p[0] and q[1] < p[1] for q in points if q is not p))
-    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=100)
-    ax.scatter([p[0] for p in points], [p[1] for p in points], color="tab:blue", zorder=3)
-    ax.plot([p[0] for p in front], [p[1] for p in front], color="tab:orange", label="speed/accuracy front")
-    for time, error, name in points:
-        ax.annotate(name, (time, error), textcoords="offset points", xytext=(4, 4), fontsize=8)
-    ax.set_xlabel("lighting pass, ms (median over scenes)")
-    ax.set_ylabel("relative RMSE vs CPU reference (mean over scenes)")
-    ax.set_yscale("log")
-    ax.set_title("pbr accuracy: %d scenes" % len(next(iter(rows.values()))), fontsize=10)
-    ax.grid(True, alpha=0.3)
-    ax.legend()
+    def points(scene_filter):
+        out = []
+        for name in variants:
+            rs = [r for r in rows if r["variant"] == name and scene_filter(r["scene"])]
+            out.append((float(rs[0]["ns_per_pair_median"]), float(rs[0]["ns_per_pair_p10"]),
+                        float(rs[0]["ns_per_pair_p90"]), statistics.mean(float(r["relative_rmse"]) for r in rs),
+                        name))
+        return out
+
+    def geometry(scene_filter):
+        rs = [float(r["relative_rmse"]) for r in rows if r["variant"] == "geometry" and scene_filter(r["scene"])]
+        return statistics.mean(rs) if rs else None
+
+    cpu = "llvmpipe" in meta.get("gl_renderer", "")
+    xlabel = "ns per evaluated light-pixel pair (p10-p90)" + (", CPU rasterizer (llvmpipe)" if cpu else "")
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5), dpi=100)
+    first = scenes[0]
+    panel(axes[0], points(lambda s: s == first), geometry(lambda s: s == first), first, xlabel)
+    panel(axes[1], points(lambda s: True), geometry(lambda s: True), "mean over %d scenes" % len(scenes), xlabel)
+    fig.suptitle("pbr accuracy: cost from %s; %s" % (meta.get("pair_cost_frame", "?"), meta.get("gl_renderer", "?")),
+                 fontsize=9)
     fig.tight_layout()
     fig.savefig(args.png)
 

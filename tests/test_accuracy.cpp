@@ -52,32 +52,41 @@ TEST_CASE("accuracy slices: the exact variant matches the reference BRDF and Ham
   CHECK(grazing > 5.0 * frontal);
 }
 
-TEST_CASE("pbr accuracy: one CSV row per variant with time and error, error maps and slices") {
+TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a geometry row, error maps, slices") {
   PBR_REQUIRE_GL();
   const test::TempDir dir;
-  const test::PbrRun run = test::runPbr(dir, {"accuracy", "--size", "32x18", "--frames", "1", "--scenes",
-                                              "fresnel-floor:40", "--out-dir", dir.file("acc"), "--no-chart",
-                                              "--slices", "--slice-size", "16x8"});
+  const test::PbrRun run = test::runPbr(dir, {"accuracy", "--size", "32x18", "--pair-size", "32x18", "--pair-lights",
+                                              "4", "--rounds", "3", "--scenes", "fresnel-floor:40", "--out-dir",
+                                              dir.file("acc"), "--no-chart", "--slices", "--slice-size", "16x8"});
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));
   std::string line;
+  do std::getline(csv, line);
+  while (line.rfind("# ", 0) == 0);
+  CHECK(line == "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
+                "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels");
   std::getline(csv, line);
-  CHECK(line.rfind("variant,scene,model,terms,hdr_format,gbuffer,lighting_ms,relative_rmse,", 0) == 0);
+  // A flat floor is tessellated exactly: its geometry error is zero.
+  CHECK(line.rfind("geometry,fresnel-floor-40,reference,", 0) == 0);
+  CHECK(line.find(",n/a,n/a,n/a,n/a,0,") != std::string::npos);
   size_t rows = 0;
   for (; std::getline(csv, line); ++rows) {
     CAPTURE(line);
-    // The terms column is quoted and holds commas: the numbers are the last six fields.
+    // The terms column is quoted and holds commas: the numbers follow it.
     std::vector<std::string> f;
     std::stringstream in(line.substr(line.rfind('"') + 2));
     for (std::string item; std::getline(in, item, ',');) f.push_back(item);
-    REQUIRE(f.size() == 8);  // hdr_format, gbuffer, lighting_ms, relative_rmse, mean, max, share, pixels
+    REQUIRE(f.size() == 11);  // hdr_format, gbuffer, ns median, p10, p90, fixed share, rmse, mean, max, share, pixels
     const std::string variant = line.substr(0, line.find(','));
     CHECK(variant == accuracyLadder()[rows].name);
-    CHECK(std::stod(f[2]) > 0.0);
-    const double rmse = std::stod(f[3]);
+    const double p10 = std::stod(f[3]), median = std::stod(f[2]), p90 = std::stod(f[4]);
+    CHECK(p10 > 0.0);
+    CHECK(p10 <= median);
+    CHECK(median <= p90);
+    const double rmse = std::stod(f[6]);
     CHECK(std::isfinite(rmse));
     CHECK(rmse >= 0.0);
-    CHECK(std::stoi(f[7]) > 0);
+    CHECK(std::stoi(f[10]) > 0);
     CHECK(std::filesystem::exists(dir.path() / "acc" / ("error-" + variant + "-fresnel-floor-40.png")));
   }
   CHECK(rows == accuracyLadder().size());

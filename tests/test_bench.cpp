@@ -291,3 +291,28 @@ TEST_CASE("bench: malformed options exit 2 with one line on stderr") {
     CHECK(run.out.empty());
   }
 }
+
+TEST_CASE("bench: --pair-cost measures finite, positive ns per light-pixel pair with ordered spreads in CSV and JSON") {
+  const TempDir dir;
+  const PbrRun run = pbr::test::runPbr(dir, {"bench", "--pair-cost", "default,blinn-phong", "--size", "64x36", "--pair-lights", "8",
+                               "--rounds", "3", "--csv", dir.file("pairs.csv"), "--json", dir.file("pairs.json")});
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.out.find("cost per light-pixel pair") != std::string::npos);
+  const nlohmann::json doc = nlohmann::json::parse(pbr::test::readFile(dir.file("pairs.json")));
+  CHECK(doc["schema"] == "pbr-pair-cost/1");
+  REQUIRE(doc["variants"].size() == 2);
+  for (const nlohmann::json& v : doc["variants"]) {
+    CAPTURE(v.dump());
+    const double p10 = v["ns_per_pair"]["p10"], med = v["ns_per_pair"]["median"], p90 = v["ns_per_pair"]["p90"];
+    CHECK(std::isfinite(p10));
+    CHECK(std::isfinite(p90));
+    CHECK(p10 > 0.0);
+    CHECK(p10 <= med);
+    CHECK(med <= p90);
+    CHECK(v["pairs_per_frame"] == 64 * 36 * 8);
+  }
+  const std::string csv = pbr::test::readFile(dir.file("pairs.csv"));
+  CHECK(csv.find("variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,"
+                 "ns_per_pair_p10,ns_per_pair_p90") != std::string::npos);
+  CHECK(csv.find("\nblinn-phong,blinn-phong,") != std::string::npos);
+}

@@ -1,0 +1,45 @@
+// The cost-per-pair fixture measures what it claims: every light-pixel pair of its frame runs the whole BRDF.
+#include <doctest/doctest.h>
+
+#include "app/pair_cost.hpp"
+#include "tests/gl_test_context.hpp"
+#include "tests/render_util.hpp"
+
+using namespace pbr;
+
+TEST_CASE("pair cost: in the fixture every pixel is surface and every light-pixel pair contributes") {
+  PBR_REQUIRE_GL();
+  const glm::ivec2 size{128, 72};
+  for (const ShadingModel model : {ShadingModel::Pbr, ShadingModel::BlinnPhong}) {
+    FrameOptions options;
+    options.model = model;
+    options.culling = Culling::None;
+    options.stats = true;
+    const test::RenderedFrame f = test::renderScene(pairCostScene(16), size, options);
+    CHECK(f.stats.pairs.evaluated == uint64_t(size.x) * size.y * 16);
+    CHECK(f.stats.pairs.contributing == f.stats.pairs.evaluated);
+  }
+}
+
+TEST_CASE("pair cost: the measurement returns finite positive spreads for every variant, in the order given") {
+  PBR_REQUIRE_GL();
+  const ShaderLibrary shaders;
+  std::vector<PairCostVariant> variants(2);
+  variants[0].name = "pbr";
+  variants[1].name = "blinn-phong";
+  variants[1].options.model = ShadingModel::BlinnPhong;
+  PairCostSettings settings;
+  settings.size = {48, 27};
+  settings.lights = 4;
+  settings.rounds = 3;
+  const std::vector<PairCost> costs = measurePairCost(shaders, variants, settings);
+  REQUIRE(costs.size() == 2);
+  for (size_t i = 0; i < costs.size(); ++i) {
+    CHECK(costs[i].name == variants[i].name);
+    CHECK(costs[i].pairs == 48u * 27u * 4u);
+    CHECK(costs[i].nsPerPair.p10 > 0.0);
+    CHECK(costs[i].nsPerPair.p10 <= costs[i].nsPerPair.median);
+    CHECK(costs[i].nsPerPair.median <= costs[i].nsPerPair.p90);
+    CHECK(costs[i].fixedShare > 0.0);
+  }
+}
