@@ -99,6 +99,7 @@ void main() {
   }
   gColor = imageLoad(radiance, p).rgb + shadeEnvironment(s);
   gContributing = 0u;
+  beginShading(s);
 #if CLUSTERED
   gHeader = headers[clusterIndex(uvec2(p), s.viewDepth)];
   gListed = listFits(gHeader);

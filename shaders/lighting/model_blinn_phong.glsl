@@ -4,19 +4,27 @@
 
 vec3 shadeAmbient(Surface s) { return 0.02 * (1.0 - s.metalness) * s.baseColor * s.occlusion; }
 
+// The pixel's material terms, the same for every light: computed once before the light loop, not per pair.
+vec3 gDiffuse;
+vec3 gSpecularColor;
+float gShininess;
+
+void beginShading(Surface s) {
+  gDiffuse = (1.0 - s.metalness) * s.baseColor;
+  gSpecularColor = f0FromMaterial(s.baseColor, s.metalness);
+  // Shininess matching the GGX lobe width: n = 2 / a^2 - 2.
+  float a = alphaFromRoughness(s.roughness);
+  gShininess = 2.0 / (a * a) - 2.0;
+}
+
 vec3 shadeLight(Surface s, PointLight light) {
   float d;
   vec3 L = directionToLight(s.position, s.normal, light, d);
   float NoL = dot(s.normal, L);
   float att = distanceAttenuation(d, light.positionRadius.w);
   if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
-  vec3 diffuse = (1.0 - s.metalness) * s.baseColor;
-  vec3 specularColor = f0FromMaterial(s.baseColor, s.metalness);
-  // Shininess matching the GGX lobe width: n = 2 / a^2 - 2.
-  float a = alphaFromRoughness(s.roughness);
-  float shininess = 2.0 / (a * a) - 2.0;
   float NoH = max(dot(s.normal, normalize(s.V + L)), 0.0);
-  return (diffuse * NoL + specularColor * pow(NoH, shininess)) * light.colorIntensity.rgb * att;
+  return (gDiffuse * NoL + gSpecularColor * pow(NoH, gShininess)) * light.colorIntensity.rgb * att;
 }
 
 vec3 finishShading(vec3 color) { return clamp(color, 0.0, 1.0); }

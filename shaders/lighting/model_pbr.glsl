@@ -8,6 +8,9 @@ vec3 shadeAmbient(Surface s) {
   return lighting.ambient.rgb * (diffuse + F0) * s.occlusion;
 }
 
+// Nothing per pixel is shared between lights yet: the BRDF takes the surface as it is.
+void beginShading(Surface s) {}
+
 vec3 shadeLight(Surface s, PointLight light) {
   float d;
   vec3 L = directionToLight(s.position, s.normal, light, d);
