@@ -27,7 +27,8 @@ const std::vector<OptionSpec>& accuracyOptions() {
        "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle (default sphere-grid,"
        "fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80); textures are removed"},
       {"--variants", "LIST", "comma-separated variants or all (default): exact, exact-rgba32f, default, hammon, "
-                             "separable, beckmann, lambert, burley, r11g11b10f, fast, blinn-phong"},
+                             "separable, beckmann, lambert, burley, schlick-sg, lambert-1-f-vh, study, "
+                             "r11g11b10f, gbuffer-float, fast, blinn-phong"},
       {"--size", "WxH", "frame size in pixels (default 160x90)"},
       {"--frames", "K", "warm frames timed per variant and scene, after 1 warm-up (default 3)"},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go (default out/accuracy)"},
@@ -101,7 +102,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");
   const bool slices = args.has("--slices");
   const glm::ivec2 sliceGrid = args.getSize("--slice-size", {90, 64});
-  const int threads = args.getInt("--threads", 0, 0, 1024);
+  reference::ReferenceOptions referenceOptions;
+  referenceOptions.threads = args.getInt("--threads", 0, 0, 1024);
   const std::string timing = args.get("--timing", "auto");
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");
@@ -123,7 +125,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   std::printf("%-14s %-18s %10s %10s %8s %6s %8s\n", "variant", "scene", "light ms", "rel RMSE", "mean lv", "max",
               ">2 lv");
   for (const AccuracyScene& s : scenes) {
-    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, {threads});
+    const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, referenceOptions);
     const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
     for (const AccuracyVariant& v : variants) {
       FrameOptions options;

@@ -3,6 +3,7 @@
 
 #include "core/image.hpp"
 #include "core/scene.hpp"
+#include "reference/reference_brdf.hpp"
 
 namespace pbr::reference {
 
@@ -22,6 +23,7 @@ struct ReferenceFrame {
 // How the reference renders; each field is one independent axis of what is compared.
 struct ReferenceOptions {
   int threads = 0;  // 0: every hardware thread
+  BrdfForms forms;  // the BRDF's terms, for lights and ambient alike
 };
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});
 
