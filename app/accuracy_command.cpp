@@ -26,7 +26,8 @@ const std::vector<OptionSpec>& accuracyOptions() {
        "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle (default sphere-grid,"
        "fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80); textures are removed"},
       {"--variants", "LIST", "comma-separated variants or all (default): exact, exact-rgba32f, default, hammon, "
-                             "separable, beckmann, lambert, burley, r11g11b10f, fast, blinn-phong"},
+                             "separable, beckmann, lambert, burley, schlick-sg, lambert-1-f-vh, study, "
+                             "r11g11b10f, gbuffer-float, fast, blinn-phong"},
       {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (default 128)"},
@@ -109,7 +110,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");
   const bool slices = args.has("--slices");
   const glm::ivec2 sliceGrid = args.getSize("--slice-size", {90, 64});
-  const int threads = args.getInt("--threads", 0, 0, 1024);
+  reference::ReferenceOptions referenceOptions;
+  referenceOptions.threads = args.getInt("--threads", 0, 0, 1024);
   const std::string timing = args.get("--timing", "auto");
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");
@@ -159,8 +161,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
                 m.meanLevels, m.maxLevels, m.shareOver2);
   };
   for (const AccuracyScene& s : scenes) {
-    reference::ReferenceOptions refOptions;
-    refOptions.threads = threads;
+    reference::ReferenceOptions refOptions = referenceOptions;
     const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
     const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
     // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.

@@ -1,7 +1,6 @@
 #include "app/brdf_slice.hpp"
 
 #include <cmath>
-#include <string>
 
 #include <glm/vec4.hpp>
 
@@ -11,11 +10,7 @@ namespace pbr {
 
 BrdfSlice computeBrdfSlice(const ShaderLibrary& shaders, const ShadingVariant& variant, const SliceMaterial& material,
                            int angles, int roughnesses) {
-  const ShaderDefines defines = {{"VISIBILITY", std::to_string(int(variant.visibility))},
-                                 {"NDF", std::to_string(int(variant.ndf))},
-                                 {"FRESNEL", std::to_string(int(variant.fresnel))},
-                                 {"DIFFUSE", std::to_string(int(variant.diffuse))}};
-  const Program program = shaders.compute("accuracy/brdf_slice.comp", defines);
+  const Program program = shaders.compute("accuracy/brdf_slice.comp", shaderDefines(variant));
   const size_t cells = size_t(angles) * roughnesses;
   Buffer values(cells * sizeof(glm::vec4), nullptr, 0);
   program.use();

@@ -6,6 +6,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
+#include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
 
 namespace pbr {
@@ -21,6 +22,10 @@ const std::vector<OptionSpec>& referenceOptions() {
       {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (required)"},
       {"--threads", "N", "worker threads (default: every hardware thread)"},
       {"--geometry", "G", "meshes (default: the triangles the GPU rasterizes) or analytic (the exact shapes)"},
+      {"--variant", "study|K=V,...", "BRDF forms: study (Hammon, Schlick, Lambert (1 - F(v.h))) or "
+                                     "visibility=exact|hammon|separable, ndf=ggx, fresnel=exact|schlick|schlick-sg, "
+                                     "diffuse=lambert-1-f|lambert-1-f-vh|lambert (default: the first of each, "
+                                     "visibility=exact,ndf=ggx,fresnel=exact,diffuse=lambert-1-f)"},
   };
   return specs;
 }
@@ -34,7 +39,8 @@ int runReference(const std::vector<std::string>& argv) {
     std::cout << Args::helpText("pbr reference --hdr F.exr [options]",
                                 "Ray-casts each pixel centre in double precision and evaluates the reference PBR "
                                 "model (GGX, exact height-correlated Smith, exact dielectric Fresnel, Schlick for "
-                                "metals, Lambert (1 - F)); writes the same linear radiance as 'pbr render --hdr'. "
+                                "metals, Lambert (1 - F(n.v))), or with --variant the approximations of a renderer "
+                                "variant; writes the same linear radiance as 'pbr render --hdr'. "
                                 "Textures are ignored: material factors only. The default mesh geometry "
                                 "makes the difference to 'pbr render' shading alone; against --geometry analytic "
                                 "it is the tessellation's error.",
@@ -50,16 +56,17 @@ int runReference(const std::vector<std::string>& argv) {
   reference::ReferenceOptions options;
   options.threads = args.getInt("--threads", 0, 0, 1024);
   options.geometry = reference::parseGeometry(args.get("--geometry", "meshes"));
+  options.forms = reference::parseBrdfForms(args.get("--variant", ""));
   const Scene scene = resolveScene(args.get("--scene", "sphere-grid"), params);
 
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeHdr(out, frame.radiance);
-  std::printf("reference: %s (%s geometry), %dx%d, %zu lights, %.2f s on %u threads (CPU, double precision)\n"
+  std::printf("reference: %s (%s geometry), %dx%d, %zu lights, %s, %.2f s on %u threads (CPU, double precision)\n"
               "wrote %s\n",
               scene.name.c_str(), options.geometry == reference::Geometry::Meshes ? "mesh" : "analytic", size.x,
-              size.y, scene.lights.size(), seconds,
+              size.y, scene.lights.size(), toString(options.forms).c_str(), seconds,
               options.threads > 0 ? unsigned(options.threads) : std::thread::hardware_concurrency(), out.c_str());
   return 0;
 }

@@ -21,8 +21,11 @@ const std::vector<OptionSpec>& renderOptions() {
        "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet) or scene file (.json, .gltf, .glb)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated), hammon or separable"},
-      {"--variant", "K=V,...", "PBR variant: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
-                               "fresnel=schlick|exact, diffuse=lambert-1-f|lambert|burley (default: the first of each)"},
+      {"--variant", "K=V,...|study", "PBR variant: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
+                                     "fresnel=schlick|exact|schlick-sg, diffuse=lambert-1-f|lambert|burley|"
+                                     "lambert-1-f-vh (default: the first of each); or, alone, study: the PBR model "
+                                     "of the Blinn-Phong-vs-PBR study, GGX, Hammon's visibility, Schlick Fresnel "
+                                     "and Lambert weighted by (1 - F(v.h))"},
       {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
       {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 28 bytes)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},

@@ -21,29 +21,27 @@ std::pair<const char*, const char*> imageFormat(unsigned radianceFormat) {
 
 }  // namespace
 
-const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
+ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
-  const ShadingVariant v = blinnPhong ? ShadingVariant{} : o.variant;
-  const bool ibl = o.ibl && !blinnPhong;
-  const int format = radianceFormat == GL_R11F_G11F_B10F ? 1 : radianceFormat == GL_RGBA32F ? 2 : 0;
-  const int key = (blinnPhong ? 1 : 0) | (clustered ? 2 : 0) | (o.stats ? 4 : 0) | int(v.visibility) << 3 |
-                  int(v.ndf) << 5 | int(v.fresnel) << 6 | int(v.diffuse) << 7 | format << 9 | (ibl ? 1 << 11 : 0);
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  const auto [qualifier, maximum] = imageFormat(radianceFormat);
+  ShaderDefines defines = shaderDefines(blinnPhong ? ShadingVariant{} : o.variant);
+  defines.insert(defines.begin(), {"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)});
+  defines.push_back({"HDR_IMAGE_FORMAT", qualifier});
+  defines.push_back({"HDR_MAX", maximum});
+  defines.push_back({"CLUSTERED", flag(clustered)});
+  defines.push_back({"LIGHTING_STATS", flag(o.stats)});
+  defines.push_back({"IBL", flag(o.ibl && !blinnPhong)});
+  return defines;
+}
+
+const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
+  const ShaderDefines defines = permutation(o, clustered, radianceFormat);
+  // The defines themselves are the key: two permutations share a program only if they compile the same source.
+  std::string key;
+  for (const ShaderDefine& d : defines) key += d.name + '=' + d.value + '\n';
   auto it = programs_.find(key);
-  if (it == programs_.end()) {
-    auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
-    const auto [qualifier, maximum] = imageFormat(radianceFormat);
-    const ShaderDefines defines = {{"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)},
-                                   {"VISIBILITY", std::to_string(int(v.visibility))},
-                                   {"NDF", std::to_string(int(v.ndf))},
-                                   {"FRESNEL", std::to_string(int(v.fresnel))},
-                                   {"DIFFUSE", std::to_string(int(v.diffuse))},
-                                   {"HDR_IMAGE_FORMAT", qualifier},
-                                   {"HDR_MAX", maximum},
-                                   {"CLUSTERED", flag(clustered)},
-                                   {"LIGHTING_STATS", flag(o.stats)},
-                                   {"IBL", flag(ibl)}};
-    it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
-  }
+  if (it == programs_.end()) it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
   return it->second;
 }
 

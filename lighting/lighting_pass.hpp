@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -60,11 +61,14 @@ class LightingPass {
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
 
+  // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
+  static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat);
+
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat);
 
   const ShaderLibrary& shaders_;
-  std::map<int, Program> programs_;
+  std::map<std::string, Program> programs_;  // by their defines
   UniformBuffer<LightingBlock> block_;
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;

@@ -1,6 +1,7 @@
 #include "lighting/shading_model.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 #include "core/gl.hpp"
@@ -15,67 +16,82 @@ ShadingModel parseShadingModel(const std::string& name) {
 
 const char* toString(ShadingModel model) { return model == ShadingModel::Pbr ? "pbr" : "blinn-phong"; }
 
-Visibility parseVisibility(const std::string& name) {
-  if (name == "exact") return Visibility::HeightCorrelated;
-  if (name == "hammon") return Visibility::Hammon;
-  if (name == "separable") return Visibility::Separable;
-  throw std::invalid_argument("unknown visibility term '" + name + "' (expected exact, hammon or separable)");
-}
-
-const char* toString(Visibility visibility) {
-  switch (visibility) {
-    case Visibility::HeightCorrelated: return "exact";
-    case Visibility::Hammon: return "hammon";
-    case Visibility::Separable: return "separable";
-  }
-  return "?";
-}
-
 namespace {
 
-Ndf parseNdf(const std::string& name) {
-  if (name == "ggx") return Ndf::Ggx;
-  if (name == "beckmann") return Ndf::Beckmann;
-  throw std::invalid_argument("unknown NDF '" + name + "' (expected ggx or beckmann)");
+// Each value of a term with the name --variant reads and the brdf.glsl define that selects it: shaders see
+// names only, so reordering an enum cannot change what is shaded.
+template <class Term>
+struct TermName {
+  Term value;
+  const char* name;
+  const char* define;
+};
+
+template <class Term, size_t N>
+using TermTable = TermName<Term>[N];
+
+constexpr TermName<Visibility> kVisibilities[] = {
+    {Visibility::HeightCorrelated, "exact", "VISIBILITY_EXACT"},
+    {Visibility::Hammon, "hammon", "VISIBILITY_HAMMON"},
+    {Visibility::Separable, "separable", "VISIBILITY_SEPARABLE"},
+};
+constexpr TermName<Ndf> kNdfs[] = {
+    {Ndf::Ggx, "ggx", "NDF_GGX"},
+    {Ndf::Beckmann, "beckmann", "NDF_BECKMANN"},
+};
+constexpr TermName<Fresnel> kFresnels[] = {
+    {Fresnel::Schlick, "schlick", "FRESNEL_SCHLICK"},
+    {Fresnel::Exact, "exact", "FRESNEL_EXACT"},
+    {Fresnel::SchlickSG, "schlick-sg", "FRESNEL_SCHLICK_SG"},
+};
+constexpr TermName<Diffuse> kDiffuses[] = {
+    {Diffuse::LambertOneMinusF, "lambert-1-f", "DIFFUSE_LAMBERT_1_F"},
+    {Diffuse::Lambert, "lambert", "DIFFUSE_LAMBERT"},
+    {Diffuse::Burley, "burley", "DIFFUSE_BURLEY"},
+    {Diffuse::LambertOneMinusFVh, "lambert-1-f-vh", "DIFFUSE_LAMBERT_1_F_VH"},
+};
+
+template <class Term, size_t N>
+const TermName<Term>& entry(const TermTable<Term, N>& table, Term value) {
+  for (const TermName<Term>& t : table)
+    if (t.value == value) return t;
+  throw std::logic_error("shading term without a name");
 }
 
-Fresnel parseFresnel(const std::string& name) {
-  if (name == "schlick") return Fresnel::Schlick;
-  if (name == "exact") return Fresnel::Exact;
-  throw std::invalid_argument("unknown Fresnel term '" + name + "' (expected schlick or exact)");
-}
-
-Diffuse parseDiffuse(const std::string& name) {
-  if (name == "lambert-1-f") return Diffuse::LambertOneMinusF;
-  if (name == "lambert") return Diffuse::Lambert;
-  if (name == "burley") return Diffuse::Burley;
-  throw std::invalid_argument("unknown diffuse term '" + name + "' (expected lambert-1-f, lambert or burley)");
-}
-
-const char* toString(Diffuse d) {
-  switch (d) {
-    case Diffuse::LambertOneMinusF: return "lambert-1-f";
-    case Diffuse::Lambert: return "lambert";
-    case Diffuse::Burley: return "burley";
+template <class Term, size_t N>
+Term parseTerm(const TermTable<Term, N>& table, const std::string& what, const std::string& name) {
+  std::string expected;
+  for (size_t i = 0; i < N; ++i) {
+    if (table[i].name == name) return table[i].value;
+    expected += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].name;
   }
-  return "?";
+  throw std::invalid_argument("unknown " + what + " '" + name + "' (expected " + expected + ")");
 }
+
+// The PBR model of the Blinn-Phong-vs-PBR study: Hammon's visibility, pow-5 Schlick, Lambert by (1 - F(v.h)).
+constexpr ShadingVariant kStudy{Visibility::Hammon, Ndf::Ggx, Fresnel::Schlick, Diffuse::LambertOneMinusFVh};
 
 }  // namespace
 
+Visibility parseVisibility(const std::string& name) { return parseTerm(kVisibilities, "visibility term", name); }
+
+const char* toString(Visibility visibility) { return entry(kVisibilities, visibility).name; }
+
 ShadingVariant parseShadingVariant(const std::string& text) {
+  if (text == "study") return kStudy;
   ShadingVariant v;
   size_t start = 0;
   while (start <= text.size() && !text.empty()) {
     const size_t end = std::min(text.find(',', start), text.size());
     const std::string item = text.substr(start, end - start);
     const size_t eq = item.find('=');
+    if (item == "study") throw std::invalid_argument("the variant 'study' is a whole model and takes no other keys");
     if (eq == std::string::npos) throw std::invalid_argument("variant item '" + item + "' is not key=value");
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
     if (key == "visibility" || key == "vis") v.visibility = parseVisibility(value);
-    else if (key == "ndf") v.ndf = parseNdf(value);
-    else if (key == "fresnel") v.fresnel = parseFresnel(value);
-    else if (key == "diffuse") v.diffuse = parseDiffuse(value);
+    else if (key == "ndf") v.ndf = parseTerm(kNdfs, "NDF", value);
+    else if (key == "fresnel") v.fresnel = parseTerm(kFresnels, "Fresnel term", value);
+    else if (key == "diffuse") v.diffuse = parseTerm(kDiffuses, "diffuse term", value);
     else throw std::invalid_argument("unknown variant key '" + key + "' (expected visibility, ndf, fresnel, diffuse)");
     start = end + 1;
   }
@@ -83,8 +99,24 @@ ShadingVariant parseShadingVariant(const std::string& text) {
 }
 
 std::string toString(const ShadingVariant& v) {
-  return std::string("visibility=") + toString(v.visibility) + ",ndf=" + (v.ndf == Ndf::Ggx ? "ggx" : "beckmann") +
-         ",fresnel=" + (v.fresnel == Fresnel::Schlick ? "schlick" : "exact") + ",diffuse=" + toString(v.diffuse);
+  return std::string("visibility=") + toString(v.visibility) + ",ndf=" + entry(kNdfs, v.ndf).name +
+         ",fresnel=" + entry(kFresnels, v.fresnel).name + ",diffuse=" + entry(kDiffuses, v.diffuse).name;
+}
+
+ShaderDefines shaderDefines(const ShadingVariant& v) {
+  return {{entry(kVisibilities, v.visibility).define, "1"},
+          {entry(kNdfs, v.ndf).define, "1"},
+          {entry(kFresnels, v.fresnel).define, "1"},
+          {entry(kDiffuses, v.diffuse).define, "1"}};
+}
+
+std::vector<std::string> variantDefineNames() {
+  std::vector<std::string> names;
+  for (const auto& t : kVisibilities) names.push_back(t.define);
+  for (const auto& t : kNdfs) names.push_back(t.define);
+  for (const auto& t : kFresnels) names.push_back(t.define);
+  for (const auto& t : kDiffuses) names.push_back(t.define);
+  return names;
 }
 
 HdrFormat parseHdrFormat(const std::string& name) {

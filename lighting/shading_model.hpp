@@ -1,5 +1,8 @@
 #pragma once
 #include <string>
+#include <vector>
+
+#include "core/shader_library.hpp"
 
 namespace pbr {
 
@@ -8,10 +11,11 @@ enum class ShadingModel { Pbr, BlinnPhong };
 // separable (uncorrelated) product G1(l) G1(v).
 enum class Visibility { HeightCorrelated, Hammon, Separable };
 enum class Ndf { Ggx, Beckmann };
-// Schlick everywhere, or the exact unpolarised term for the dielectric part (metals keep Schlick).
-enum class Fresnel { Schlick, Exact };
-// Lambert weighted by (1 - F(n.v)), plain Lambert, or Burley's.
-enum class Diffuse { LambertOneMinusF, Lambert, Burley };
+// Schlick everywhere, the exact unpolarised term for the dielectric part (metals keep Schlick), or Schlick with
+// the power replaced by a spherical Gaussian everywhere.
+enum class Fresnel { Schlick, Exact, SchlickSG };
+// Lambert weighted by (1 - F(n.v)), plain Lambert, Burley's, or Lambert weighted by (1 - F(v.h)).
+enum class Diffuse { LambertOneMinusF, Lambert, Burley, LambertOneMinusFVh };
 // Format of the HDR radiance target (the G-buffer's emission attachment and the lighting pass's image).
 enum class HdrFormat { Rgba16f, R11g11b10f, Rgba32f };
 
@@ -33,10 +37,16 @@ ShadingModel parseShadingModel(const std::string& name);  // "pbr" | "blinn-phon
 const char* toString(ShadingModel model);
 Visibility parseVisibility(const std::string& name);  // "exact" | "hammon" | "separable"
 const char* toString(Visibility visibility);
-// "key=value,..." with keys visibility (or vis), ndf (ggx|beckmann), fresnel (schlick|exact), diffuse
-// (lambert-1-f|lambert|burley); keys left out keep the defaults.
+// "key=value,..." with keys visibility (or vis), ndf (ggx|beckmann), fresnel (schlick|exact|schlick-sg), diffuse
+// (lambert-1-f|lambert|burley|lambert-1-f-vh); keys left out keep the defaults. Or, alone, "study": the PBR
+// model of the Blinn-Phong-vs-PBR study, visibility=hammon,ndf=ggx,fresnel=schlick,diffuse=lambert-1-f-vh.
 ShadingVariant parseShadingVariant(const std::string& text);
 std::string toString(const ShadingVariant& variant);  // every key, in the form parseShadingVariant reads
+// The defines that select the variant's terms in shaders/lighting/brdf.glsl: one per term, named for the chosen
+// value (VISIBILITY_HAMMON, FRESNEL_SCHLICK_SG, ...) and defined to 1.
+ShaderDefines shaderDefines(const ShadingVariant& variant);
+// Every define name shaderDefines can produce, for checking them against brdf.glsl.
+std::vector<std::string> variantDefineNames();
 HdrFormat parseHdrFormat(const std::string& name);  // "rgba16f" | "r11g11b10f" | "rgba32f"
 const char* toString(HdrFormat format);
 unsigned glInternalFormat(HdrFormat format);  // the GLenum

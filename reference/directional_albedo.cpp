@@ -11,7 +11,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, int samples) {
+dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms& forms, int samples) {
   const dvec3 N(0, 0, 1);
   const double cv = std::clamp(NoV, 1e-4, 1.0);
   const dvec3 V(std::sqrt(1.0 - cv * cv), 0.0, cv);
@@ -29,12 +29,12 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, int samples) {
       const dvec3 L = 2.0 * VoH * H - V;
       if (L.z > 0.0 && VoH > 0.0) {
         const double pdf = ggxD(cosH, alpha) * cosH / (4.0 * VoH);
-        specular += evaluateBrdf(N, V, L, m).specular * (L.z / pdf);
+        specular += evaluateBrdf(N, V, L, m, forms).specular * (L.z / pdf);
       }
       // Cosine-weighted directions: pdf(l) = n.l / pi.
       const double sinL = std::sqrt(u);
       const dvec3 Ld(sinL * std::cos(phi), sinL * std::sin(phi), std::sqrt(1.0 - u));
-      diffuse += evaluateBrdf(N, V, Ld, m).diffuse * kPi;
+      diffuse += evaluateBrdf(N, V, Ld, m, forms).diffuse * kPi;
     }
   }
   return (specular + diffuse) / (double(samples) * samples);

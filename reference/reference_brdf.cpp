@@ -26,6 +26,22 @@ double smithVisibilityExact(double NoV, double NoL, double alpha) {
   return 0.5 / (lv + ll);
 }
 
+// Hammon 2017, "PBR Diffuse Lighting for GGX+Smith": the height-correlated form, linear in alpha between its
+// limits 1 / (2 (n.l + n.v)) at alpha = 1 and 1 / (4 n.l n.v) at alpha = 0.
+double smithVisibilityHammon(double NoV, double NoL, double alpha) {
+  return 0.5 / ((1.0 - alpha) * 2.0 * NoL * NoV + alpha * (NoL + NoV));
+}
+
+// Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 72: GGX's Lambda(theta) =
+// (sqrt(1 + alpha^2 tan^2 theta) - 1) / 2, G1 = 1 / (1 + Lambda), uncorrelated G2 = G1(v) G1(l).
+double smithVisibilitySeparable(double NoV, double NoL, double alpha) {
+  auto g1 = [alpha](double c) {
+    const double tan2 = (1.0 - c * c) / (c * c);
+    return 1.0 / (1.0 + 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0));
+  };
+  return g1(NoV) * g1(NoL) / (4.0 * NoL * NoV);
+}
+
 // Cook & Torrance 1982, "A Reflectance Model for Computer Graphics", unpolarised dielectric Fresnel.
 double fresnelDielectric(double c, double eta) {
   const double g2 = eta * eta - 1.0 + c * c;
@@ -41,7 +57,16 @@ double iorFromF0(double f0) {
   return (1.0 + s) / (1.0 - s);
 }
 
-BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m) {
+// Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering".
+double fresnelSchlick(double c, double f0) { return f0 + (1.0 - f0) * std::pow(1.0 - c, 5.0); }
+
+// Karis 2013, "Real Shading in Unreal Engine 4": (1 - c)^5 replaced by 2^((-5.55473 c - 6.98316) c).
+double fresnelSchlickSG(double c, double f0) {
+  return f0 + (1.0 - f0) * std::exp2((-5.55473 * c - 6.98316) * c);
+}
+
+BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
+                       const BrdfForms& forms) {
   const dvec3 H = glm::normalize(V + L);
   const double NoV = std::max(glm::dot(N, V), 1e-4);
   const double NoL = std::max(glm::dot(N, L), 0.0);
@@ -49,14 +74,38 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
   const double r = std::max(m.roughness, kMinRoughness);
   const double alpha = r * r;
-  const double eta = iorFromF0(0.04);
-  // Metals: Schlick from their base colour; dielectrics: exact Fresnel; blended by metalness like F0 is.
+  const dvec3 f0 = (1.0 - m.metalness) * dvec3(0.04) + m.metalness * m.baseColor;
   auto fresnel = [&](double c) {
-    const dvec3 metal = m.baseColor + (dvec3(1.0) - m.baseColor) * std::pow(1.0 - c, 5.0);
-    return (1.0 - m.metalness) * dvec3(fresnelDielectric(c, eta)) + m.metalness * metal;
+    switch (forms.fresnel) {
+      case BrdfForms::Fresnel::Schlick:
+        return dvec3(fresnelSchlick(c, f0.x), fresnelSchlick(c, f0.y), fresnelSchlick(c, f0.z));
+      case BrdfForms::Fresnel::SchlickSG:
+        return dvec3(fresnelSchlickSG(c, f0.x), fresnelSchlickSG(c, f0.y), fresnelSchlickSG(c, f0.z));
+      case BrdfForms::Fresnel::ExactDielectric: break;
+    }
+    // Metals: Schlick from their base colour; dielectrics: exact Fresnel; blended by metalness like F0 is.
+    const dvec3 metal(fresnelSchlick(c, m.baseColor.x), fresnelSchlick(c, m.baseColor.y),
+                      fresnelSchlick(c, m.baseColor.z));
+    return (1.0 - m.metalness) * dvec3(fresnelDielectric(c, iorFromF0(0.04))) + m.metalness * metal;
   };
-  const dvec3 specular = ggxD(NoH, alpha) * smithVisibilityExact(NoV, NoL, alpha) * fresnel(VoH);
-  const dvec3 diffuse = (dvec3(1.0) - fresnel(NoV)) * (1.0 - m.metalness) * m.baseColor / kPi;
+  auto visibility = [&] {
+    switch (forms.visibility) {
+      case BrdfForms::Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, alpha);
+      case BrdfForms::Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, alpha);
+      case BrdfForms::Visibility::HeightCorrelated: break;
+    }
+    return smithVisibilityExact(NoV, NoL, alpha);
+  };
+  auto diffuseWeight = [&] {
+    switch (forms.diffuse) {
+      case BrdfForms::Diffuse::LambertOneMinusFVh: return dvec3(1.0) - fresnel(VoH);
+      case BrdfForms::Diffuse::Lambert: return dvec3(1.0);
+      case BrdfForms::Diffuse::LambertOneMinusFNv: break;
+    }
+    return dvec3(1.0) - fresnel(NoV);
+  };
+  const dvec3 specular = ggxD(NoH, alpha) * visibility() * fresnel(VoH);
+  const dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;
   return {diffuse, specular};
 }
 

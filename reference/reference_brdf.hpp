@@ -7,7 +7,8 @@ using glm::dvec3;
 
 // The reference PBR model in double precision, written from the equations and sharing no code with the shaders:
 // GGX NDF, exact height-correlated Smith visibility, exact unpolarised Fresnel for the dielectric part (index of
-// refraction from F0 = 0.04) and Schlick for the metallic part, Lambert weighted by (1 - F(n.v)).
+// refraction from F0 = 0.04) and Schlick for the metallic part, Lambert weighted by (1 - F(n.v)). BrdfForms swaps
+// single terms for the approximations a renderer variant makes, so that the reference can render that model too.
 struct ReferenceMaterial {
   dvec3 baseColor{0.8};
   double roughness = 0.5;  // perceptual; alpha = roughness^2 (clamped like the renderer, see kMinRoughness)
@@ -17,11 +18,33 @@ struct ReferenceMaterial {
 // The renderer clamps perceptual roughness to this; the reference does too, so both describe the same surface.
 constexpr double kMinRoughness = 0.045;
 
+// Which form of each term evaluateBrdf uses; the defaults are the reference model above. The NDF is always GGX.
+struct BrdfForms {
+  // Smith visibility G2 / (4 n.l n.v): exact height-correlated, Hammon's linear fit of it, or G1(l) G1(v).
+  enum class Visibility { HeightCorrelated, Hammon, Separable };
+  // Exact for the dielectric part with Schlick for metals, or for the whole F0 = mix(0.04, baseColor, metalness)
+  // Schlick's (1 - c)^5 or its spherical-Gaussian fit.
+  enum class Fresnel { ExactDielectric, Schlick, SchlickSG };
+  // Lambert weighted by (1 - F(n.v)), by (1 - F(v.h)), or unweighted; times (1 - metalness) in every case.
+  enum class Diffuse { LambertOneMinusFNv, LambertOneMinusFVh, Lambert };
+  Visibility visibility = Visibility::HeightCorrelated;
+  Fresnel fresnel = Fresnel::ExactDielectric;
+  Diffuse diffuse = Diffuse::LambertOneMinusFNv;
+
+  // The PBR model of the Blinn-Phong-vs-PBR study: Hammon, Schlick, Lambert by (1 - F(v.h)).
+  static BrdfForms study() { return {Visibility::Hammon, Fresnel::Schlick, Diffuse::LambertOneMinusFVh}; }
+};
+
 double ggxD(double NoH, double alpha);
 double smithVisibilityExact(double NoV, double NoL, double alpha);
+double smithVisibilityHammon(double NoV, double NoL, double alpha);
+double smithVisibilitySeparable(double NoV, double NoL, double alpha);
 // Unpolarised Fresnel reflectance of a dielectric of relative index `eta` at incidence cosine `c`.
 double fresnelDielectric(double c, double eta);
 double iorFromF0(double f0);
+// Schlick's reflectance at incidence cosine `c` for normal-incidence reflectance `f0`, and its spherical-Gaussian fit.
+double fresnelSchlick(double c, double f0);
+double fresnelSchlickSG(double c, double f0);
 
 struct BrdfLobes {
   dvec3 diffuse;
@@ -30,7 +53,8 @@ struct BrdfLobes {
 };
 
 // f_d and f_s for unit vectors N, V, L (n.l > 0; n.v is clamped to 1e-4 like the renderer does).
-BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m);
+BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
+                       const BrdfForms& forms = {});
 
 // Windowed inverse-square falloff, capped at 1.
 double attenuation(double d, double radius);

@@ -40,13 +40,14 @@ ReferenceMaterial toReference(const Material& m) {
 }
 
 // Directional albedo of each object's material over n.v, for the exact response to uniform ambient light.
-std::vector<std::vector<dvec3>> albedoTables(const Scene& scene, int threads) {
+std::vector<std::vector<dvec3>> albedoTables(const Scene& scene, const BrdfForms& forms, int threads) {
   std::vector<std::vector<dvec3>> tables(scene.objects.size());
   if (scene.ambient == glm::vec3(0.0f)) return tables;
   parallelFor(int(scene.objects.size()), threads, [&](int i) {
     for (int b = 0; b < kAlbedoBins; ++b) {
       const double nv = (b + 0.5) / kAlbedoBins;
-      tables[size_t(i)].push_back(directionalAlbedo(toReference(scene.objects[size_t(i)].material), nv, kAlbedoSamples));
+      const ReferenceMaterial m = toReference(scene.objects[size_t(i)].material);
+      tables[size_t(i)].push_back(directionalAlbedo(m, nv, forms, kAlbedoSamples));
     }
   });
   return tables;
@@ -88,7 +89,7 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
   const std::unique_ptr<const RayCaster> geometry =
       options.geometry == Geometry::Meshes ? std::unique_ptr<const RayCaster>(std::make_unique<MeshScene>(scene))
                                            : std::make_unique<AnalyticScene>(scene);
-  const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, threads);
+  const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, options.forms, threads);
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
   ReferenceFrame frame{{width, height, std::vector<float>(size_t(width) * height * 4, 0.0f)},
                        std::vector<int>(size_t(width) * height, -1)};
@@ -114,7 +115,7 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
           const double att = attenuation(d, light.radius);
           if (NoL <= 0.0 || att <= 0.0) continue;
           const double intensity = light.luminousPower / (4.0 * kPi);
-          color += evaluateBrdf(hit->normal, V, L, m).sum() * dvec3(light.color) * (intensity * att * NoL);
+          color += evaluateBrdf(hit->normal, V, L, m, options.forms).sum() * dvec3(light.color) * (intensity * att * NoL);
         }
       }
       if (hit) frame.objectIds[size_t(y) * width + x] = int(hit->object);

@@ -4,6 +4,7 @@
 
 #include "core/image.hpp"
 #include "core/scene.hpp"
+#include "reference/reference_brdf.hpp"
 
 namespace pbr::reference {
 
@@ -33,6 +34,7 @@ Geometry parseGeometry(const std::string& name);
 // How the reference renders; each field is one independent axis of what is compared.
 struct ReferenceOptions {
   int threads = 0;  // 0: every hardware thread
+  BrdfForms forms;  // the BRDF's terms, for lights and ambient alike
   Geometry geometry = Geometry::Meshes;
 };
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});

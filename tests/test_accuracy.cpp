@@ -114,3 +114,31 @@ TEST_CASE("pbr render --variant and --hdr-format select a permutation; unknown v
     CHECK(test::isOneLine(run.err));
   }
 }
+
+TEST_CASE("pbr render and pbr reference --variant study: the study's model, every key printed, alone only") {
+  PBR_REQUIRE_GL();
+  const test::TempDir dir;
+  const std::string study = "visibility=hammon,ndf=ggx,fresnel=schlick,diffuse=lambert-1-f-vh";
+  const test::PbrRun render = test::runPbr(dir, {"render", "--size", "32x18", "--scene", "fresnel-floor", "--variant",
+                                                 "study", "--hdr", dir.file("gpu.pfm")});
+  REQUIRE_MESSAGE(render.exitCode == 0, render.err);
+  CHECK(render.out.find(study) != std::string::npos);
+  const test::PbrRun reference = test::runPbr(dir, {"reference", "--size", "32x18", "--scene", "fresnel-floor",
+                                                    "--variant", "study", "--threads", "1", "--hdr", dir.file("ref.pfm")});
+  REQUIRE_MESSAGE(reference.exitCode == 0, reference.err);
+  CHECK(reference.out.find(study) != std::string::npos);
+  // The reference's own model is the default its help states.
+  const test::PbrRun help = test::runPbr(dir, {"reference", "--help"});
+  CHECK(help.out.find("visibility=exact,ndf=ggx,fresnel=exact,diffuse=lambert-1-f") != std::string::npos);
+  CHECK(test::runPbr(dir, {"render", "--help"}).out.find("study") != std::string::npos);
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"render", "--variant", "study,fresnel=exact"},
+                                              std::vector<std::string>{"reference", "--variant", "study,ndf=ggx"},
+                                              std::vector<std::string>{"reference", "--variant", "diffuse=burley"}}) {
+    std::vector<std::string> args = bad;
+    args.insert(args.end(), {"--size", "16x9", "--hdr", dir.file("bad.pfm")});
+    const test::PbrRun run = test::runPbr(dir, args);
+    CAPTURE(bad[2]);
+    CHECK(run.exitCode == 2);
+    CHECK(test::isOneLine(run.err));
+  }
+}

@@ -13,6 +13,7 @@
 #include <initializer_list>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -21,6 +22,8 @@
 #include "core/bindings.hpp"
 #include "core/shader_library.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "lighting/lighting_pass.hpp"
+#include "lighting/shading_model.hpp"
 #include "tests/gl_test_context.hpp"
 
 namespace fs = std::filesystem;
@@ -300,16 +303,28 @@ void checkComputeCompiles(const std::string& file, const DefineSets& permutation
 
 TEST_CASE("shader library: every program the renderer builds from the project's shaders compiles") {
   PBR_REQUIRE_GL();
-  const DefineSets lighting = flagCombinations({"SHADING_MODEL_BLINN_PHONG", "FRESNEL",
-                                                "CLUSTERED", "LIGHTING_STATS"});
-  checkComputeCompiles("lighting/deferred.comp", lighting);
-  // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
-  DefineSets ibl;
-  for (ShaderDefines defines : lighting) {
-    if (defines.front().value == "1") continue;  // SHADING_MODEL_BLINN_PHONG
-    defines.push_back({"IBL", "1"});
-    ibl.push_back(defines);
+  // Every model x culling x stats with the standard PBR terms, then every form of every PBR term once.
+  DefineSets lighting, ibl;
+  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+    for (const bool clustered : {false, true}) {
+      for (const bool stats : {false, true}) {
+        pbr::LightingOptions options;
+        options.model = model;
+        options.stats = stats;
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
+        options.ibl = model == pbr::ShadingModel::Pbr;
+        if (options.ibl) ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+      }
+    }
   }
+  for (const char* variant : {"visibility=hammon", "visibility=separable", "ndf=beckmann", "fresnel=exact",
+                              "fresnel=schlick-sg", "diffuse=lambert", "diffuse=burley", "diffuse=lambert-1-f-vh"}) {
+    pbr::LightingOptions options;
+    options.variant = pbr::parseShadingVariant(variant);
+    lighting.push_back(pbr::LightingPass::permutation(options, true, GL_RGBA16F));
+  }
+  checkComputeCompiles("lighting/deferred.comp", lighting);
   checkComputeCompiles("lighting/deferred.comp", ibl);
   checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS"}));
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
@@ -411,4 +426,37 @@ TEST_CASE("shader library: bindings.glsl and core/bindings.hpp hold the same bin
     CAPTURE(name);
     CHECK_MESSAGE(glsl.count(name) == 1, "C++ binding without a GLSL define");
   }
+}
+
+TEST_CASE("shader library: brdf.glsl tests exactly the defines that name the PBR variant's terms") {
+  // A define the C++ table names but brdf.glsl never tests would shade the default form without a word.
+  const std::string glsl = readText(fs::path(PBR_SOURCE_DIR) / "shaders/lighting/brdf.glsl");
+  std::set<std::string> tested;
+  const std::regex definedName(R"(defined\((\w+)\))");
+  for (std::sregex_iterator it(glsl.begin(), glsl.end(), definedName), end; it != end; ++it) tested.insert((*it)[1]);
+  const std::vector<std::string> names = pbr::variantDefineNames();
+  CHECK(std::set<std::string>(names.begin(), names.end()).size() == names.size());
+  CHECK(std::set<std::string>(names.begin(), names.end()) == tested);
+
+  // Every variant, one define per term, and no two variants share a permutation.
+  std::set<std::string> permutations;
+  size_t variants = 0;
+  for (const char* vis : {"exact", "hammon", "separable"}) {
+    for (const char* ndf : {"ggx", "beckmann"}) {
+      for (const char* fresnel : {"schlick", "exact", "schlick-sg"}) {
+        for (const char* diffuse : {"lambert-1-f", "lambert", "burley", "lambert-1-f-vh"}) {
+          const std::string text = std::string("visibility=") + vis + ",ndf=" + ndf + ",fresnel=" + fresnel +
+                                   ",diffuse=" + diffuse;
+          const ShaderDefines defines = pbr::shaderDefines(pbr::parseShadingVariant(text));
+          CAPTURE(text);
+          CHECK(defines.size() == 4);
+          pbr::LightingOptions options;
+          options.variant = pbr::parseShadingVariant(text);
+          permutations.insert(describeDefines(pbr::LightingPass::permutation(options, true, GL_RGBA16F)));
+          ++variants;
+        }
+      }
+    }
+  }
+  CHECK(permutations.size() == variants);
 }

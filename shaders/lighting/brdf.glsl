@@ -34,6 +34,9 @@ float V_SmithGGXCorrelatedFast(float NoV, float NoL, float a) {
 // Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering".
 vec3 F_Schlick(vec3 F0, float VoH) { return F0 + (1.0 - F0) * pow5(1.0 - VoH); }
 
+// Schlick's term with (1 - c)^5 fitted by a spherical Gaussian (Karis 2013, "Real Shading in Unreal Engine 4").
+vec3 F_SchlickSG(vec3 F0, float VoH) { return F0 + (1.0 - F0) * exp2((-5.55473 * VoH - 6.98316) * VoH); }
+
 // Separable (uncorrelated) Smith G1(l) G1(v) / (4 NoL NoV) for GGX (Heitz 2014, "Understanding the
 // Masking-Shadowing Function"), G1 = 2 NoX / (NoX + sqrt(a^2 + (1 - a^2) NoX^2)) with the 2s cancelled.
 float V_SmithGGXSeparable(float NoV, float NoL, float a) {
@@ -73,54 +76,71 @@ float burleyDiffuse(float NoV, float NoL, float LoH, float roughness) {
   return (1.0 + (f90 - 1.0) * pow5(1.0 - NoL)) * (1.0 + (f90 - 1.0) * pow5(1.0 - NoV));
 }
 
-// Permutations (LightingPass::program): VISIBILITY 0 exact height-correlated, 1 Hammon, 2 separable Smith;
-// NDF 0 GGX, 1 Beckmann; FRESNEL 0 Schlick, 1 exact for the dielectric part; DIFFUSE 0 Lambert (1 - F(n.v)),
-// 1 plain Lambert, 2 Burley.
-#ifndef VISIBILITY
-#define VISIBILITY 0
+// Permutations: each term is chosen by one define named for its form (lighting/shading_model.cpp holds the
+// names, LightingPass::permutation sets them). Without them, as the IBL shaders include this file, a term is the
+// renderer's standard form.
+#if !defined(VISIBILITY_EXACT) && !defined(VISIBILITY_HAMMON) && !defined(VISIBILITY_SEPARABLE)
+#define VISIBILITY_EXACT 1
 #endif
-#ifndef NDF
-#define NDF 0
+#if !defined(NDF_GGX) && !defined(NDF_BECKMANN)
+#define NDF_GGX 1
 #endif
-#ifndef FRESNEL
-#define FRESNEL 0
+#if !defined(FRESNEL_SCHLICK) && !defined(FRESNEL_EXACT) && !defined(FRESNEL_SCHLICK_SG)
+#define FRESNEL_SCHLICK 1
 #endif
-#ifndef DIFFUSE
-#define DIFFUSE 0
+#if !defined(DIFFUSE_LAMBERT_1_F) && !defined(DIFFUSE_LAMBERT_1_F_VH) && !defined(DIFFUSE_LAMBERT) && !defined(DIFFUSE_BURLEY)
+#define DIFFUSE_LAMBERT_1_F 1
 #endif
 
 float visibility(float NoV, float NoL, float a) {
-#if VISIBILITY == 1
+#if defined(VISIBILITY_HAMMON)
   return V_SmithGGXCorrelatedFast(NoV, NoL, a);
-#elif VISIBILITY == 2
+#elif defined(VISIBILITY_SEPARABLE)
   return V_SmithGGXSeparable(NoV, NoL, a);
-#else
+#elif defined(VISIBILITY_EXACT)
   return V_SmithGGXCorrelated(NoV, NoL, a);
 #endif
 }
 
 float distribution(float NoH, float sin2, float a) {
-#if NDF == 1
+#if defined(NDF_BECKMANN)
   return D_Beckmann(NoH, sin2, a);
-#else
+#elif defined(NDF_GGX)
   return D_GGX(NoH, sin2, a);
 #endif
 }
 
 // Metals take Schlick from their base colour; the dielectric part Schlick or the exact term with eta from 0.04,
-// blended by metalness as F0 is.
+// blended by metalness as F0 is. The spherical-Gaussian form replaces Schlick's power for the whole F0.
 vec3 fresnel(vec3 baseColor, float metalness, float c) {
-#if FRESNEL == 1
+#if defined(FRESNEL_EXACT)
   vec3 metal = baseColor + (1.0 - baseColor) * pow5(1.0 - c);
   return mix(vec3(F_Dielectric(c, iorFromF0(0.04))), metal, metalness);
-#else
+#elif defined(FRESNEL_SCHLICK_SG)
+  return F_SchlickSG(f0FromMaterial(baseColor, metalness), c);
+#elif defined(FRESNEL_SCHLICK)
   return F_Schlick(f0FromMaterial(baseColor, metalness), c);
 #endif
 }
 
-// Cook-Torrance specular plus a diffuse lobe weighted by (1 - metalness); returns f_d + f_s. The default diffuse
-// weight (1 - F(n.v)) takes Fresnel at the view angle, the share of light the specular lobe can take at most:
-// weighting by F(v.h) instead gives a white dielectric an albedo up to 1.7 at grazing views.
+// The diffuse lobe f_d, weighted by (1 - metalness). The default weight (1 - F(n.v)) takes Fresnel at the view
+// angle, the share of light the specular lobe can take at most. Weighting by (1 - F(v.h)) instead, as glTF's
+// sample viewer does, gives a white dielectric a directional albedo up to 1.84 at grazing views (roughness 0.05,
+// n.v 0.01; measured in tests/test_reference_brdf.cpp).
+vec3 diffuseLobe(vec3 baseColor, float metalness, float roughness, float NoV, float NoL, float VoH) {
+#if defined(DIFFUSE_LAMBERT_1_F_VH)
+  vec3 weight = 1.0 - fresnel(baseColor, metalness, VoH);
+#elif defined(DIFFUSE_LAMBERT)
+  vec3 weight = vec3(1.0);
+#elif defined(DIFFUSE_BURLEY)
+  vec3 weight = vec3(burleyDiffuse(NoV, NoL, VoH, max(roughness, MIN_ROUGHNESS)));
+#elif defined(DIFFUSE_LAMBERT_1_F)
+  vec3 weight = 1.0 - fresnel(baseColor, metalness, NoV);
+#endif
+  return weight * (1.0 - metalness) * baseColor / PI;
+}
+
+// Cook-Torrance specular plus the diffuse lobe; returns f_d + f_s.
 vec3 brdfCookTorrance(vec3 N, vec3 V, vec3 L, float NoV, vec3 baseColor, float roughness, float metalness) {
   vec3 H = normalize(V + L);
   vec3 NxH = cross(N, H);
@@ -129,12 +149,5 @@ vec3 brdfCookTorrance(vec3 N, vec3 V, vec3 L, float NoV, vec3 baseColor, float r
   float VoH = clamp(dot(V, H), 0.0, 1.0);
   float a = alphaFromRoughness(roughness);
   vec3 specular = distribution(NoH, dot(NxH, NxH), a) * visibility(NoV, NoL, a) * fresnel(baseColor, metalness, VoH);
-#if DIFFUSE == 1
-  vec3 diffuse = (1.0 - metalness) * baseColor / PI;
-#elif DIFFUSE == 2
-  vec3 diffuse = burleyDiffuse(NoV, NoL, VoH, max(roughness, MIN_ROUGHNESS)) * (1.0 - metalness) * baseColor / PI;
-#else
-  vec3 diffuse = (1.0 - fresnel(baseColor, metalness, NoV)) * (1.0 - metalness) * baseColor / PI;
-#endif
-  return diffuse + specular;
+  return diffuseLobe(baseColor, metalness, roughness, NoV, NoL, VoH) + specular;
 }
