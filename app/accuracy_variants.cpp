@@ -29,7 +29,7 @@ PairCostVariant pairCostVariant(const AccuracyVariant& v) {
 
 const std::vector<AccuracyVariant>& accuracyLadder() {
   static const std::vector<AccuracyVariant> ladder = {
-      // The reference model's terms: only float precision, tessellation and the ambient integral differ.
+      // The reference model's terms: only float precision and the ambient integral differ.
       pbrVariant("exact", "fresnel=exact"),
       pbrVariant("exact-rgba32f", "fresnel=exact", HdrFormat::Rgba32f),
       pbrVariant("exact-float", "fresnel=exact", HdrFormat::Rgba32f, GBufferPrecision::Float),

@@ -21,7 +21,7 @@ const Command kCommands[] = {
     {"bench", pbr::runBench, "sweep light counts, culling and shading models; per-pass times as table, CSV, JSON, trace"},
     {"experiment", pbr::runExperiment, "reproduce a Blinn-Phong vs PBR experiment: images, CSV and chart"},
     {"view", pbr::runView, "an interactive window: orbit camera, runtime model/culling/debug-view switches, live timings"},
-    {"reference", pbr::runReference, "CPU ray-cast reference frame in double precision (analytic shapes), EXR/PFM"},
+    {"reference", pbr::runReference, "CPU ray-cast reference frame in double precision (meshes or exact shapes), EXR/PFM"},
     {"accuracy", pbr::runAccuracy, "shading variants against the CPU reference: time vs error CSV, chart, error maps"},
 };
 

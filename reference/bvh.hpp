@@ -27,8 +27,8 @@ class Bvh {
 
   // Calls `hit(primitive, tMax)` for each primitive whose box the ray enters within [tMin, tMax], nearer subtrees
   // first; `hit` returns the distance of its hit if it is closer than tMax, else tMax, so farther boxes are skipped.
-  template <class Hit>
-  void traverse(const Ray& ray, double tMin, double tMax, Hit hit) const;
+  template <class Visit>
+  void traverse(const Ray& ray, double tMin, double tMax, Visit hit) const;
 
  private:
   static constexpr uint32_t kLeafSize = 4;
@@ -43,8 +43,8 @@ class Bvh {
   std::vector<uint32_t> order_;  // primitive indices, each leaf's contiguous
 };
 
-template <class Hit>
-void Bvh::traverse(const Ray& ray, double tMin, double tMax, Hit hit) const {
+template <class Visit>
+void Bvh::traverse(const Ray& ray, double tMin, double tMax, Visit hit) const {
   if (nodes_.empty()) return;
   const dvec3 inverse = 1.0 / ray.direction;
   auto entry = [&](uint32_t node) {
@@ -56,7 +56,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double tMax, Hit hit) const {
   stack[top++] = 0;
   while (top > 0) {
     const uint32_t index = stack[--top];
-    if (entry(index) == std::numeric_limits<double>::infinity()) continue;  // tMax shrank since it was pushed
+    if (entry(index) == std::numeric_limits<double>::infinity()) continue;  // missed, or behind a hit found since
     const Node& node = nodes_[index];
     if (node.count > 0) {
       for (uint32_t i = node.first; i < node.first + node.count; ++i) tMax = hit(order_[i], tMax);
