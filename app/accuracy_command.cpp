@@ -193,7 +193,9 @@ int runAccuracy(const std::vector<std::string>& argv) {
   std::printf("wrote %s and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(), dir.string().c_str());
   if (slices) writeSlices(shaders, variants, sliceGrid, dir);
   checkGlError("accuracy");
-  if (!args.has("--no-chart") && !costs.empty()) {
+  if (!args.has("--no-chart") && costs.empty()) {
+    std::fprintf(stderr, "pbr accuracy: chart skipped (its x axis is the cost per pair, not measured with --no-cost)\n");
+  } else if (!args.has("--no-chart")) {
     const std::string png = (dir / "accuracy.png").string();
     // The CSV is the result; a machine without matplotlib still gets it.
     if (runChartScript("plot_accuracy.py", {csvPath, png})) std::printf("wrote %s\n", png.c_str());

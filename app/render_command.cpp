@@ -27,7 +27,7 @@ const std::vector<OptionSpec>& renderOptions() {
                                      "of the Blinn-Phong-vs-PBR study, GGX, Hammon's visibility, Schlick Fresnel "
                                      "and Lambert weighted by (1 - F(v.h))"},
       {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
-      {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 28 bytes)"},
+      {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 44 bytes)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},

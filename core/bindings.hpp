@@ -25,4 +25,6 @@ constexpr unsigned kEmissiveMapUnit = 4;
 constexpr unsigned kIblUbo = 5;
 constexpr unsigned kIblSpecularUnit = 8;
 constexpr unsigned kIblDfgUnit = 9;
+// The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
+constexpr unsigned kAmbientAlbedoUnit = 10;
 }  // namespace pbr::binding

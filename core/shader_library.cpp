@@ -8,6 +8,12 @@
 #include <sstream>
 
 namespace pbr {
+
+std::string definesKey(const ShaderDefines& defines) {
+  std::string key;
+  for (const ShaderDefine& d : defines) key += d.name + '=' + d.value + '\n';
+  return key;
+}
 namespace fs = std::filesystem;
 
 namespace {

@@ -13,6 +13,8 @@ struct ShaderDefine {
   std::string value;
 };
 using ShaderDefines = std::vector<ShaderDefine>;
+// "NAME=value\n" for each define in order: equal keys compile the same source, so it keys program caches.
+std::string definesKey(const ShaderDefines& defines);
 
 // Compile and link failures, with every log line mapped back to "file:line: message" of the original file.
 class ShaderError : public std::runtime_error {

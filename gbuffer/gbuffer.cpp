@@ -18,9 +18,9 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p)
     : width(w),
       height(h),
       precision(p),
-      baseColor(p == GBufferPrecision::Lean ? GL_SRGB8_ALPHA8 : GL_RGBA16F, w, h),
+      baseColor(p == GBufferPrecision::Lean ? GL_SRGB8_ALPHA8 : GL_RGBA32F, w, h),
       normal(p == GBufferPrecision::Lean ? GL_RG16 : GL_RG32F, w, h),
-      material(p == GBufferPrecision::Lean ? GL_RGBA8 : GL_RGBA16F, w, h),
+      material(p == GBufferPrecision::Lean ? GL_RGBA8 : GL_RGBA32F, w, h),
       depth(GL_DEPTH_COMPONENT32F, w, h) {
   const GLenum f = radiance.format();
   if (radiance.width() != w || radiance.height() != h ||

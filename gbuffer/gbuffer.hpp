@@ -6,8 +6,8 @@
 
 namespace pbr {
 
-// Lean: the 16-byte layout of gbuffer/README.md. Float: the same channels unquantised (RGBA16F base colour and
-// material, RG32F octahedral normal; 28 bytes per pixel), to measure what the lean layout's quantisation costs.
+// Lean: the 16-byte layout of gbuffer/README.md. Float: the same channels unquantised (RGBA32F base colour and
+// material, RG32F octahedral normal; 44 bytes per pixel), to measure what the lean layout's quantisation costs.
 enum class GBufferPrecision { Lean, Float };
 GBufferPrecision parseGBufferPrecision(const std::string& name);  // "lean" | "float"
 const char* toString(GBufferPrecision precision);
@@ -19,7 +19,7 @@ struct GBuffer {
   GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean);
 
   static constexpr int kBytesPerPixel = 4 + 4 + 4 + 4;
-  static constexpr int kFloatBytesPerPixel = 8 + 8 + 8 + 4;
+  static constexpr int kFloatBytesPerPixel = 16 + 8 + 16 + 4;
   size_t bytes() const {
     return static_cast<size_t>(width) * static_cast<size_t>(height) *
            (precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel);

@@ -38,8 +38,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
   const ShaderDefines defines = permutation(o, clustered, radianceFormat);
   // The defines themselves are the key: two permutations share a program only if they compile the same source.
-  std::string key;
-  for (const ShaderDefine& d : defines) key += d.name + '=' + d.value + '\n';
+  const std::string key = definesKey(defines);
   auto it = programs_.find(key);
   if (it == programs_.end()) it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
   return it->second;
@@ -48,6 +47,10 @@ const Program& LightingPass::program(const LightingOptions& o, bool clustered, u
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
                           const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
                           const LightClusters* clusters) {
+  // Made (on first use) before anything is bound for this pass: making a table dispatches a pass of its own.
+  const Texture* ambient = options.model == ShadingModel::Pbr && !options.ibl
+                               ? &ambientAlbedo_.table(shaderDefines(options.variant))
+                               : nullptr;
   const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
@@ -56,6 +59,10 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   block_.bind(binding::kLightingUbo);
   lights.bind();
   if (clusters) clusters->bindForLighting();
+  if (ambient) {
+    glBindTextureUnit(binding::kAmbientAlbedoUnit, ambient->id());
+    glBindSampler(binding::kAmbientAlbedoUnit, ambientSampler_.id());
+  }
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
     if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) pairStats_ = std::make_unique<Buffer>(pairGroups_ * 8, nullptr, 0);

@@ -10,6 +10,7 @@
 #include "core/frame_block.hpp"
 #include "core/shader_library.hpp"
 #include "core/uniform_buffer.hpp"
+#include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/light_clusters.hpp"
 #include "lighting/shading_model.hpp"
@@ -50,7 +51,8 @@ struct PairCounts {
 // IBL), compiled on first use.
 class LightingPass {
  public:
-  explicit LightingPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
+  explicit LightingPass(const ShaderLibrary& shaders)
+      : shaders_(shaders), ambientAlbedo_(shaders), ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
   // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
@@ -70,6 +72,8 @@ class LightingPass {
   const ShaderLibrary& shaders_;
   std::map<std::string, Program> programs_;  // by their defines
   UniformBuffer<LightingBlock> block_;
+  AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
+  Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;
 };

@@ -8,8 +8,30 @@
 namespace pbr::reference {
 
 namespace {
+
 constexpr double kPi = 3.14159265358979323846;
+
+// Smith's GGX masking G1(v) = 2 n.v / (n.v + sqrt(a^2 + (1 - a^2) n.v^2)) (Heitz 2014).
+double smithG1(double NoV, double alpha) {
+  const double a2 = alpha * alpha;
+  return 2.0 * NoV / (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV));
 }
+
+// Heitz 2018, listing 1: stretch V to the hemisphere configuration, sample the projected disk, unstretch.
+dvec3 sampleVisibleNormal(const dvec3& V, double alpha, double u1, double u2) {
+  const dvec3 Vh = glm::normalize(dvec3(alpha * V.x, alpha * V.y, V.z));
+  const double lensq = Vh.x * Vh.x + Vh.y * Vh.y;
+  const dvec3 T1 = lensq > 0.0 ? dvec3(-Vh.y, Vh.x, 0.0) / std::sqrt(lensq) : dvec3(1.0, 0.0, 0.0);
+  const dvec3 T2 = glm::cross(Vh, T1);
+  const double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
+  const double t1 = r * std::cos(phi);
+  const double s = 0.5 * (1.0 + Vh.z);
+  const double t2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - t1 * t1)) + s * r * std::sin(phi);
+  const dvec3 Nh = t1 * T1 + t2 * T2 + std::sqrt(std::max(0.0, 1.0 - t1 * t1 - t2 * t2)) * Vh;
+  return glm::normalize(dvec3(alpha * Nh.x, alpha * Nh.y, std::max(0.0, Nh.z)));
+}
+
+}  // namespace
 
 dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms& forms, int samples) {
   const dvec3 N(0, 0, 1);
@@ -21,14 +43,13 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
   for (int i = 0; i < samples; ++i) {
     for (int j = 0; j < samples; ++j) {
       const double u = (i + 0.5) / samples, phi = 2.0 * kPi * (j + 0.5) / samples;
-      // GGX half vector: tan^2(theta_h) = alpha^2 u / (1 - u), so pdf(h) = D(h) n.h and pdf(l) = pdf(h) / (4 v.h).
-      const double cosH = std::sqrt((1.0 - u) / (1.0 + (alpha * alpha - 1.0) * u));
-      const double sinH = std::sqrt(std::max(0.0, 1.0 - cosH * cosH));
-      const dvec3 H(sinH * std::cos(phi), sinH * std::sin(phi), cosH);
+      // A GGX normal visible from V (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"), so that
+      // pdf(l) = D(h) G1(v) / (4 n.v): at grazing views D-sampling wastes most samples on normals facing away.
+      const dvec3 H = sampleVisibleNormal(V, alpha, u, (j + 0.5) / samples);
       const double VoH = glm::dot(V, H);
       const dvec3 L = 2.0 * VoH * H - V;
       if (L.z > 0.0 && VoH > 0.0) {
-        const double pdf = ggxD(cosH, alpha) * cosH / (4.0 * VoH);
+        const double pdf = ggxD(H.z, alpha) * smithG1(cv, alpha) / (4.0 * cv);
         specular += evaluateBrdf(N, V, L, m, forms).specular * (L.z / pdf);
       }
       // Cosine-weighted directions: pdf(l) = n.l / pi.

@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "reference/directional_albedo.hpp"
+
 namespace pbr::reference {
 
 namespace {
@@ -42,7 +44,7 @@ std::optional<dvec3> castRay(const Scene& scene, int width, int height, double p
 }
 
 // Windowed inverse-square falloff (Karis 2013), capped at 1; R <= 0 reaches nothing (the window's limit).
-double attenuation(double d, double radius) {
+double windowedAttenuation(double d, double radius) {
   if (!(radius > 0.0)) return 0.0;
   const double x4 = std::pow(d / radius, 4.0);
   const double window = std::clamp(1.0 - x4, 0.0, 1.0);
@@ -51,10 +53,37 @@ double attenuation(double d, double radius) {
 
 dvec3 f0Of(const Material& m) { return glm::mix(dvec3(0.04), m.baseColor, m.metalness); }
 
-dvec3 shadePbr(const Scene& scene, const dvec3& p, const dvec3& n, const dvec3& v, SmithVisibility visibility) {
+// The plane's one material's directional albedo over n.v, tabulated once per frame: per pixel it would cost
+// seconds. 256 bins, linear between them, of the CPU reference library's integral.
+class AlbedoTable {
+ public:
+  AlbedoTable(const Material& m, SmithVisibility visibility) {
+    BrdfForms forms;
+    forms.fresnel = BrdfForms::Fresnel::Schlick;
+    forms.visibility = visibility == SmithVisibility::HeightCorrelated ? BrdfForms::Visibility::HeightCorrelated
+                                                                       : BrdfForms::Visibility::Hammon;
+    for (int i = 0; i < kBins; ++i) {
+      values_[i] = directionalAlbedo({m.baseColor, m.roughness, m.metalness}, std::max(double(i) / (kBins - 1), 1e-4),
+                                     forms, 48);
+    }
+  }
+  dvec3 operator()(double nv) const {
+    const double x = std::clamp(nv, 0.0, 1.0) * (kBins - 1);
+    const int i = std::min(int(x), kBins - 2);
+    return glm::mix(values_[i], values_[i + 1], x - i);
+  }
+
+ private:
+  static constexpr int kBins = 256;
+  dvec3 values_[kBins];
+};
+
+dvec3 shadePbr(const Scene& scene, const AlbedoTable& albedo, const dvec3& p, const dvec3& n, const dvec3& v,
+               SmithVisibility visibility) {
   const Material& m = scene.material;
   const dvec3 f0 = f0Of(m);
-  dvec3 lo = scene.ambient * ((1.0 - m.metalness) * m.baseColor * (dvec3(1.0) - f0) + f0);
+  // Uniform ambient radiance times the BRDF's directional albedo.
+  dvec3 lo = scene.ambient * albedo(std::max(glm::dot(n, v), 1e-4));
   const double a = m.roughness * m.roughness;
   const double a2 = a * a;
   const double nv = glm::dot(n, v);
@@ -77,7 +106,7 @@ dvec3 shadePbr(const Scene& scene, const dvec3& p, const dvec3& n, const dvec3& 
     const dvec3 fView = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - nv, 5.0);
     const dvec3 fd = (dvec3(1.0) - fView) * (1.0 - m.metalness) * m.baseColor / kPi;
     const double intensity = light.luminousPower / (4.0 * kPi);
-    lo += (fd + fs) * light.color * intensity * attenuation(d, light.radius) * nl;
+    lo += (fd + fs) * light.color * intensity * windowedAttenuation(d, light.radius) * nl;
   }
   return lo;
 }
@@ -96,7 +125,7 @@ dvec3 shadeBlinnPhong(const Scene& scene, const dvec3& p, const dvec3& n, const 
     const double nl = glm::dot(n, l);
     if (nl <= 0.0) continue;
     const double nh = std::max(glm::dot(n, glm::normalize(v + l)), 0.0);
-    lo += (diffuse * nl + specular * std::pow(nh, shininess)) * light.color * attenuation(d, light.radius);
+    lo += (diffuse * nl + specular * std::pow(nh, shininess)) * light.color * windowedAttenuation(d, light.radius);
   }
   return glm::clamp(lo, dvec3(0.0), dvec3(1.0));
 }
@@ -105,6 +134,7 @@ dvec3 shadeBlinnPhong(const Scene& scene, const dvec3& p, const dvec3& n, const 
 
 Image render(const Scene& scene, int width, int height, Model model, SmithVisibility visibility) {
   Image image{width, height, std::vector<Pixel>(static_cast<size_t>(width) * height)};
+  const AlbedoTable albedo(scene.material, visibility);
   // Rasterisers snap vertices to a 1/256-pixel grid or finer: rays 1/32 pixel away decide the coverage robustly.
   const double probe = 1.0 / 32.0;
   const double offsets[4][2] = {{-probe, 0.0}, {probe, 0.0}, {0.0, -probe}, {0.0, probe}};
@@ -120,7 +150,7 @@ Image render(const Scene& scene, int width, int height, Model model, SmithVisibi
       }
       if (!hit) continue;
       const dvec3 v = glm::normalize(scene.camera.position - *hit);
-      out.radiance = model == Model::Pbr ? shadePbr(scene, *hit, scene.plane.normal, v, visibility)
+      out.radiance = model == Model::Pbr ? shadePbr(scene, albedo, *hit, scene.plane.normal, v, visibility)
                                          : shadeBlinnPhong(scene, *hit, scene.plane.normal, v);
     }
   }

@@ -37,7 +37,7 @@ TEST_CASE("G-buffer precision: bytes per pixel of both layouts") {
   PBR_REQUIRE_GL();
   Texture radiance(GL_RGBA16F, 10, 10);
   CHECK(GBuffer(10, 10, radiance).bytes() == 100 * 16);
-  CHECK(GBuffer(10, 10, radiance, GBufferPrecision::Float).bytes() == 100 * 28);
+  CHECK(GBuffer(10, 10, radiance, GBufferPrecision::Float).bytes() == 100 * 44);
   CHECK(std::string(toString(parseGBufferPrecision("float"))) == "float");
   CHECK_THROWS_AS(parseGBufferPrecision("half"), std::invalid_argument);
 }

@@ -94,12 +94,6 @@ ErrorMetrics gpuError(const Scene& scene) {
   return gpuError(shaders, gpuFrame(shaders, scene), scene);
 }
 
-// The two half floats either side of v > 0 (10 mantissa bits): a GPU stores v as one of them.
-std::pair<float, float> halfNeighbours(float v) {
-  const float step = std::exp2(std::floor(std::log2(v)) - 10.0f);
-  return {std::floor(v / step) * step, std::ceil(v / step) * step};
-}
-
 }  // namespace
 
 TEST_CASE("reference meshes: the GPU's exact model at float precision matches the mesh reference on spheres") {
@@ -113,37 +107,29 @@ TEST_CASE("reference meshes: the GPU's exact model at float precision matches th
 TEST_CASE("reference meshes: the GPU's exact model at float precision matches the mesh reference on sphere-grid") {
   PBR_REQUIRE_GL();
   AccuracyScene grid = loadAccuracyScene("sphere-grid");
+  REQUIRE(grid.scene.ambient != glm::vec3(0.0f));
   const ErrorMetrics ambient = gpuError(grid.scene);
   grid.scene.ambient = glm::vec3(0.0f);
   const ErrorMetrics direct = gpuError(grid.scene);
-  // The GPU's ambient term, albedo (1 - F0) + F0 instead of the directional albedo, is the only model difference.
+  // The ambient term is the BRDF's tabulated directional albedo, so ambient light adds little error of its own.
   MESSAGE("sphere-grid: relative RMSE " << direct.relativeRmse << " without ambient light, " << ambient.relativeRmse
                                         << " with the scene's");
   CHECK(direct.pixels > 1000);
   CHECK(direct.relativeRmse < 1e-3);
+  CHECK(ambient.relativeRmse < 1e-3);
 }
 
-TEST_CASE("reference meshes: on fresnel-floor the float G-buffer's half-float roughness is all that remains") {
+TEST_CASE("reference meshes: on fresnel-floor at every angle the float path matches the mesh reference") {
   PBR_REQUIRE_GL();
   const ShaderLibrary shaders;
   for (const char* spec : {"fresnel-floor:0", "fresnel-floor:40", "fresnel-floor:65", "fresnel-floor:80"}) {
     CAPTURE(spec);
     const AccuracyScene floor = loadAccuracyScene(spec);
-    const RenderedFrames gpu = gpuFrame(shaders, floor.scene);
-    const ErrorMetrics e = gpuError(shaders, gpu, floor.scene);
-    // The float layout keeps material channels in RGBA16F: roughness 0.3 is stored as a neighbouring half float
-    // (0.2998 or 0.30005), which sharpens or widens the highlight, the more so at grazing views. Given that
-    // roughness the reference leaves float arithmetic alone.
-    double stored = 1.0;
-    for (const float roughness : {halfNeighbours(0.3f).first, halfNeighbours(0.3f).second}) {
-      Scene s = floor.scene;
-      s.objects.at(0).material.roughness = roughness;
-      stored = std::min(stored, gpuError(shaders, gpu, s).relativeRmse);
-    }
-    MESSAGE(floor.label << ": relative RMSE " << e.relativeRmse << ", " << stored << " at the stored roughness");
+    const ErrorMetrics e = gpuError(shaders, gpuFrame(shaders, floor.scene), floor.scene);
+    // Float arithmetic is all that separates them: the float layout stores material channels in 32-bit floats.
+    MESSAGE(floor.label << ": relative RMSE " << e.relativeRmse);
     CHECK(e.pixels > 5000);
-    CHECK(e.relativeRmse < (floor.label == "fresnel-floor-0" || floor.label == "fresnel-floor-40" ? 1e-3 : 1.5e-3));
-    CHECK(stored < 2e-5);
+    CHECK(e.relativeRmse < 1e-4);
   }
 }
 

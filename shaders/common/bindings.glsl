@@ -23,3 +23,5 @@
 #define IBL_UBO 5
 #define IBL_SPECULAR_UNIT 8
 #define IBL_DFG_UNIT 9
+// The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
+#define AMBIENT_ALBEDO_UNIT 10

@@ -1,0 +1,26 @@
+#pragma once
+#include <map>
+#include <string>
+
+#include "core/shader_library.hpp"
+
+namespace pbr {
+
+// Tables of the directional albedo of each PBR variant's BRDF (shaders/lighting/ambient_albedo.comp), with which
+// the lighting pass reflects uniform ambient light exactly as the BRDF would rather than by a closed-form guess.
+// One RGBA32F table of kSize x kSize per variant, made on first use and kept.
+class AmbientAlbedoTables {
+ public:
+  static constexpr int kSize = 64;
+  static constexpr int kSamples = 2048;  // per texel: known to about 1e-3 of the albedo
+
+  explicit AmbientAlbedoTables(const ShaderLibrary& shaders) : shaders_(shaders) {}
+  // The table for the variant whose brdf.glsl defines these are.
+  const Texture& table(const ShaderDefines& variantDefines);
+
+ private:
+  const ShaderLibrary& shaders_;
+  std::map<std::string, Texture> tables_;  // by their defines
+};
+
+}  // namespace pbr
