@@ -20,14 +20,18 @@ namespace pbr {
 
 namespace {
 
+std::string ladderNames() {
+  std::string names;
+  for (const AccuracyVariant& v : accuracyLadder()) names += (names.empty() ? "" : ", ") + v.name;
+  return names;
+}
+
 const std::vector<OptionSpec>& accuracyOptions() {
   static const std::vector<OptionSpec> specs = {
       {"--scenes", "LIST",
        "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle (default sphere-grid,"
        "fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80); textures are removed"},
-      {"--variants", "LIST", "comma-separated variants or all (default): exact, exact-rgba32f, default, hammon, "
-                             "separable, beckmann, lambert, burley, schlick-sg, lambert-1-f-vh, study, "
-                             "r11g11b10f, gbuffer-float, fast, blinn-phong"},
+      {"--variants", "LIST", "comma-separated variants or all (default): " + ladderNames()},
       {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (default 128)"},
@@ -182,7 +186,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
       config.hdrFormat = v.hdr;
       config.gbuffer = v.gbuffer;
       const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, 3, config, mode);
-      writeRow(v.name, s.label, toString(v.model), v.model == ShadingModel::Pbr ? toString(v.shading) : "",
+      writeRow(v.name, s.label, toString(v.model), describeTerms(v.model, v.shading),
                toString(v.hdr), toString(v.gbuffer), costs.empty() ? nullptr : &costs[i],
                measureError(f.hdr, f.ldr, ref, refLdr));
       writePng((dir / ("error-" + v.name + "-" + s.label + ".png")).string(),

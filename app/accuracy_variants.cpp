@@ -46,6 +46,8 @@ const std::vector<AccuracyVariant>& accuracyLadder() {
       pbrVariant("gbuffer-float", "", HdrFormat::Rgba16f, GBufferPrecision::Float),
       pbrVariant("fast", "visibility=hammon,diffuse=lambert", HdrFormat::R11g11b10f),
       {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f, GBufferPrecision::Lean},
+      {"blinn-phong-sg", ShadingModel::BlinnPhong, parseShadingVariant("lobe=sg"), HdrFormat::Rgba16f,
+       GBufferPrecision::Lean},
   };
   return ladder;
 }

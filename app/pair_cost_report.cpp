@@ -9,7 +9,7 @@ namespace pbr {
 
 namespace {
 
-std::string terms(const AccuracyVariant& v) { return v.model == ShadingModel::Pbr ? toString(v.shading) : ""; }
+std::string terms(const AccuracyVariant& v) { return describeTerms(v.model, v.shading); }
 
 std::string fixed(double v, int decimals) {
   char text[64];

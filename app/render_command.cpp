@@ -21,11 +21,12 @@ const std::vector<OptionSpec>& renderOptions() {
        "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet) or scene file (.json, .gltf, .glb)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated), hammon or separable"},
-      {"--variant", "K=V,...|study", "PBR variant: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
+      {"--variant", "K=V,...|study", "shading variant, PBR: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
                                      "fresnel=schlick|exact|schlick-sg, diffuse=lambert-1-f|lambert|burley|"
                                      "lambert-1-f-vh (default: the first of each); or, alone, study: the PBR model "
                                      "of the Blinn-Phong-vs-PBR study, GGX, Hammon's visibility, Schlick Fresnel "
-                                     "and Lambert weighted by (1 - F(v.h))"},
+                                     "and Lambert weighted by (1 - F(v.h)); Blinn-Phong: lobe=pow (default) or sg, "
+                                     "the lobe's spherical-Gaussian fit (one exp2 instead of pow)"},
       {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
       {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 44 bytes)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
@@ -181,7 +182,7 @@ int runRender(const std::vector<std::string>& argv) {
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
   std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), toString(model),
-              model == ShadingModel::Pbr ? (" (" + toString(variant) + ")").c_str() : "",
+              (" (" + describeTerms(model, variant) + ")").c_str(),
               toString(culling));
 
   const ShaderLibrary shaders;
@@ -230,7 +231,7 @@ int runRender(const std::vector<std::string>& argv) {
   if (!outJson.empty()) {
     BenchReport report;
     report.provenance = collectProvenance(info, profiler.mode());
-    report.provenance.set("shading_variant", model == ShadingModel::Pbr ? toString(variant) : "n/a");
+    report.provenance.set("shading_variant", describeTerms(model, variant));
     report.settings.scene = scene.name;
     report.settings.size = size;
     report.settings.lights = {result.config.lights};

@@ -25,7 +25,9 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   const auto [qualifier, maximum] = imageFormat(radianceFormat);
+  // Each model sees only its own terms, so that a term of the other model never splits a permutation.
   ShaderDefines defines = shaderDefines(blinnPhong ? ShadingVariant{} : o.variant);
+  if (blinnPhong) defines.push_back(blinnPhongDefine(o.variant));
   defines.insert(defines.begin(), {"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)});
   defines.push_back({"HDR_IMAGE_FORMAT", qualifier});
   defines.push_back({"HDR_MAX", maximum});

@@ -51,6 +51,11 @@ constexpr TermName<Diffuse> kDiffuses[] = {
     {Diffuse::LambertOneMinusFVh, "lambert-1-f-vh", "DIFFUSE_LAMBERT_1_F_VH"},
 };
 
+constexpr TermName<BlinnPhongLobe> kLobes[] = {
+    {BlinnPhongLobe::Pow, "pow", "BLINN_PHONG_LOBE_POW"},
+    {BlinnPhongLobe::SphericalGaussian, "sg", "BLINN_PHONG_LOBE_SG"},
+};
+
 template <class Term, size_t N>
 const TermName<Term>& entry(const TermTable<Term, N>& table, Term value) {
   for (const TermName<Term>& t : table)
@@ -92,7 +97,8 @@ ShadingVariant parseShadingVariant(const std::string& text) {
     else if (key == "ndf") v.ndf = parseTerm(kNdfs, "NDF", value);
     else if (key == "fresnel") v.fresnel = parseTerm(kFresnels, "Fresnel term", value);
     else if (key == "diffuse") v.diffuse = parseTerm(kDiffuses, "diffuse term", value);
-    else throw std::invalid_argument("unknown variant key '" + key + "' (expected visibility, ndf, fresnel, diffuse)");
+    else if (key == "lobe") v.lobe = parseTerm(kLobes, "Blinn-Phong lobe", value);
+    else throw std::invalid_argument("unknown variant key '" + key + "' (expected visibility, ndf, fresnel, diffuse, lobe)");
     start = end + 1;
   }
   return v;
@@ -108,6 +114,20 @@ ShaderDefines shaderDefines(const ShadingVariant& v) {
           {entry(kNdfs, v.ndf).define, "1"},
           {entry(kFresnels, v.fresnel).define, "1"},
           {entry(kDiffuses, v.diffuse).define, "1"}};
+}
+
+std::string toString(BlinnPhongLobe lobe) { return std::string("lobe=") + entry(kLobes, lobe).name; }
+
+std::string describeTerms(ShadingModel model, const ShadingVariant& v) {
+  return model == ShadingModel::Pbr ? toString(v) : toString(v.lobe);
+}
+
+ShaderDefine blinnPhongDefine(const ShadingVariant& v) { return {entry(kLobes, v.lobe).define, "1"}; }
+
+std::vector<std::string> blinnPhongDefineNames() {
+  std::vector<std::string> names;
+  for (const auto& t : kLobes) names.push_back(t.define);
+  return names;
 }
 
 std::vector<std::string> variantDefineNames() {

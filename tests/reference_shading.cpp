@@ -111,7 +111,7 @@ dvec3 shadePbr(const Scene& scene, const AlbedoTable& albedo, const dvec3& p, co
   return lo;
 }
 
-dvec3 shadeBlinnPhong(const Scene& scene, const dvec3& p, const dvec3& n, const dvec3& v) {
+dvec3 shadeBlinnPhong(const Scene& scene, const dvec3& p, const dvec3& n, const dvec3& v, bool gaussianLobe) {
   const Material& m = scene.material;
   const dvec3 diffuse = m.baseColor * (1.0 - m.metalness);
   const dvec3 specular = f0Of(m);
@@ -125,7 +125,8 @@ dvec3 shadeBlinnPhong(const Scene& scene, const dvec3& p, const dvec3& n, const 
     const double nl = glm::dot(n, l);
     if (nl <= 0.0) continue;
     const double nh = std::max(glm::dot(n, glm::normalize(v + l)), 0.0);
-    lo += (diffuse * nl + specular * std::pow(nh, shininess)) * light.color * windowedAttenuation(d, light.radius);
+    const double lobe = gaussianLobe ? std::exp(shininess * (nh - 1.0)) : std::pow(nh, shininess);
+    lo += (diffuse * nl + specular * lobe) * light.color * windowedAttenuation(d, light.radius);
   }
   return glm::clamp(lo, dvec3(0.0), dvec3(1.0));
 }
@@ -151,7 +152,7 @@ Image render(const Scene& scene, int width, int height, Model model, SmithVisibi
       if (!hit) continue;
       const dvec3 v = glm::normalize(scene.camera.position - *hit);
       out.radiance = model == Model::Pbr ? shadePbr(scene, albedo, *hit, scene.plane.normal, v, visibility)
-                                         : shadeBlinnPhong(scene, *hit, scene.plane.normal, v);
+                                         : shadeBlinnPhong(scene, *hit, scene.plane.normal, v, model == Model::BlinnPhongSG);
     }
   }
   return image;

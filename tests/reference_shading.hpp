@@ -40,7 +40,8 @@ struct PointLight {
   double luminousPower = 100.0;
 };
 
-enum class Model { Pbr, BlinnPhong };
+// BlinnPhongSG: the Blinn-Phong lobe (n.h)^n replaced by e^(n (n.h - 1)).
+enum class Model { Pbr, BlinnPhong, BlinnPhongSG };
 enum class SmithVisibility { HeightCorrelated, Hammon };
 
 struct Scene {

@@ -438,6 +438,15 @@ TEST_CASE("shader library: brdf.glsl tests exactly the defines that name the PBR
   CHECK(std::set<std::string>(names.begin(), names.end()).size() == names.size());
   CHECK(std::set<std::string>(names.begin(), names.end()) == tested);
 
+  // The same for the Blinn-Phong model's lobe.
+  const std::string phong = readText(fs::path(PBR_SOURCE_DIR) / "shaders/lighting/model_blinn_phong.glsl");
+  std::set<std::string> phongTested;
+  for (std::sregex_iterator it(phong.begin(), phong.end(), definedName), end; it != end; ++it) {
+    phongTested.insert((*it)[1]);
+  }
+  const std::vector<std::string> lobes = pbr::blinnPhongDefineNames();
+  CHECK(std::set<std::string>(lobes.begin(), lobes.end()) == phongTested);
+
   // Every variant, one define per term, and no two variants share a permutation.
   std::set<std::string> permutations;
   size_t variants = 0;

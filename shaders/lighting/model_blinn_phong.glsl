@@ -4,10 +4,26 @@
 
 vec3 shadeAmbient(Surface s) { return 0.02 * (1.0 - s.metalness) * s.baseColor * s.occlusion; }
 
+#if !defined(BLINN_PHONG_LOBE_POW) && !defined(BLINN_PHONG_LOBE_SG)
+#define BLINN_PHONG_LOBE_POW 1
+#endif
+
 // The pixel's material terms, the same for every light: computed once before the light loop, not per pair.
 vec3 gDiffuse;
 vec3 gSpecularColor;
 float gShininess;
+
+// The lobe (n.h)^n. BLINN_PHONG_LOBE_SG: its spherical-Gaussian fit e^(n (n.h - 1)) (Karis 2012, "Spherical
+// Gaussian approximation for Blinn-Phong, Phong and Fresnel"), one exp2 where pow takes a log2 and an exp2. Since
+// x - 1 >= ln x it is never darker: equal at n.h = 1, brighter by the factor e^(n (x - 1 - ln x)) ~ 1 + n (1 - x)^2 / 2
+// off the peak, where the lobe has fallen to e^(-n (1 - x)).
+float lobe(float NoH) {
+#if defined(BLINN_PHONG_LOBE_SG)
+  return exp2(gShininess * 1.4426950408889634 * (NoH - 1.0));
+#else
+  return pow(NoH, gShininess);
+#endif
+}
 
 void beginShading(Surface s) {
   gDiffuse = (1.0 - s.metalness) * s.baseColor;
@@ -24,7 +40,7 @@ vec3 shadeLight(Surface s, PointLight light) {
   float att = distanceAttenuation(d, light.positionRadius.w);
   if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
   float NoH = max(dot(s.normal, normalize(s.V + L)), 0.0);
-  return (gDiffuse * NoL + gSpecularColor * pow(NoH, gShininess)) * light.colorIntensity.rgb * att;
+  return (gDiffuse * NoL + gSpecularColor * lobe(NoH)) * light.colorIntensity.rgb * att;
 }
 
 vec3 finishShading(vec3 color) { return clamp(color, 0.0, 1.0); }
