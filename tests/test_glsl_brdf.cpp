@@ -49,6 +49,16 @@ double referenceGgx(double cosTheta, double a) {
   return a * a / (kPi * c2 * c2 * k * k);
 }
 
+// Fresnel probes: for each row of F0s, v.h from 0 to 1 in kSteps steps, as (v.h, F0).
+constexpr int kSteps = 256;
+const std::vector<glm::vec3> kFresnelF0s = {{0.0f, 0.04f, 0.5f}, {0.9f, 0.97f, 1.0f}};
+std::vector<glm::vec4> fresnelInputs() {
+  std::vector<glm::vec4> input;
+  for (const glm::vec3& f0 : kFresnelF0s)
+    for (int i = 0; i <= kSteps; ++i) input.emplace_back(static_cast<float>(i) / kSteps, f0);
+  return input;
+}
+
 }  // namespace
 
 TEST_CASE("glsl brdf: D_GGX is normalised, integral of D(n.h) n.h over the hemisphere is 1") {
@@ -199,12 +209,8 @@ TEST_CASE("glsl brdf: F_Schlick is F0 + (1 - F0)(1 - v.h)^5: F0 at v.h = 1, 1 at
 #include "lighting/brdf.glsl"
 vec4 probe(vec4 v) { return vec4(F_Schlick(v.yzw, v.x), 0.0); }
 )");
-  constexpr int kSteps = 256;
-  const std::vector<glm::vec3> f0s = {{0.0f, 0.04f, 0.5f}, {0.9f, 0.97f, 1.0f}};
-  std::vector<glm::vec4> input;
-  for (const glm::vec3& f0 : f0s)
-    for (int i = 0; i <= kSteps; ++i) input.emplace_back(static_cast<float>(i) / kSteps, f0);
-  const std::vector<glm::vec4> f = probe.run(input);
+  const std::vector<glm::vec3>& f0s = kFresnelF0s;
+  const std::vector<glm::vec4> f = probe.run(fresnelInputs());
 
   for (size_t s = 0; s < f0s.size(); ++s) {
     const glm::vec4* row = &f[s * (kSteps + 1)];
@@ -231,12 +237,8 @@ TEST_CASE("glsl brdf: F_SchlickSG is F0 + (1 - F0) 2^((-5.55473 c - 6.98316) c),
 #include "lighting/brdf.glsl"
 vec4 probe(vec4 v) { return vec4(F_SchlickSG(v.yzw, v.x), 0.0); }
 )");
-  constexpr int kSteps = 256;
-  const std::vector<glm::vec3> f0s = {{0.0f, 0.04f, 0.5f}, {0.9f, 0.97f, 1.0f}};
-  std::vector<glm::vec4> input;
-  for (const glm::vec3& f0 : f0s)
-    for (int i = 0; i <= kSteps; ++i) input.emplace_back(static_cast<float>(i) / kSteps, f0);
-  const std::vector<glm::vec4> f = probe.run(input);
+  const std::vector<glm::vec3>& f0s = kFresnelF0s;
+  const std::vector<glm::vec4> f = probe.run(fresnelInputs());
 
   double worstAgainstPow5 = 0.0;
   for (size_t s = 0; s < f0s.size(); ++s) {
