@@ -35,7 +35,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (default 128)"},
-      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn (default 5)"},
+      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn (default 9)"},
       {"--no-cost", "", "skip the cost-per-pair measurement (the chart needs it)"},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go (default out/accuracy)"},
       {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
@@ -109,7 +109,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   PairCostSettings cost;
   cost.size = args.getSize("--pair-size", cost.size);
   cost.lights = args.getInt("--pair-lights", 128, 1, 1 << 16);
-  cost.rounds = args.getInt("--rounds", 5, 1, 10000);
+  cost.rounds = args.getInt("--rounds", 9, 1, 10000);
   const bool measureCost = !args.has("--no-cost");
   const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");
   const bool slices = args.has("--slices");

@@ -31,15 +31,33 @@ def read(path):
     return meta, rows
 
 
+def place_labels(ax, items):
+    """Annotates each (x, y, name), moving a label up or down in 9-point steps until it overlaps no earlier one
+    (approximate boxes in display points), so that a cluster of close variants stays legible."""
+    ax.figure.canvas.draw()
+    to_points = 72.0 / ax.figure.dpi
+    placed = []
+    for x, y, name in sorted(items, key=lambda item: (item[1], item[0])):
+        px, py = ax.transData.transform((x, y)) * to_points
+        width = 4.2 * len(name)
+        for dy in [4, -11, 13, -20, 22, -29, 31, -38, 40, -47, 49]:
+            box = (px + 4, py + dy, px + 4 + width, py + dy + 8)
+            if not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in placed):
+                break
+        placed.append(box)
+        ax.annotate(name, (x, y), textcoords="offset points", xytext=(4, dy), fontsize=7,
+                    arrowprops=dict(arrowstyle="-", color="0.6", linewidth=0.5) if abs(dy) > 4 else None)
+
+
 def panel(ax, points, geometry, title, xlabel):
     # A variant is on the front when no other is both cheaper and more accurate.
     front = sorted(p for p in points if not any(q[0] <= p[0] and q[3] < p[3] for q in points if q is not p))
+    ax.set_yscale("log")
     ax.errorbar([p[0] for p in points], [p[3] for p in points],
                 xerr=[[p[0] - p[1] for p in points], [p[2] - p[0] for p in points]],
                 fmt="o", color="tab:blue", ecolor="tab:gray", capsize=3, zorder=3)
     ax.plot([p[0] for p in front], [p[3] for p in front], color="tab:orange", label="speed/accuracy front")
-    for cost, _, _, error, name in points:
-        ax.annotate(name, (cost, error), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    place_labels(ax, [(p[0], p[3], p[4]) for p in points])
     if geometry is not None and geometry > 0:
         ax.axhline(geometry, color="tab:green", linestyle="--", linewidth=1,
                    label="geometry: tessellated vs exact shapes")
