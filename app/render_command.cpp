@@ -1,7 +1,6 @@
 #include <cstdio>
-#include <iostream>
-
 #include <fstream>
+#include <iostream>
 
 #include "app/args.hpp"
 #include "app/bench_report.hpp"

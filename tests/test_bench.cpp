@@ -278,7 +278,8 @@ TEST_CASE("bench: malformed options exit 2 with one line on stderr") {
   const std::vector<std::vector<std::string>> cases = {
       {"--lights", "64,x"}, {"--lights", "64,,256"}, {"--lights", "-1"},   {"--culling", "fast"},
       {"--model", "phong"}, {"--culling", "none,none"}, {"--frames", "0"}, {"--warmup", "0"},
-      {"--max-seconds", "soon"}, {"--timing", "fast"}, {"--size", "big"}};
+      {"--max-seconds", "soon"}, {"--timing", "fast"}, {"--size", "big"}, {"--rounds", "3"},
+      {"--pair-lights", "8"},   {"--pair-cost", "no-such-variant"}};
   for (const auto& args : cases) {
     std::vector<std::string> argv = {"bench"};
     argv.insert(argv.end(), args.begin(), args.end());

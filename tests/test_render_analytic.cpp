@@ -260,7 +260,8 @@ TEST_CASE("render analytic: Blinn-Phong's spherical-Gaussian lobe matches e^(n (
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
     const ref::Scene expected = litScene(material);
-    pbr::Renderer renderer(shaders, rendererScene(expected), kWidth, kHeight);
+    const pbr::Scene scene = rendererScene(expected);  // the renderer keeps a reference to it
+    pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     pbr::FrameOptions sg = options(pbr::ShadingModel::BlinnPhong);
     sg.variant = pbr::parseShadingVariant("lobe=sg");
     const Frame gaussian = render(renderer, sg);
