@@ -3,11 +3,11 @@
 #include <stb_image.h>
 
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <vector>
+
+#include "core/input_file.hpp"
 
 namespace pbr {
 
@@ -117,10 +117,8 @@ void checkPixels(HdrReader& in, int width, int height) {
 }  // namespace
 
 ImageRgbaF readRadianceHdr(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open file");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (file.bad()) throw std::runtime_error(path + ": cannot read file");
+  const std::string text = readInputFile(path);
+  const std::vector<unsigned char> bytes(text.begin(), text.end());
 
   HdrReader reader(path, bytes);
   int width = 0, height = 0;

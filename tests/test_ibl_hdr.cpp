@@ -112,11 +112,15 @@ TEST_CASE("ibl hdr: a PNG renamed, random bytes, an empty file and a missing fil
   checkOneLineNaming(errorOf(empty), empty, "not a Radiance RGBE file");
 
   const std::string missing = dir.file("missing.hdr");
-  checkOneLineNaming(errorOf(missing), missing, "cannot open file");
+  checkOneLineNaming(errorOf(missing), missing, "cannot open: No such file or directory");
 
   // Environment::fromHdrFile passes the same error on.
-  CHECK_THROWS_WITH_AS(pbr::Environment::fromHdrFile(missing), (missing + ": cannot open file").c_str(),
-                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(pbr::Environment::fromHdrFile(missing),
+                       (missing + ": cannot open: No such file or directory").c_str(), std::runtime_error);
+
+  // What is not a regular file is refused before it is read: reading /dev/zero would never end.
+  checkOneLineNaming(errorOf("/dev/zero"), "/dev/zero", "not a regular file (a character device)");
+  checkOneLineNaming(errorOf(dir.path().string()), dir.path().string(), "not a regular file (a directory)");
 }
 
 TEST_CASE("ibl hdr: unsupported headers name what is wrong") {
