@@ -14,6 +14,7 @@
 #include "app/commands.hpp"
 #include "app/error_map.hpp"
 #include "app/offscreen.hpp"
+#include "app/scene_source.hpp"
 #include "core/context.hpp"
 
 namespace pbr {
@@ -44,6 +45,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--threads", "N", "reference renderer threads, 0 for all (default 0)"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+      allowOutsideUrisOption(),
   };
   return specs;
 }
@@ -120,7 +122,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");
   std::vector<AccuracyScene> scenes;
-  for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec));
+  for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, uriPolicy(args)));
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();

@@ -80,8 +80,9 @@ bool hasOnlyAnalyticShapes(const Scene& scene) {
   return true;
 }
 
-AccuracyScene loadAccuracyScene(const std::string& spec) {
+AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris) {
   SceneParams params;
+  params.uris = uris;
   std::string name = spec, label = spec;
   const size_t colon = spec.find(':');
   if (colon != std::string::npos) {

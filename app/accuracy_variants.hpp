@@ -4,6 +4,7 @@
 
 #include "app/pair_cost.hpp"
 #include "core/scene.hpp"
+#include "core/uri_policy.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/shading_model.hpp"
 
@@ -36,6 +37,6 @@ bool hasOnlyAnalyticShapes(const Scene& scene);
 
 // A built-in scene name or file, or "fresnel-floor:DEG" for that view angle. The reference ignores textures,
 // so base colour textures are removed.
-AccuracyScene loadAccuracyScene(const std::string& spec);
+AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris = {});
 
 }  // namespace pbr

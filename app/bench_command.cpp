@@ -45,6 +45,7 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--trace", "F", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+      allowOutsideUrisOption(),
   };
   return specs;
 }
@@ -188,6 +189,7 @@ int runBench(const std::vector<std::string>& argv) {
   for (int lights : settings.lights) {
     SceneParams params;
     params.lights = lights;
+    params.uris = uriPolicy(args);
     Scene scene = resolveScene(settings.scene, params);
     const float scale = settings.constantDensity ? densityRadiusScale(lights) : 1.0f;
     for (PointLight& l : scene.lights) l.radius *= scale;

@@ -7,6 +7,13 @@
 
 namespace pbr {
 
+OptionSpec allowOutsideUrisOption() {
+  return {"--allow-outside-uris", "",
+          "let glTF models read buffers and images outside their own folder (refused by default)"};
+}
+
+UriPolicy uriPolicy(const Args& args) { return {args.has("--allow-outside-uris")}; }
+
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (params.viewAngleDeg && nameOrPath != "fresnel-floor") {
     throw UsageError("--view-angle applies only to --scene fresnel-floor");
@@ -15,7 +22,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (isBuiltinScene(nameOrPath)) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
-    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1));
+    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris);
   } else {
     std::string names;
     for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;

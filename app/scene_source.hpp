@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 
+#include "app/args.hpp"
 #include "core/builtin_scenes.hpp"
 
 namespace pbr {
@@ -9,5 +10,9 @@ namespace pbr {
 // validated. Throws SceneError with a one-line message, or UsageError for --view-angle with a scene other than
 // fresnel-floor.
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
+
+// --allow-outside-uris, taken by every command that loads scene files, and the policy it sets.
+OptionSpec allowOutsideUrisOption();
+UriPolicy uriPolicy(const Args& args);
 
 }  // namespace pbr

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/scene.hpp"
+#include "core/uri_policy.hpp"
 
 namespace pbr {
 
@@ -26,6 +27,7 @@ std::vector<PointLight> makeRandomLights(const RandomLightSpec& spec);
 struct SceneParams {
   std::optional<int> lights;          // light count (every scene)
   std::optional<float> viewAngleDeg;  // fresnel-floor: angle between the floor normal and the view direction
+  UriPolicy uris;                     // scene files: where glTF buffers and images may be
 };
 
 std::vector<std::string> builtinSceneNames();

@@ -1,18 +1,47 @@
 #include "core/gltf_file.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <fstream>
+#include <cctype>
+#include <filesystem>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <system_error>
 
+#include <nlohmann/json.hpp>
+
+#include "core/glb_container.hpp"
+#include "core/gltf_json_check.hpp"
+#include "core/input_file.hpp"
+#include "core/json_text.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 // tinygltf's default expands paths with wordexp(3), which runs shell expansion on names taken from the file.
 std::string keepPath(const std::string& path, void*) { return path; }
+
+// tinygltf looks for a URI's file in the model's folder and then in the working directory; checkGltfJson has
+// already found every URI in the model's folder, so the second place never answers. Reading goes through
+// readInputFile like every other input.
+bool isRegularFile(const std::string& path, void*) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+bool readFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = readInputFile(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const std::runtime_error& e) {
+    *err = e.what();
+    return false;
+  }
+}
 
 // Keeps the encoded bytes of URI and data-URI images; buffer-view images are left for the caller to validate.
 bool keepEncodedImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
@@ -24,16 +53,31 @@ bool keepEncodedImage(tinygltf::Image* image, const int index, std::string*, std
   return true;
 }
 
+// tinygltf's first message line, cut short: its messages may quote a whole data: URI.
 std::string firstLine(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-  return line;
+  return line.size() <= 160 ? line : line.substr(0, 157) + "...";
 }
 
-bool isGlb(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  return in.read(magic, 4) && std::memcmp(magic, "glTF", 4) == 0;
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// The JSON text of the file, parsed after the nesting check; a syntax error names its line and column.
+nlohmann::json parseGltfJson(const std::string& text, const std::string& path) {
+  checkJsonNesting(text, path);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SceneError(path + ":" + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1) + ": not valid JSON");
+  } catch (const nlohmann::json::exception& e) {
+    // A number beyond double range ("1e999") is the one other failure: nlohmann names the literal.
+    const std::string what = e.what(), reason = what.substr(what.find(']') + 2);
+    throw SceneError(path + ": not valid JSON: " + (reason.size() <= 80 ? reason : reason.substr(0, 77) + "..."));
+  }
 }
 
 }  // namespace
@@ -42,18 +86,37 @@ void GltfFile::fail(const std::string& what) const { throw SceneError(path + ": 
 
 void GltfFile::warn(const std::string& what) const { std::cerr << path << ": " << what << "\n"; }
 
-GltfFile readGltfFile(const std::string& path) {
+GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   GltfFile file;
   file.path = path;
-  if (!std::ifstream(path, std::ios::binary)) file.fail("cannot open the file");
+  std::string bytes;
+  try {
+    bytes = readInputFile(path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(e.what());
+  }
+  // A .glb is read as GLB whatever its first bytes, so that a damaged header is reported as such.
+  const bool glb = hasGlbMagic(bytes) || lowerExtension(path) == ".glb";
+  GltfJsonContext context{path, fs::path(path).parent_path(), policy, std::nullopt};
+  std::string jsonText;
+  if (glb) {
+    const GlbChunks chunks = readGlbChunks(bytes, path);
+    jsonText = chunks.json;
+    if (chunks.hasBin) context.binChunk = chunks.binLength;
+  }
+  const nlohmann::json doc = parseGltfJson(glb ? jsonText : bytes, path);
+  checkGltfJson(doc, context);
 
   tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks(
-      {&tinygltf::FileExists, &keepPath, &tinygltf::ReadWholeFile, &tinygltf::WriteWholeFile, nullptr});
+  loader.SetFsCallbacks({&isRegularFile, &keepPath, &readFile, &tinygltf::WriteWholeFile, nullptr});
   loader.SetImageLoader(&keepEncodedImage, &file.encodedImages);
   std::string err, warn;
-  const bool ok = isGlb(path) ? loader.LoadBinaryFromFile(&file.model, &err, &warn, path)
-                              : loader.LoadASCIIFromFile(&file.model, &err, &warn, path);
+  const std::string folder = context.folder.empty() ? "." : context.folder.string();
+  const bool ok =
+      glb ? loader.LoadBinaryFromMemory(&file.model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                        static_cast<unsigned int>(bytes.size()), folder)
+          : loader.LoadASCIIFromString(&file.model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+                                       folder);
   if (!ok) file.fail(firstLine(!err.empty() ? err : !warn.empty() ? warn : "not a valid glTF 2.0 file"));
   file.encodedImages.resize(file.model.images.size());
 

@@ -4,6 +4,8 @@
 
 #include <tiny_gltf.h>
 
+#include "core/uri_policy.hpp"
+
 namespace pbr {
 
 // A parsed glTF file. tinygltf decodes no image: external and data-URI images keep their encoded bytes in
@@ -28,7 +30,10 @@ inline std::string gltfElement(const char* array, int index) {
 // Extensions this loader implements; a file that requires any other is rejected.
 inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
 
-// Reads a .gltf or .glb file (told apart by the GLB magic, whatever the extension) with its buffers.
-GltfFile readGltfFile(const std::string& path);
+// Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through
+// readInputFile. Before tinygltf sees the file, the GLB container is checked (readGlbChunks), the JSON's nesting
+// bounded (checkJsonNesting) and its integers, offsets and URIs validated (checkGltfJson); URIs must stay in the
+// model's folder unless `policy` allows otherwise.
+GltfFile readGltfFile(const std::string& path, const UriPolicy& policy = {});
 
 }  // namespace pbr

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,29 @@ namespace pbr {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
+
+// The renderer works in float: framing a model, placing the default lights and culling lights square distances,
+// which overflow past about 1e19. Coordinates, after every transform, stay within this, far beyond any real model.
+constexpr double kMaxCoordinate = 1e12;
+// A transform that shrinks volume by more than this (a uniform scale of 1e-10) leaves nothing to see and a normal
+// matrix that overflows; zero collapses the model entirely.
+constexpr double kMinDeterminant = 1e-30;
+
+std::string number(double v) {
+  std::ostringstream ss;
+  ss << v;
+  return ss.str();
+}
+
+double determinant3(const glm::mat4& m) {
+  const auto e = [&](int c, int r) { return static_cast<double>(m[c][r]); };
+  return e(0, 0) * (e(1, 1) * e(2, 2) - e(2, 1) * e(1, 2)) - e(1, 0) * (e(0, 1) * e(2, 2) - e(2, 1) * e(0, 2)) +
+         e(2, 0) * (e(0, 1) * e(1, 2) - e(1, 1) * e(0, 2));
+}
+
+double largestMagnitude(const glm::vec3& v) {
+  return std::max({std::fabs(double(v.x)), std::fabs(double(v.y)), std::fabs(double(v.z))});
+}
 
 void requireFinite(const GltfFile& file, const std::vector<float>& values, const std::string& field) {
   for (size_t i = 0; i < values.size(); ++i) {
@@ -38,6 +62,14 @@ std::vector<double> checkedArray(const GltfFile& file, const std::vector<double>
   return v;
 }
 
+// The property of a node that messages blame for its placement: the one that moves it, or scales it.
+std::string placementField(const tinygltf::Node& node, const std::string& name, bool scaling) {
+  if (!node.matrix.empty()) return name + ".matrix";
+  if (scaling && !node.scale.empty()) return name + ".scale";
+  if (!node.translation.empty()) return name + ".translation";
+  return name + (node.scale.empty() ? "" : ".scale");
+}
+
 glm::mat4 localTransform(const GltfFile& file, const tinygltf::Node& node, const std::string& name) {
   if (!node.matrix.empty()) {
     const std::vector<double> m = checkedArray(file, node.matrix, 16, name + ".matrix");
@@ -45,11 +77,23 @@ glm::mat4 localTransform(const GltfFile& file, const tinygltf::Node& node, const
     for (int c = 0; c < 4; ++c) {
       for (int r = 0; r < 4; ++r) out[c][r] = static_cast<float>(m[static_cast<size_t>(c * 4 + r)]);  // column-major
     }
+    // glTF node matrices are affine (decomposable into translation, rotation and scale).
+    if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0) {
+      file.fail(name + ".matrix: its last row must be (0, 0, 0, 1), an affine transform");
+    }
+    if (!(std::fabs(determinant3(out)) >= kMinDeterminant)) {
+      file.fail(name + ".matrix: is singular or nearly so (determinant " + number(determinant3(out)) + ")");
+    }
     return out;
   }
   glm::mat4 out(1.0f);
   if (!node.translation.empty()) {
     const std::vector<double> t = checkedArray(file, node.translation, 3, name + ".translation");
+    for (const double x : t) {
+      if (std::fabs(x) > kMaxCoordinate) {
+        file.fail(name + ".translation: " + number(x) + " is beyond the coordinate limit " + number(kMaxCoordinate));
+      }
+    }
     out = glm::translate(out, glm::vec3(t[0], t[1], t[2]));
   }
   if (!node.rotation.empty()) {
@@ -61,6 +105,10 @@ glm::mat4 localTransform(const GltfFile& file, const tinygltf::Node& node, const
   }
   if (!node.scale.empty()) {
     const std::vector<double> s = checkedArray(file, node.scale, 3, name + ".scale");
+    if (!(std::fabs(s[0] * s[1] * s[2]) >= kMinDeterminant)) {
+      file.fail(name + ".scale: [" + number(s[0]) + ", " + number(s[1]) + ", " + number(s[2]) +
+                "] is zero or nearly so in some axis");
+    }
     out = glm::scale(out, glm::vec3(s[0], s[1], s[2]));
   }
   return out;
@@ -107,7 +155,8 @@ class Loader {
       visited[static_cast<size_t>(index)] = true;
       const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
       const glm::mat4 world = parent * localTransform(file_, node, name);
-      if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh");
+      checkWorld(world, node, name);
+      if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
@@ -119,6 +168,22 @@ class Loader {
   }
 
  private:
+  // A node's transform combined with its parents' may still overflow or collapse; the node is named, not the
+  // camera or lights computed from it later.
+  void checkWorld(const glm::mat4& world, const tinygltf::Node& node, const std::string& name) const {
+    const double det = determinant3(world);
+    if (!std::isfinite(det) || std::fabs(det) < kMinDeterminant) {
+      file_.fail(placementField(node, name, true) + ": with its parents' transforms, scales the node to " +
+                 (std::isfinite(det) ? "nothing" : "infinity") + " (determinant " + number(det) + ")");
+    }
+    const glm::vec3 origin(world[3]);
+    if (!(largestMagnitude(origin) <= kMaxCoordinate)) {
+      file_.fail(placementField(node, name, false) + ": with its parents' transforms, places the node at " +
+                 number(largestMagnitude(origin)) + " from the origin, beyond the coordinate limit " +
+                 number(kMaxCoordinate));
+    }
+  }
+
   void checkNode(int index, const std::string& field) const {
     if (index < 0 || static_cast<size_t>(index) >= file_.model.nodes.size()) {
       file_.fail(field + ": no node " + std::to_string(index));
@@ -149,7 +214,7 @@ class Loader {
     return roots;
   }
 
-  void addMesh(int index, const glm::mat4& world, const std::string& field) {
+  void addMesh(int index, const glm::mat4& world, const std::string& field, const std::string& placement) {
     if (static_cast<size_t>(index) >= file_.model.meshes.size()) {
       file_.fail(field + ": no mesh " + std::to_string(index));
     }
@@ -162,6 +227,10 @@ class Loader {
       scene_.objects.push_back({Shape::Mesh, sceneMesh, world, materials_.get(mesh.primitives[p].material, material)});
       for (const Vertex& v : scene_.meshes[static_cast<size_t>(sceneMesh)].vertices) {
         const glm::vec3 w = glm::vec3(world * glm::vec4(v.position, 1.0f));
+        if (!(largestMagnitude(w) <= kMaxCoordinate)) {
+          file_.fail(placement + ": places " + gltfElement("meshes", index) + " at " + number(largestMagnitude(w)) +
+                     " from the origin, beyond the coordinate limit " + number(kMaxCoordinate));
+        }
         bounds_.min = empty_ ? w : glm::min(bounds_.min, w);
         bounds_.max = empty_ ? w : glm::max(bounds_.max, w);
         empty_ = false;
@@ -209,6 +278,12 @@ class Loader {
     if (attribute("POSITION") < 0) file_.fail(field + ".attributes: no POSITION");
     const std::vector<float> positions = read("POSITION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 0);
     const size_t count = positions.size() / 3;
+    for (const float p : positions) {
+      if (std::fabs(p) > kMaxCoordinate) {
+        file_.fail(field + ".attributes.POSITION: coordinate " + number(p) + " is beyond the limit " +
+                   number(kMaxCoordinate));
+      }
+    }
     const bool hasNormals = attribute("NORMAL") >= 0;
     // glTF: without normals, tangents from the file are ignored too.
     const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
@@ -282,6 +357,12 @@ class Loader {
     // tinygltf reads an absent range as 0.
     light.radius =
         l.range > 0.0 ? static_cast<float>(l.range) : std::sqrt(intensity * brightest / kGltfLightCutoffIlluminance);
+    // Values finite as written may overflow float once converted or multiplied; name what the file wrote.
+    if (!std::isfinite(light.luminousPower)) file_.fail(name + ".intensity: too large (got " + number(l.intensity) + ")");
+    if (!std::isfinite(brightest)) file_.fail(name + ".color: too large");
+    if (!std::isfinite(light.radius)) {
+      file_.fail(name + (l.range > 0.0 ? ".range" : ".intensity") + ": gives an infinite light radius");
+    }
     scene_.lights.push_back(light);
   }
 
@@ -295,8 +376,8 @@ class Loader {
 
 }  // namespace
 
-Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform) {
-  const GltfFile file = readGltfFile(path);
+Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy) {
+  const GltfFile file = readGltfFile(path, policy);
   const size_t meshes = scene.meshes.size(), textures = scene.textures.size(), objects = scene.objects.size(),
                lights = scene.lights.size();
   try {

@@ -5,6 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/scene.hpp"
+#include "core/uri_policy.hpp"
 
 namespace pbr {
 
@@ -24,6 +25,8 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // lights are skipped and alphaMode BLEND is drawn opaque, each with one line on stderr. Returns the world bounds of
 // the geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
 // other than KHR_lights_punctual and KHR_materials_emissive_strength, leaving `scene` as it was.
-Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
+// `policy` says where the file's buffers and images may be (readGltfFile).
+Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
+                  const UriPolicy& policy = {});
 
 }  // namespace pbr

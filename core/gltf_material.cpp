@@ -1,20 +1,21 @@
 #include "core/gltf_material.hpp"
 
-#include <stb_image.h>
-
 #include <algorithm>
-#include <climits>
 #include <cmath>
-#include <memory>
+#include <stdexcept>
+#include <utility>
 
 #include "core/gltf_accessor.hpp"
+#include "core/gltf_uri.hpp"
+#include "core/image.hpp"
 
 namespace pbr {
 
 namespace {
 
 float finite(const GltfFile& file, double v, const std::string& field) {
-  if (!std::isfinite(v)) file.fail(field + ": must be a finite number");
+  // A double such as 1e300 is finite but not as a float.
+  if (!std::isfinite(static_cast<float>(v))) file.fail(field + ": must be a finite number within float range");
   return static_cast<float>(v);
 }
 
@@ -76,6 +77,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
     const tinygltf::Value& v = strength->second.Get("emissiveStrength");
     if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0.0)) file_.fail(where + ": must be a number >= 0");
     m.emissive *= finite(file_, v.GetNumberAsDouble(), where);
+    if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) file_.fail(where + ": too large");
   }
 
   if (g.alphaMode == "MASK") {
@@ -109,7 +111,7 @@ int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string
   if (t.source < 0 || static_cast<size_t>(t.source) >= model.images.size()) {
     file_.fail(name + ".source: no image " + std::to_string(t.source) + " (a texture needs a PNG or JPEG source)");
   }
-  TextureData data = decodeImage(t.source, name + ".source");
+  TextureData data = imageTexture(t.source, name + ".source");
   data.srgb = srgb;
   if (t.sampler >= 0) {
     if (static_cast<size_t>(t.sampler) >= model.samplers.size()) {
@@ -142,10 +144,10 @@ int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string
   return added;
 }
 
-TextureData GltfMaterials::decodeImage(int index, const std::string& field) const {
+TextureData GltfMaterials::imageTexture(int index, const std::string& field) const {
   const tinygltf::Image& image = file_.model.images[static_cast<size_t>(index)];
-  const std::string label = gltfElement("images", index) + (!image.uri.empty()    ? " ('" + image.uri + "')"
-                                                            : !image.name.empty() ? " ('" + image.name + "')"
+  const std::string label = gltfElement("images", index) + (!image.uri.empty()    ? " (" + quoteUri(image.uri) + ")"
+                                                            : !image.name.empty() ? " (" + quoteUri(image.name) + ")"
                                                                                   : "");
   ByteSpan bytes{nullptr, 0};
   if (image.bufferView >= 0) {
@@ -155,17 +157,17 @@ TextureData GltfMaterials::decodeImage(int index, const std::string& field) cons
     if (encoded.empty()) file_.fail(label + ": cannot read the image file (used by " + field + ")");
     bytes = {encoded.data(), encoded.size()};
   }
-  if (bytes.size == 0 || bytes.size > static_cast<size_t>(INT_MAX)) file_.fail(label + ": no image data");
-  int w = 0, h = 0, channels = 0;
-  // Asking for 4 channels also narrows 16-bit PNGs to 8 bits.
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load_from_memory(bytes.data, static_cast<int>(bytes.size), &w, &h, &channels, 4), stbi_image_free);
-  if (!pixels) file_.fail(label + ": cannot decode the image (" + std::string(stbi_failure_reason()) + ")");
+  ImageRgba8 pixels;
+  try {
+    pixels = pbr::decodeImage(bytes.data, bytes.size, label);
+  } catch (const std::runtime_error& e) {
+    file_.fail(e.what());
+  }
   TextureData data;
-  data.name = image.uri.empty() ? label : image.uri;
-  data.width = w;
-  data.height = h;
-  data.rgba.assign(pixels.get(), pixels.get() + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
+  data.name = image.uri.empty() || isDataUri(image.uri) ? label : image.uri;
+  data.width = pixels.width;
+  data.height = pixels.height;
+  data.rgba = std::move(pixels.pixels);
   return data;
 }
 

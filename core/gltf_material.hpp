@@ -22,7 +22,8 @@ class GltfMaterials {
   Material convert(int index, const std::string& field);
   // Index into Scene::textures of glTF texture `index` (-1 stays -1).
   int texture(int index, int texCoord, bool srgb, const std::string& field);
-  TextureData decodeImage(int image, const std::string& field) const;
+  // Image `image` decoded; `field` names the texture that uses it.
+  TextureData imageTexture(int image, const std::string& field) const;
 
   const GltfFile& file_;
   Scene& scene_;

@@ -4,10 +4,13 @@
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
+#include <climits>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+
+#include "core/input_file.hpp"
 
 namespace pbr {
 
@@ -35,11 +38,23 @@ void writePng(const std::string& path, const ImageRgba8& image) {
 }
 
 ImageRgba8 readPng(const std::string& path) {
+  const std::string bytes = readInputFile(path);
+  return decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path);
+}
+
+ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
+  if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
+  if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
   int w = 0, h = 0, n = 0;
-  std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 4), stbi_image_free);
-  if (!data) throw std::runtime_error(path + ": could not read image: " + stbi_failure_reason());
+  std::unique_ptr<stbi_uc, void (*)(void*)> data(
+      stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &n, 4), stbi_image_free);
+  if (!data) {
+    const char* reason = stbi_failure_reason();
+    const bool given = reason && *reason;
+    throw std::runtime_error(name + ": cannot decode image" + (given ? std::string(": ") + reason : std::string()));
+  }
   ImageRgba8 img{w, h, {}};
-  img.pixels.assign(data.get(), data.get() + static_cast<size_t>(w) * h * 4);
+  img.pixels.assign(data.get(), data.get() + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
   return img;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,7 +19,12 @@ struct ImageRgbaF {
 
 // Each throws std::runtime_error naming the file on failure.
 void writePng(const std::string& path, const ImageRgba8& image);
+// Any image stb decodes (PNG, JPEG, ...), read through readInputFile and decoded by decodeImage.
 ImageRgba8 readPng(const std::string& path);
+// Decodes PNG, JPEG and the other formats stb reads to RGBA8 (16-bit images narrowed to 8 bits). Throws
+// std::runtime_error("NAME: cannot decode image: REASON"), or "NAME: cannot decode image" where the decoder gives
+// no reason (stb leaves none for some corrupt files).
+ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name);
 void writeExr(const std::string& path, const ImageRgbaF& image);  // RGB float32
 void writePfm(const std::string& path, const ImageRgbaF& image);  // RGB float32, little endian
 // Chooses EXR or PFM by the file's extension.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/json_text.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -15,12 +16,6 @@ std::string format(double v) {
   std::ostringstream ss;
   ss << v;
   return ss.str();
-}
-
-// The offending value as the file spells it, shortened so that the message stays one readable line.
-std::string shortDump(const nlohmann::json& value) {
-  const std::string text = value.dump();
-  return text.size() <= 60 ? text : text.substr(0, 57) + "...";
 }
 
 }  // namespace
@@ -117,7 +112,7 @@ bool JsonField::boolean(bool fallback) const {
 }
 
 void JsonField::expected(const std::string& what) const {
-  fail("expected " + what + (value_ ? ", got " + shortDump(*value_) : ", but the field is missing"));
+  fail("expected " + what + (value_ ? ", got " + quoteJson(*value_) : ", but the field is missing"));
 }
 
 void JsonField::fail(const std::string& message) const {

@@ -1,12 +1,12 @@
 #include "core/json_file.hpp"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <stdexcept>
 #include <vector>
 
+#include "core/input_file.hpp"
 #include "core/json_field.hpp"
+#include "core/json_text.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -102,16 +102,6 @@ class PathTrackingSax : public nlohmann::json_sax<json> {
   bool overflow_ = false;
 };
 
-// nlohmann reports how many characters it read; people read lines and columns. The last character read is the
-// one in error (one past the end at an unexpected end of input).
-std::string lineColumn(const std::string& text, std::size_t charsRead) {
-  const auto first = text.begin();
-  const auto last = first + static_cast<std::ptrdiff_t>(std::min(charsRead == 0 ? 0 : charsRead - 1, text.size()));
-  const auto lineStart = std::find(std::make_reverse_iterator(last), std::make_reverse_iterator(first), '\n').base();
-  const auto line = 1 + std::count(first, last, '\n');
-  return std::to_string(line) + ":" + std::to_string(last - lineStart + 1);
-}
-
 // "[json.exception.parse_error.101] parse error at line 3, column 9: syntax error ..." -> "syntax error ...".
 std::string withoutNlohmannPrefix(const std::string& message) {
   const std::size_t column = message.find(", column ");
@@ -124,15 +114,19 @@ std::string withoutNlohmannPrefix(const std::string& message) {
 }  // namespace
 
 json readJsonFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!std::filesystem::is_regular_file(path) || !in) throw SceneError(path + ": cannot open file");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw SceneError(path + ": cannot read file");
+  std::string text;
+  try {
+    text = readInputFile(path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(e.what());
+  }
+  checkJsonNesting(text, path);
 
   json root;
   PathTrackingSax sax(root);
   if (json::sax_parse(text, &sax)) return root;
-  const std::string where = path + ":" + lineColumn(text, sax.position()) + ": ";
+  // nlohmann reports how many characters it read; the last one read is the one in error.
+  const std::string where = path + ":" + lineColumn(text, sax.position() == 0 ? 0 : sax.position() - 1) + ": ";
   if (sax.overflow()) {
     throw SceneError(where + JsonField::displayPath(sax.pendingPath()) + ": expected a finite number, got " + sax.token());
   }

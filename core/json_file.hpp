@@ -5,8 +5,9 @@
 
 namespace pbr {
 
-// Reads and parses a JSON file. Throws SceneError with one line: "F: cannot open file", or
-// "F:LINE:COLUMN: JSON syntax error: ..." (a number out of range also names its JSON path).
+// Reads (through readInputFile) and parses a JSON file. Throws SceneError with one line: "F: not a regular file
+// (a directory)", "F:LINE:COLUMN: nesting deeper than 256", or "F:LINE:COLUMN: JSON syntax error: ..." (a number
+// out of range also names its JSON path).
 nlohmann::json readJsonFile(const std::string& path);
 
 }  // namespace pbr

@@ -50,11 +50,10 @@ std::vector<PointLight> defaultLightRig(const Bounds& bounds) {
   return lights;
 }
 
-Scene loadModelScene(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw SceneError(path + ": cannot open file");
+Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
-  const Bounds bounds = appendGltf(scene, path);
+  const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy);
   if (scene.objects.empty()) throw SceneError(path + ": the model has no triangles to show");
   scene.camera = frameBounds(bounds, 45.0f);
   scene.ambient = glm::vec3(0.03f);

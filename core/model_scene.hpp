@@ -17,6 +17,6 @@ Camera frameBounds(const Bounds& bounds, float fovYDeg);
 std::vector<PointLight> defaultLightRig(const Bounds& bounds);
 
 // A .gltf or .glb model alone: framed by frameBounds, a small ambient, and the default rig when it has no lights.
-Scene loadModelScene(const std::string& path);
+Scene loadModelScene(const std::string& path, const UriPolicy& policy = {});
 
 }  // namespace pbr

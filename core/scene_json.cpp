@@ -99,7 +99,7 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   return m;
 }
 
-void readObject(const JsonField& f, const fs::path& folder, Scene& scene) {
+void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& policy, Scene& scene) {
   const JsonField shape = f["shape"], gltf = f["gltf"];
   if (shape.present() == gltf.present()) {
     f.fail(shape.present() ? "expected \"shape\" or \"gltf\", got both" : "expected a \"shape\" or a \"gltf\" field");
@@ -110,7 +110,7 @@ void readObject(const JsonField& f, const fs::path& folder, Scene& scene) {
     const std::string path = resolve(folder, gltf.string()).string();
     if (!fs::is_regular_file(path)) gltf.fail("cannot open " + path);
     try {
-      appendGltf(scene, path, transform);
+      appendGltf(scene, path, transform, policy);
     } catch (const SceneError& e) {
       gltf.fail(e.what());
     }
@@ -186,7 +186,7 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
   return e;
 }
 
-Scene readJsonScene(const std::string& path, int lightCount) {
+Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
   if (!document.is_object()) root.expected("a JSON object");
@@ -198,7 +198,7 @@ Scene readJsonScene(const std::string& path, int lightCount) {
   scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
   if (root["environment"].present()) scene.environment = readEnvironment(root["environment"], folder);
-  for (const JsonField& o : root["objects"].items()) readObject(o, folder, scene);
+  for (const JsonField& o : root["objects"].items()) readObject(o, folder, policy, scene);
   for (const JsonField& l : root["lights"].items()) scene.lights.push_back(readLight(l));
   const JsonField random = root["random_lights"];
   if (random.present()) {
@@ -218,11 +218,11 @@ std::string lowerExtension(const std::string& path) {
 
 }  // namespace
 
-Scene loadSceneFile(const std::string& path, int lightCount) {
+Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy) {
   const std::string ext = lowerExtension(path);
   const bool model = ext == ".gltf" || ext == ".glb";
   if (model && lightCount >= 0) throw SceneError(path + ": a light count applies only to scene files with random_lights");
-  Scene scene = model ? loadModelScene(path) : readJsonScene(path, lightCount);
+  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy);
   validateScene(scene, path);
   return scene;
 }

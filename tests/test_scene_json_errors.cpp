@@ -121,12 +121,13 @@ TEST_CASE("scene file errors: each rejected field names the file, its JSON path 
 TEST_CASE("scene file errors: a missing file, a directory, a non-object document, an empty file") {
   const TempDir dir;
   const std::string missing = dir.file("missing.json");
-  checkOneLineError(missing, [&] { pbr::loadSceneFile(missing); }, missing + ": cannot open file");
-  checkOneLineError(dir.path().string(), [&] { pbr::loadSceneFile(dir.path().string()); }, ": cannot open file");
+  checkOneLineError(missing, [&] { pbr::loadSceneFile(missing); }, missing + ": cannot open: No such file or directory");
+  checkOneLineError(dir.path().string(), [&] { pbr::loadSceneFile(dir.path().string()); },
+                    ": not a regular file (a directory)");
   const std::string array = dir.write("array.json", "[1, 2]");
   checkOneLineError(array, [&] { pbr::loadSceneFile(array); }, ": top level: expected a JSON object, got [1,2]");
   const std::string empty = dir.write("empty.json", "");
   checkOneLineError(empty, [&] { pbr::loadSceneFile(empty); }, ":1:1: JSON syntax error: ");
   const std::string model = dir.file("missing.glb");
-  checkOneLineError(model, [&] { pbr::loadSceneFile(model); }, ": cannot open file");
+  checkOneLineError(model, [&] { pbr::loadSceneFile(model); }, ": cannot open: No such file or directory");
 }

@@ -1,0 +1,13 @@
+#pragma once
+
+namespace pbr {
+
+// Where the buffers and images a glTF file references may live. By default only in the model's own folder and
+// below it: a model downloaded from elsewhere must not make the renderer read (and show in a texture, or report
+// the size of) /etc/passwd or ~/.ssh through "../../" or an absolute URI. `pbr ... --allow-outside-uris` lifts
+// this for models that share assets with their neighbours. docs/robustness.md describes the policy.
+struct UriPolicy {
+  bool allowOutside = false;
+};
+
+}  // namespace pbr
