@@ -42,17 +42,18 @@ ImageRgba8 readPng(const std::string& path) {
   return decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path);
 }
 
+std::string decoderFailureReason() {
+  const char* reason = stbi_failure_reason();
+  return reason && *reason ? std::string(": ") + reason : std::string();
+}
+
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &n, 4), stbi_image_free);
-  if (!data) {
-    const char* reason = stbi_failure_reason();
-    const bool given = reason && *reason;
-    throw std::runtime_error(name + ": cannot decode image" + (given ? std::string(": ") + reason : std::string()));
-  }
+  if (!data) throw std::runtime_error(name + ": cannot decode image" + decoderFailureReason());
   ImageRgba8 img{w, h, {}};
   img.pixels.assign(data.get(), data.get() + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
   return img;

@@ -25,6 +25,8 @@ ImageRgba8 readPng(const std::string& path);
 // std::runtime_error("NAME: cannot decode image: REASON"), or "NAME: cannot decode image" where the decoder gives
 // no reason (stb leaves none for some corrupt files).
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name);
+// ": REASON" for the last stb decoder failure, or "" where stb gives none (it may give a null pointer).
+std::string decoderFailureReason();
 void writeExr(const std::string& path, const ImageRgbaF& image);  // RGB float32
 void writePfm(const std::string& path, const ImageRgbaF& image);  // RGB float32, little endian
 // Chooses EXR or PFM by the file's extension.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/image.hpp"
 #include "core/input_file.hpp"
 
 namespace pbr {
@@ -128,7 +129,7 @@ ImageRgbaF readRadianceHdr(const std::string& path) {
   int w = 0, h = 0, channels = 0;
   std::unique_ptr<float, void (*)(void*)> pixels(
       stbi_loadf_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4), stbi_image_free);
-  if (!pixels) reader.fail(std::string("cannot decode Radiance pixels: ") + stbi_failure_reason());
+  if (!pixels) reader.fail("cannot decode Radiance pixels" + decoderFailureReason());
   if (w != width || h != height) reader.fail("decoded size differs from the header");
   ImageRgbaF image;
   image.width = w;
