@@ -6,6 +6,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
+#include "core/image.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
 
@@ -49,6 +50,7 @@ int runReference(const std::vector<std::string>& argv) {
   }
   const std::string out = args.get("--hdr", "");
   if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
+  hdrFileFormat(out);  // an unknown extension fails before the frame is traced
   SceneParams params;
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
