@@ -111,7 +111,6 @@ void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image) 
 }
 
 void writePng(const std::string& path, const ImageRgba8& image) {
-  requirePngPath(path);
   writeOutputFile(path, [&](std::ostream& out) { writePng(out, image); });
 }
 

@@ -30,7 +30,7 @@ void writePfm(std::ostream& out, const ImageRgbaF& image);  // RGB float32, litt
 void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image);
 
 // Whole files through an OutputFile: a failure throws std::runtime_error "PATH: cannot write: REASON" and leaves
-// no file behind.
+// no file behind. writePng writes PNG whatever the name (commands check names first with requirePngPath).
 void writePng(const std::string& path, const ImageRgba8& image);
 ImageRgba8 readPng(const std::string& path);  // throws std::runtime_error naming the file
 void writeHdr(const std::string& path, const ImageRgbaF& image);  // EXR or PFM by the extension
