@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <ostream>
 #include <iostream>
 #include <sstream>
 
@@ -16,6 +16,7 @@
 #include "app/offscreen.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
@@ -60,7 +61,8 @@ std::vector<std::string> splitList(const std::string& list) {
 
 void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant>& variants, glm::ivec2 grid,
                  const std::filesystem::path& dir) {
-  std::ofstream csv(dir / "slices.csv");
+  OutputFile csvFile((dir / "slices.csv").string());
+  std::ostream& csv = csvFile.stream();
   csv << "variant,material,max_relative_error,angle_deg_of_max,roughness_of_max,mean_relative_error\n";
   const std::pair<const char*, SliceMaterial> materials[] = {{"dielectric", {glm::vec3(0.8f), 0.0f}},
                                                              {"metal", {glm::vec3(0.95f, 0.64f, 0.54f), 1.0f}}};
@@ -86,6 +88,7 @@ void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant
                   materialName, worst, (wa + 0.5) * 90.0 / s.angles, (wr + 0.5) / s.roughnesses, png.c_str());
     }
   }
+  csvFile.commit();
 }
 
 }  // namespace
@@ -110,6 +113,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const glm::ivec2 size = args.getSize("--size", {320, 180});
   PairCostSettings cost;
   cost.size = args.getSize("--pair-size", cost.size);
+  cost.sizeOption = "--pair-size";
   cost.lights = args.getInt("--pair-lights", 128, 1, 1 << 16);
   cost.rounds = args.getInt("--rounds", 9, 1, 10000);
   const bool measureCost = !args.has("--no-cost");
@@ -143,8 +147,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   }
 
   const std::string csvPath = (dir / "accuracy.csv").string();
-  std::ofstream csv(csvPath);
-  if (!csv) throw std::runtime_error(csvPath + ": cannot write");
+  OutputFile csvFile(csvPath);
+  std::ostream& csv = csvFile.stream();
   csv << "# gl_renderer: " << info.renderer << "\n# timing_mode: " << describe(mode) << "\n# pair_cost_frame: "
       << cost.size.x << "x" << cost.size.y << ", " << cost.lights << " lights reaching every pixel, brute force, "
       << cost.rounds << " rounds\n# compared_frame: " << size.x << "x" << size.y << "\n";
@@ -195,7 +199,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
                errorMapImage(relativeErrorPerPixel(f.hdr, ref), size.x, size.y, 1e-4, 1.0));
     }
   }
-  csv.close();
+  csvFile.commit();
   std::printf("wrote %s and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(), dir.string().c_str());
   if (slices) writeSlices(shaders, variants, sliceGrid, dir);
   checkGlError("accuracy");

@@ -26,15 +26,21 @@ Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>&
     if (spec == specs.end()) {
       throw UsageError(arg.rfind("-", 0) == 0 ? "unknown option '" + arg + "'" : "unexpected argument '" + arg + "'");
     }
+    // A second occurrence would silently override the first: which one the user meant is not ours to guess.
+    if (values_.count(arg)) throw UsageError(arg + " is given more than once");
     if (spec->metavar.empty()) {
       if (inlineValue) throw UsageError("option '" + arg + "' takes no value");
       values_[arg] = "1";
       continue;
     }
     if (!inlineValue) {
-      if (i + 1 >= argv.size()) throw UsageError("option '" + arg + "' needs a value (" + spec->metavar + ")");
+      // "--lights --size 160x90": the next option is no value, and naming it would blame the wrong argument.
+      if (i + 1 >= argv.size() || argv[i + 1].rfind("--", 0) == 0) {
+        throw UsageError(arg + " expects a value (" + spec->metavar + ")");
+      }
       value = argv[++i];
     }
+    if (value.empty()) throw UsageError(arg + " expects a value (" + spec->metavar + "), got an empty one");
     values_[arg] = value;
   }
 }

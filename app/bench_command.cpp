@@ -3,7 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -17,6 +17,7 @@
 #include "app/scene_source.hpp"
 #include "app/trace_writer.hpp"
 #include "core/context.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
@@ -106,20 +107,17 @@ BenchSettings parseSettings(const Args& args) {
   return s;
 }
 
-// Output files are opened before the sweep, so that a bad path fails at once rather than after an hour.
-std::unique_ptr<std::ofstream> openOutput(const Args& args, const std::string& option) {
+// Output files are opened before the sweep, so that a bad path fails at once rather than after an hour; each is
+// renamed into place only once all of it is written.
+std::unique_ptr<OutputFile> openOutput(const Args& args, const std::string& option) {
   if (!args.has(option)) return nullptr;
-  const std::string path = args.get(option, "");
-  auto out = std::make_unique<std::ofstream>(path);
-  if (!*out) throw std::runtime_error("cannot write " + path);
-  return out;
+  return std::make_unique<OutputFile>(args.get(option, ""));
 }
 
-void finishOutput(std::ofstream* out, const Args& args, const std::string& option) {
+void finishOutput(OutputFile* out, const std::function<void(std::ostream&)>& body) {
   if (!out) return;
-  out->close();
-  if (!*out) throw std::runtime_error("error writing " + args.get(option, ""));
-  std::printf("wrote %s\n", args.get(option, "").c_str());
+  out->write(body);
+  std::printf("wrote %s\n", out->path().c_str());
 }
 
 PairCostSettings parsePairCostSettings(const Args& args) {
@@ -134,8 +132,8 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   PairCostReport report;
   report.variants = selectVariants(args.get("--pair-cost", ""));
   report.settings = settings;
-  const std::unique_ptr<std::ofstream> csv = openOutput(args, "--csv");
-  const std::unique_ptr<std::ofstream> json = openOutput(args, "--json");
+  const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
+  const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
   const std::string timingRequest = args.get("--timing", "auto");
   auto context = createHeadlessContext(platform);
   report.settings.timing = chooseTimingMode(timingRequest, context->info().renderer);
@@ -151,10 +149,8 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   checkGlError("measuring the cost per light-pixel pair");
   report.provenance.set("load_average_end", loadAverage());
   printPairCostTable(std::cout, report);
-  if (csv) writePairCostCsv(*csv, report);
-  if (json) writePairCostJson(*json, report);
-  finishOutput(csv.get(), args, "--csv");
-  finishOutput(json.get(), args, "--json");
+  finishOutput(csv.get(), [&](std::ostream& out) { writePairCostCsv(out, report); });
+  finishOutput(json.get(), [&](std::ostream& out) { writePairCostJson(out, report); });
   return 0;
 }
 
@@ -195,9 +191,9 @@ int runBench(const std::vector<std::string>& argv) {
     for (PointLight& l : scene.lights) l.radius *= scale;
     scenes.push_back(std::move(scene));
   }
-  const std::unique_ptr<std::ofstream> csv = openOutput(args, "--csv");
-  const std::unique_ptr<std::ofstream> json = openOutput(args, "--json");
-  const std::unique_ptr<std::ofstream> trace = openOutput(args, "--trace");
+  const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
+  const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
+  const std::unique_ptr<OutputFile> trace = openOutput(args, "--trace");
 
   auto context = createHeadlessContext(platform);
   const TimingMode timing = chooseTimingMode(settings.timing, context->info().renderer);
@@ -228,12 +224,9 @@ int runBench(const std::vector<std::string>& argv) {
   report.provenance.set("load_average_end", loadAverage());
 
   printBenchTable(std::cout, report);
-  if (csv) writeBenchCsv(*csv, report);
-  if (json) writeBenchJson(*json, report);
-  if (trace) writeTrace(*trace, report);
-  finishOutput(csv.get(), args, "--csv");
-  finishOutput(json.get(), args, "--json");
-  finishOutput(trace.get(), args, "--trace");
+  finishOutput(csv.get(), [&](std::ostream& out) { writeBenchCsv(out, report); });
+  finishOutput(json.get(), [&](std::ostream& out) { writeBenchJson(out, report); });
+  finishOutput(trace.get(), [&](std::ostream& out) { writeTrace(out, report); });
   return 0;
 }
 

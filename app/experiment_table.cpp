@@ -1,7 +1,7 @@
-#include <fstream>
 #include <stdexcept>
 
 #include "app/experiments.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
@@ -13,18 +13,17 @@ double ExperimentTable::at(size_t row, const std::string& column) const {
 }
 
 void writeExperimentCsv(const std::string& path, const ExperimentTable& table) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out << table.xLabel;
-  for (const std::string& c : table.columns) out << "," << c;
-  out << "\n";
-  out.precision(9);
-  for (size_t i = 0; i < table.x.size(); ++i) {
-    out << table.x[i];
-    for (double v : table.rows[i]) out << "," << v;
+  writeOutputFile(path, [&](std::ostream& out) {
+    out << table.xLabel;
+    for (const std::string& c : table.columns) out << "," << c;
     out << "\n";
-  }
-  if (!out) throw std::runtime_error(path + ": write failed");
+    out.precision(9);
+    for (size_t i = 0; i < table.x.size(); ++i) {
+      out << table.x[i];
+      for (double v : table.rows[i]) out << "," << v;
+      out << "\n";
+    }
+  });
 }
 
 }  // namespace pbr

@@ -48,7 +48,9 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   };
   std::vector<Run> runs;
   for (const PairCostVariant& v : variants) {
-    Run run{std::make_unique<Renderer>(shaders, scene, settings.size.x, settings.size.y, v.config), v.options, {}, {}};
+    RendererConfig config = v.config;
+    config.sizeOption = settings.sizeOption;
+    Run run{std::make_unique<Renderer>(shaders, scene, settings.size.x, settings.size.y, config), v.options, {}, {}};
     run.options.culling = Culling::None;
     run.options.stats = false;
     Profiler untimed(settings.timing);

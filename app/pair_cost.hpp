@@ -16,6 +16,7 @@ namespace pbr {
 // spheres reach every pixel from above, so that every pair runs the whole BRDF (no early-out is taken).
 struct PairCostSettings {
   glm::ivec2 size{1280, 720};
+  std::string sizeOption = "--size";  // named when the size is too large: bench's --size, accuracy's --pair-size
   int lights = 64;
   int rounds = 7;  // each round times every variant once, in turn
   TimingMode timing = TimingMode::Serializing;

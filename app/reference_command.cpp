@@ -6,6 +6,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
+#include "core/image.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
 
@@ -50,6 +51,7 @@ int runReference(const std::vector<std::string>& argv) {
   }
   const std::string out = args.get("--hdr", "");
   if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
+  hdrFileFormat(out);  // an unknown extension fails before the frame is traced
   SceneParams params;
   params.uris = uriPolicy(args);
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 0, 1 << 20);

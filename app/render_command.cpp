@@ -1,6 +1,6 @@
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "app/args.hpp"
 #include "app/bench_report.hpp"
@@ -9,6 +9,8 @@
 #include "app/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
+#include "core/image.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
@@ -170,6 +172,8 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string outPng = args.get("--out", "");
   const std::string outHdr = args.get("--hdr", "");
   const std::string outJson = args.get("--json", "");
+  if (!outPng.empty()) requirePngPath(outPng);
+  if (!outHdr.empty()) hdrFileFormat(outHdr);
   const std::string timing = args.get("--timing", "auto");
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");  // reject a bad mode before making a context
@@ -177,6 +181,12 @@ int runRender(const std::vector<std::string>& argv) {
   Scene scene = resolveScene(sceneName, sceneParams);
   applyEnvironmentOptions(args, scene);
   const float exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
+  // it is written.
+  std::optional<OutputFile> pngFile, hdrFile, jsonFile;
+  if (!outPng.empty()) pngFile.emplace(outPng);
+  if (!outHdr.empty()) hdrFile.emplace(outHdr);
+  if (!outJson.empty()) jsonFile.emplace(outJson);
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
@@ -221,15 +231,15 @@ int runRender(const std::vector<std::string>& argv) {
   printLightStats(result.stats, renderer, options);
   checkGlError("rendering");
 
-  if (!outPng.empty()) {
-    writePng(outPng, ldr);
+  if (pngFile) {
+    pngFile->write([&](std::ostream& out) { writePng(out, ldr); });
     std::printf("wrote %s\n", outPng.c_str());
   }
-  if (!outHdr.empty()) {
-    writeHdr(outHdr, hdr);
+  if (hdrFile) {
+    hdrFile->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(outHdr), hdr); });
     std::printf("wrote %s\n", outHdr.c_str());
   }
-  if (!outJson.empty()) {
+  if (jsonFile) {
     BenchReport report;
     report.provenance = collectProvenance(info, profiler.mode());
     report.provenance.set("shading_variant", describeTerms(model, variant));
@@ -243,10 +253,7 @@ int runRender(const std::vector<std::string>& argv) {
     report.settings.maxSeconds = 0.0;
     report.settings.timing = timing;
     report.results.push_back(std::move(result));
-    std::ofstream out(outJson);
-    writeBenchJson(out, report);
-    out.close();
-    if (!out) throw std::runtime_error(outJson + ": cannot write");
+    jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
     std::printf("wrote %s\n", outJson.c_str());
   }
   return 0;

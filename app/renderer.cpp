@@ -1,5 +1,6 @@
 #include "app/renderer.hpp"
 
+#include "app/frame_limits.hpp"
 #include "core/readback.hpp"
 
 namespace pbr {
@@ -11,12 +12,18 @@ Environment loadEnvironment(const EnvironmentDesc& e) {
                         : Environment::fromHdrFile(e.file, e.intensity, e.rotationDeg);
 }
 
+// Called while width_ is initialised, before any member allocates a target: an impossible size fails here.
+int checkedWidth(int width, int height, const RendererConfig& config) {
+  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config), queryFrameLimits());
+  return width;
+}
+
 }  // namespace
 
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
                    const RendererConfig& config)
     : scene_(scene),
-      width_(width),
+      width_(checkedWidth(width, height, config)),
       height_(height),
       frameData_(makeFrameBlock(scene.camera, width, height)),
       frame_(frameData_),

@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/frame_block.hpp"
 #include "core/image.hpp"
@@ -53,6 +54,7 @@ struct RendererConfig {
   HdrFormat hdrFormat = HdrFormat::Rgba16f;
   GBufferPrecision gbuffer = GBufferPrecision::Lean;
   Profiler* precomputeProfiler = nullptr;  // times the IBL precomputation when the scene has an environment
+  std::string sizeOption = "--size";       // the option the frame size came from, named when it is too large
 };
 
 // What Renderer::warmUp did before the timed frames.
@@ -67,7 +69,9 @@ class Renderer {
  public:
   // A scene with an environment has its IBL maps precomputed here, once; with config.precomputeProfiler that is
   // one profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
-  // std::runtime_error naming the file when the environment's .hdr cannot be used.
+  // std::runtime_error naming the file when the environment's .hdr cannot be used, and naming config.sizeOption
+  // when the frame is over the context's texture size or the memory available (app/frame_limits.hpp), before any
+  // target is allocated.
   Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height, const RendererConfig& config = {});
 
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});

@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
 #include "app/viewer.hpp"
+#include "core/image.hpp"
 
 namespace pbr {
 
@@ -57,6 +58,7 @@ int runView(const std::vector<std::string>& argv) {
   options.paused = args.has("--paused");
   const int frames = args.getInt("--frames", 0, 1, 1 << 30);
   options.screenshot = args.get("--screenshot", "");
+  if (!options.screenshot.empty()) requirePngPath(options.screenshot);
   options.timing = args.get("--timing", "auto");
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 

@@ -6,21 +6,17 @@
 
 #include <climits>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 
 #include "core/input_file.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
 namespace {
-
-void ensureParentDir(const std::string& path) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  std::error_code ec;
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-}
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -28,12 +24,27 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
+void appendToStream(void* context, void* data, int size) {
+  static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
+}
+
 }  // namespace
 
-void writePng(const std::string& path, const ImageRgba8& image) {
-  ensureParentDir(path);
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4)) {
-    throw std::runtime_error(path + ": could not write PNG");
+HdrFileFormat hdrFileFormat(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".exr") return HdrFileFormat::Exr;
+  if (ext == ".pfm") return HdrFileFormat::Pfm;
+  throw std::invalid_argument(path + ": HDR captures must end in .exr or .pfm");
+}
+
+void requirePngPath(const std::string& path) {
+  if (lowerExtension(path) != ".png" && !isStreamTarget(path)) throw std::invalid_argument(path + ": captures must end in .png");
+}
+
+void writePng(std::ostream& out, const ImageRgba8& image) {
+  if (!stbi_write_png_to_func(appendToStream, &out, image.width, image.height, 4, image.pixels.data(),
+                              image.width * 4)) {
+    throw std::runtime_error("could not encode PNG");
   }
 }
 
@@ -59,44 +70,69 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   return img;
 }
 
-void writeExr(const std::string& path, const ImageRgbaF& image) {
-  ensureParentDir(path);
+void writeExr(std::ostream& out, const ImageRgbaF& image) {
+  // One plane per channel, in the B, G, R order EXR viewers expect; float32 kept so that captures are exact
+  // linear radiance.
   const size_t count = static_cast<size_t>(image.width) * image.height;
-  std::vector<float> rgb(count * 3);
-  for (size_t i = 0; i < count; ++i) {
-    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * 4 + c];
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c) {
+    planes[c].resize(count);
+    for (size_t i = 0; i < count; ++i) planes[c][i] = image.pixels[i * 4 + 2 - c];
   }
+  float* planePointers[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
+  EXRImage exr;
+  InitEXRImage(&exr);
+  exr.num_channels = 3;
+  exr.width = image.width;
+  exr.height = image.height;
+  exr.images = reinterpret_cast<unsigned char**>(planePointers);
+  EXRChannelInfo channels[3] = {};
+  int pixelTypes[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.num_channels = 3;
+  header.channels = channels;
+  header.pixel_types = pixelTypes;
+  header.requested_pixel_types = pixelTypes;
+  header.compression_type = image.width < 16 && image.height < 16 ? TINYEXR_COMPRESSIONTYPE_NONE
+                                                                   : TINYEXR_COMPRESSIONTYPE_ZIP;
+  unsigned char* memory = nullptr;
   const char* err = nullptr;
-  // save_as_fp16 = 0: keep float32 so captures are exact linear radiance.
-  if (SaveEXR(rgb.data(), image.width, image.height, 3, 0, path.c_str(), &err) != TINYEXR_SUCCESS) {
+  const size_t bytes = SaveEXRImageToMemory(&exr, &header, &memory, &err);
+  std::unique_ptr<unsigned char, void (*)(void*)> owned(memory, std::free);
+  if (bytes == 0) {
     const std::string reason = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
-    throw std::runtime_error(path + ": could not write EXR: " + reason);
+    throw std::runtime_error("could not encode EXR: " + reason);
   }
+  out.write(reinterpret_cast<const char*>(memory), static_cast<std::streamsize>(bytes));
 }
 
-void writePfm(const std::string& path, const ImageRgbaF& image) {
-  ensureParentDir(path);
-  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "wb"), std::fclose);
-  if (!f) throw std::runtime_error(path + ": could not open for writing");
+void writePfm(std::ostream& out, const ImageRgbaF& image) {
   // A negative scale marks little-endian data; PFM stores rows from the bottom.
-  std::fprintf(f.get(), "PF\n%d %d\n-1.0\n", image.width, image.height);
+  out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
   std::vector<float> row(static_cast<size_t>(image.width) * 3);
   for (int y = image.height - 1; y >= 0; --y) {
     for (int x = 0; x < image.width; ++x) {
       for (int c = 0; c < 3; ++c) row[static_cast<size_t>(x) * 3 + c] = image.at(x, y)[c];
     }
-    if (std::fwrite(row.data(), sizeof(float), row.size(), f.get()) != row.size()) {
-      throw std::runtime_error(path + ": write failed");
-    }
+    out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size() * sizeof(float)));
   }
 }
 
+void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image) {
+  if (format == HdrFileFormat::Exr) writeExr(out, image);
+  else writePfm(out, image);
+}
+
+void writePng(const std::string& path, const ImageRgba8& image) {
+  writeOutputFile(path, [&](std::ostream& out) { writePng(out, image); });
+}
+
 void writeHdr(const std::string& path, const ImageRgbaF& image) {
-  const std::string ext = lowerExtension(path);
-  if (ext == ".exr") return writeExr(path, image);
-  if (ext == ".pfm") return writePfm(path, image);
-  throw std::runtime_error(path + ": HDR captures must end in .exr or .pfm");
+  const HdrFileFormat format = hdrFileFormat(path);
+  writeOutputFile(path, [&](std::ostream& out) { writeHdr(out, format, image); });
 }
 
 }  // namespace pbr

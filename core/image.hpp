@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,20 @@ struct ImageRgbaF {
   const float* at(int x, int y) const { return &pixels[(static_cast<size_t>(y) * width + x) * 4]; }
 };
 
-// Each throws std::runtime_error naming the file on failure.
+// The file formats of captures, chosen by extension (case-insensitive). Throw std::invalid_argument naming the
+// file for any other extension, so that a command can refuse the path before it renders anything.
+enum class HdrFileFormat { Exr, Pfm };
+HdrFileFormat hdrFileFormat(const std::string& path);  // .exr or .pfm
+void requirePngPath(const std::string& path);          // .png, or a device or FIFO (/dev/stdout)
+
+// Encoders onto a stream (an OutputFile's, core/output_file.hpp, which checks the writes).
+void writePng(std::ostream& out, const ImageRgba8& image);
+void writeExr(std::ostream& out, const ImageRgbaF& image);  // RGB float32
+void writePfm(std::ostream& out, const ImageRgbaF& image);  // RGB float32, little endian
+void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image);
+
+// Whole files through an OutputFile: a failure throws std::runtime_error "PATH: cannot write: REASON" and leaves
+// no file behind. writePng writes PNG whatever the name (commands check names first with requirePngPath).
 void writePng(const std::string& path, const ImageRgba8& image);
 // Any image stb decodes (PNG, JPEG, ...), read through readInputFile and decoded by decodeImage.
 ImageRgba8 readPng(const std::string& path);
@@ -27,9 +41,6 @@ ImageRgba8 readPng(const std::string& path);
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name);
 // ": REASON" for the last stb decoder failure, or "" where stb gives none (it may give a null pointer).
 std::string decoderFailureReason();
-void writeExr(const std::string& path, const ImageRgbaF& image);  // RGB float32
-void writePfm(const std::string& path, const ImageRgbaF& image);  // RGB float32, little endian
-// Chooses EXR or PFM by the file's extension.
-void writeHdr(const std::string& path, const ImageRgbaF& image);
+void writeHdr(const std::string& path, const ImageRgbaF& image);  // EXR or PFM by the extension
 
 }  // namespace pbr

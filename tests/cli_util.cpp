@@ -46,8 +46,8 @@ std::string readFile(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args) {
-  std::string command = shellQuote(PBR_BINARY);
+PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args, const std::string& shellSetup) {
+  std::string command = shellSetup + shellQuote(PBR_BINARY);
   for (const std::string& a : args) command += " " + shellQuote(a);
   command += " >" + shellQuote(dir.file("stdout.txt")) + " 2>" + shellQuote(dir.file("stderr.txt"));
   const int status = std::system(command.c_str());

@@ -28,8 +28,9 @@ struct PbrRun {
   std::string out, err;
 };
 
-// Runs the `pbr` binary with `args`, capturing both streams through files in `dir`.
-PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args);
+// Runs the `pbr` binary with `args`, capturing both streams through files in `dir`. `shellSetup` runs first in the
+// same shell (resource limits: "ulimit -v 4000000;").
+PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args, const std::string& shellSetup = "");
 
 // True for exactly one newline-terminated line.
 bool isOneLine(const std::string& s);

@@ -1,0 +1,33 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace pbr {
+
+struct RendererConfig;
+
+// What bounds the frame size a Renderer may allocate, checked before any target exists so that an impossible
+// --size fails at once by name instead of after minutes of rendering with a raw GL error.
+struct FrameLimits {
+  int maxTextureSize = 0;       // GL_MAX_TEXTURE_SIZE of the current context
+  uint64_t availableBytes = 0;  // memory the process may still take (availableMemoryBytes)
+};
+
+// Bytes per pixel a Renderer holds for a frame: the G-buffer, HDR and LDR targets, and one capture of each
+// (read-back buffer plus the image copied out of it). Textures are counted against host memory because the
+// software rasterizer keeps them there and a discrete GPU's driver shadows read-backs in it.
+uint64_t frameBytesPerPixel(const RendererConfig& config);
+
+// The smallest of /proc/meminfo's MemAvailable, the cgroup's memory.max less memory.current, and the address
+// space left under RLIMIT_AS: whichever stops an allocation first.
+uint64_t availableMemoryBytes();
+
+// The current context's limits and availableMemoryBytes().
+FrameLimits queryFrameLimits();
+
+// Throws std::runtime_error naming `option` (the command-line option the size came from, "--size") and the limit
+// the frame is over.
+void checkFrameSize(int width, int height, const std::string& option, uint64_t bytesPerPixel,
+                    const FrameLimits& limits);
+
+}  // namespace pbr

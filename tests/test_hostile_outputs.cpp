@@ -1,0 +1,243 @@
+// Outputs that cannot be written, frames too large to allocate and command lines that name the wrong argument: each
+// fails with exit code 1 or 2, one short line on stderr naming the file or option, and no file left behind.
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/frame_limits.hpp"
+#include "app/renderer.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+
+namespace fs = std::filesystem;
+using pbr::test::isOneLine;
+using pbr::test::readFile;
+using pbr::test::runPbr;
+using pbr::test::TempDir;
+using Run = pbr::test::PbrRun;
+
+namespace {
+
+// `pbr render` of one tiny frame, 32x18 unless `extra` gives a --size.
+std::vector<std::string> tinyRender(const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {"render", "--frames", "1", "--warmup", "0", "--lights", "8"};
+  if (std::find(extra.begin(), extra.end(), "--size") == extra.end()) args.insert(args.end(), {"--size", "32x18"});
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+// Every entry of `folder`, temporaries (".NAME.PID.N.tmp") included.
+std::vector<std::string> entries(const fs::path& folder) {
+  std::vector<std::string> names;
+  if (!fs::exists(folder)) return names;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder)) names.push_back(e.path().filename().string());
+  return names;
+}
+
+void checkOneLineNaming(const Run& run, const std::string& name) {
+  CHECK(isOneLine(run.err));
+  CHECK(run.err.size() < 300);
+  CHECK(run.err.find(name) != std::string::npos);
+}
+
+// Nothing was rendered: the failure came before the first frame.
+void checkNotRendered(const Run& run) { CHECK(run.out.find("first frame") == std::string::npos); }
+
+}  // namespace
+
+TEST_CASE("hostile outputs: a device that refuses the bytes (/dev/full) fails with exit 1 naming it") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  for (const char* option : {"--out", "--json"}) {
+    CAPTURE(option);
+    const Run run = runPbr(dir, tinyRender({option, "/dev/full"}));
+    CHECK(run.exitCode == 1);
+    checkOneLineNaming(run, "/dev/full: cannot write: No space left on device");
+    CHECK(run.out.find("wrote") == std::string::npos);
+  }
+  const Run bench = runPbr(dir, {"bench", "--scene", "default", "--size", "32x18", "--lights", "8", "--culling",
+                                 "clustered", "--model", "pbr", "--warmup", "1", "--frames", "1", "--csv", "/dev/full"});
+  CHECK(bench.exitCode == 1);
+  // bench reports its progress on stderr; the error is its last line.
+  CHECK(bench.err.find("/dev/full: cannot write: No space left on device") != std::string::npos);
+}
+
+TEST_CASE("hostile outputs: a file over the size limit (a full disk) leaves the previous file whole and no temporary") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const fs::path folder = dir.path() / "out";
+  fs::create_directories(folder);
+  const std::string png = (folder / "f.png").string(), pfm = (folder / "f.pfm").string();
+  const std::string previous = "the previous capture";
+  dir.write("out/f.png", previous);
+  // RLIMIT_FSIZE makes write(2) fail with EFBIG past 16 blocks, as a full disk fails it with ENOSPC; SIGXFSZ is
+  // ignored so that the failure reaches the program instead of killing it.
+  const std::string limit = "trap '' XFSZ; ulimit -f 16; ";
+  const Run run = runPbr(dir, {"render", "--size", "320x180", "--frames", "1", "--warmup", "0", "--out", png}, limit);
+  CHECK(run.exitCode == 1);
+  checkOneLineNaming(run, png + ": cannot write: File too large");
+  CHECK(readFile(png) == previous);
+  const Run hdr = runPbr(dir, {"render", "--size", "320x180", "--frames", "1", "--warmup", "0", "--hdr", pfm}, limit);
+  CHECK(hdr.exitCode == 1);
+  checkOneLineNaming(hdr, pfm + ": cannot write: File too large");
+  CHECK(entries(folder) == std::vector<std::string>{"f.png"});
+}
+
+TEST_CASE("hostile outputs: a folder that cannot be made fails before rendering, naming the file") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string notAFolder = dir.write("plain-file", "x");
+  for (const char* option : {"--out", "--hdr", "--json"}) {
+    CAPTURE(option);
+    const std::string name = std::string("f") + (option == std::string("--out") ? ".png" : option == std::string("--hdr") ? ".exr" : ".json");
+    const std::string path = notAFolder + "/sub/" + name;
+    const Run run = runPbr(dir, tinyRender({option, path}));
+    CHECK(run.exitCode == 1);
+    checkOneLineNaming(run, path + ": cannot write: cannot make the folder");
+    checkNotRendered(run);
+    CHECK(readFile(notAFolder) == "x");
+  }
+  const std::string csv = notAFolder + "/sub/bench.csv";
+  const Run bench = runPbr(dir, {"bench", "--scene", "default", "--size", "32x18", "--lights", "8", "--csv", csv});
+  CHECK(bench.exitCode == 1);
+  checkOneLineNaming(bench, csv + ": cannot write");
+}
+
+TEST_CASE("hostile outputs: missing folders are made, and a written capture leaves no temporary beside it") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const fs::path folder = dir.path() / "new" / "sub";
+  const Run run = runPbr(dir, tinyRender({"--out", (folder / "f.png").string(), "--hdr", (folder / "f.exr").string(),
+                                          "--json", (folder / "f.json").string()}));
+  REQUIRE(run.exitCode == 0);
+  std::vector<std::string> names = entries(folder);
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"f.exr", "f.json", "f.png"});
+  CHECK(readFile(folder / "f.png").compare(0, 4, "\x89PNG") == 0);
+}
+
+TEST_CASE("hostile outputs: a read-only folder fails with exit 1 naming the file") {
+  PBR_REQUIRE_GL();
+  if (::geteuid() == 0) {
+    MESSAGE("skipped: root writes into read-only folders, so the case cannot fail as a user would see it");
+    return;
+  }
+  const TempDir dir;
+  const fs::path folder = dir.path() / "read-only";
+  fs::create_directories(folder);
+  fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec);
+  const std::string png = (folder / "f.png").string();
+  const Run run = runPbr(dir, tinyRender({"--out", png}));
+  fs::permissions(folder, fs::perms::owner_all);
+  CHECK(run.exitCode == 1);
+  checkOneLineNaming(run, png + ": cannot write: Permission denied");
+  checkNotRendered(run);
+  CHECK(entries(folder).empty());
+}
+
+TEST_CASE("hostile outputs: an unknown capture extension fails before rendering with exit 2 naming the file") {
+  const TempDir dir;
+  const std::vector<std::vector<std::string>> cases = {
+      tinyRender({"--out", dir.file("f.jpg")}),
+      tinyRender({"--hdr", dir.file("f.hdr")}),
+      tinyRender({"--hdr", "/dev/full"}),  // a device says nothing of the format
+      {"reference", "--size", "32x18", "--hdr", dir.file("f.png")},
+      {"view", "--frames", "1", "--screenshot", dir.file("f.jpg")},
+  };
+  for (const auto& args : cases) {
+    const std::string& path = args[args.size() - 1];
+    CAPTURE(path);
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, path);
+    CHECK(run.out.empty());
+    if (path != "/dev/full") CHECK_FALSE(fs::exists(path));
+  }
+}
+
+TEST_CASE("hostile outputs: an option missing its value is named, not the option after it") {
+  const TempDir dir;
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"render", "--lights", "--size", "160x90"}, "--lights expects a value (N)"},
+      {{"render", "--size", "160x90", "--out"}, "--out expects a value (F.png)"},
+      {{"render", "--out=", "--size", "160x90"}, "--out expects a value (F.png), got an empty one"},
+      {{"render", "--scene", ""}, "--scene expects a value (NAME|FILE), got an empty one"},
+      {{"render", "--lights", "8", "--lights=16"}, "--lights is given more than once"},
+      {{"render", "--stats", "--stats"}, "--stats is given more than once"},
+      {{"bench", "--csv", "--json", "b.json"}, "--csv expects a value (F)"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.message);
+    const Run run = runPbr(dir, c.args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, c.message);
+    CHECK(run.out.empty());
+  }
+}
+
+TEST_CASE("hostile outputs: a frame larger than the limits fails before rendering, naming --size") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const Run huge = runPbr(dir, tinyRender({"--size", "100000x100000"}));
+  CHECK(huge.exitCode == 2);
+  checkOneLineNaming(huge, "--size expects WIDTHxHEIGHT with each side in [1, 16384], got '100000x100000'");
+  // Under GL_MAX_TEXTURE_SIZE but over the memory: an address-space limit of 6 GB leaves room for the context and
+  // not for 16384x16384 at 68 bytes per pixel (18 GB).
+  const Run memory = runPbr(dir, tinyRender({"--size", "16384x16384"}), "ulimit -v 6000000; ");
+  CHECK(memory.exitCode == 1);
+  checkOneLineNaming(memory, "--size 16384x16384: the frame needs about 18.3 GB (68 bytes per pixel)");
+  checkNotRendered(memory);
+  const Run pairCost = runPbr(dir, {"accuracy", "--variants", "exact", "--scenes", "sphere-grid", "--size", "32x18",
+                                    "--pair-size", "16384x16384", "--out-dir", dir.file("acc")},
+                              "ulimit -v 6000000; ");
+  CHECK(pairCost.exitCode == 1);
+  checkOneLineNaming(pairCost, "--pair-size 16384x16384");
+}
+
+TEST_CASE("hostile outputs: the frame-size check names the option and the limit it is over") {
+  pbr::RendererConfig lean;
+  CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 8 + 32);
+  pbr::RendererConfig wide;
+  wide.gbuffer = pbr::GBufferPrecision::Float;
+  wide.hdrFormat = pbr::HdrFormat::Rgba32f;
+  CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 8 + 32);
+
+  const pbr::FrameLimits limits{8192, 1'000'000'000};
+  CHECK_NOTHROW(pbr::checkFrameSize(8192, 16, "--size", 68, limits));
+  CHECK_THROWS_WITH(pbr::checkFrameSize(8193, 16, "--size", 68, limits),
+                    "--size 8193x16: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
+  CHECK_THROWS_WITH(pbr::checkFrameSize(16, 8193, "--pair-size", 68, limits),
+                    "--pair-size 16x8193: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
+  // 4000 x 4000 x 68 = 1.088 GB against 1 GB.
+  CHECK_THROWS_WITH(pbr::checkFrameSize(4000, 4000, "--size", 68, limits),
+                    "--size 4000x4000: the frame needs about 1.1 GB (68 bytes per pixel), over the 1.0 GB of memory "
+                    "available");
+  CHECK_NOTHROW(pbr::checkFrameSize(3800, 3800, "--size", 68, limits));
+}
+
+TEST_CASE("hostile outputs: a directory as an environment fails with exit 1 naming it") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const fs::path envs = dir.path() / "envs.hdr";
+  fs::create_directories(envs);
+  const Run option = runPbr(dir, tinyRender({"--environment", envs.string()}));
+  CHECK(option.exitCode == 1);
+  checkOneLineNaming(option, envs.string() + ": not a regular file (a directory)");
+  checkNotRendered(option);
+
+  const std::string scene = dir.write(
+      "s.json", R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]}, "environment": {"file": "envs.hdr"},
+                    "objects": [{"shape": "sphere"}]})");
+  const Run json = runPbr(dir, tinyRender({"--scene", scene}));
+  CHECK(json.exitCode == 1);
+  checkOneLineNaming(json, envs.string());
+  checkNotRendered(json);
+}
