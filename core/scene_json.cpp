@@ -15,6 +15,7 @@
 #include "core/builtin_scenes.hpp"
 #include "core/gltf_loader.hpp"
 #include "core/image.hpp"
+#include "core/input_file.hpp"
 #include "core/json_field.hpp"
 #include "core/json_file.hpp"
 #include "core/model_scene.hpp"
@@ -22,6 +23,16 @@
 namespace pbr {
 
 namespace {
+
+// The file a field names, refused by that field when it is missing or not a regular file.
+void requireRegularFile(const JsonField& field, const std::string& path) {
+  try {
+    pbr::requireRegularFile(path);
+  } catch (const std::runtime_error& e) {
+    field.fail(e.what());
+  }
+}
+
 
 namespace fs = std::filesystem;
 using R = NumberRule;
@@ -108,7 +119,7 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
   if (gltf.present()) {
     if (f["material"].present()) f["material"].fail("a glTF object takes its materials from its file");
     const std::string path = resolve(folder, gltf.string()).string();
-    if (!fs::is_regular_file(path)) gltf.fail("cannot open " + path);
+    requireRegularFile(gltf, path);
     try {
       appendGltf(scene, path, transform, policy);
     } catch (const SceneError& e) {
@@ -177,7 +188,7 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
   EnvironmentDesc e;
   if (file.present()) {
     e.file = resolve(folder, file.string()).string();
-    if (!fs::is_regular_file(e.file)) file.fail("cannot open " + e.file);
+    requireRegularFile(file, e.file);
   } else {
     e.sky = readSky(sky);
   }

@@ -76,7 +76,7 @@ const BadCase kBadCases[] = {
     // files the scene names
     {R"("metalness": 0})", R"("metalness": 0, "base_color_texture": "no/such.png"})", "objects[0].material.base_color_texture: "},
     {R"({"shape": "sphere", "transform": {"translate": [0, 1, 0], "scale": 2}, "material": {"base_color": [0.8, 0.2, 0.2], "roughness": 0.4, "metalness": 0}})",
-     R"({"gltf": "models/none.gltf"})", "objects[0].gltf: cannot open "},
+     R"({"gltf": "models/none.gltf"})", ": cannot open: No such file or directory"},
     // JSON syntax: line and column of the offending character
     {R"("exposure": 1,)", R"("exposure": 1,,)", ":3:17: JSON syntax error: "},
     {"[10, 20]}\n}\n", "[10, 20]}\n", ":12:1: JSON syntax error: "},
