@@ -31,23 +31,23 @@ for t in "${targets[@]}"; do
   dict=()
   [[ $t == scene_json_fuzzer || $t == gltf_fuzzer ]] && dict=(-dict=fuzz/json.dict)
   echo "fuzz: $t for ${seconds}s"
-  if ! "$build/fuzz/$t" "$build/corpus/$t" "${dict[@]}" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2048 \
+  if ! "$build/fuzz/$t" "$build/corpus/$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$build/crashes/$t/" >"$build/logs/$t.log" 2>&1; then
-    echo "fuzz: $t CRASHED: $(grep -m1 -E '^==[0-9]+==ERROR|runtime error|deadly signal|timeout|out-of-memory' \
+    echo "fuzz: $t CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after|out-of-memory' \
       "$build/logs/$t.log")"
     failed=1
   fi
-  grep -E '^#[0-9]+ *DONE|^stat::number_of_executed_units' "$build/logs/$t.log" | sed "s/^/fuzz: $t /"
+  grep -E '^#[0-9]+[[:space:]]+DONE|^stat::number_of_executed_units' "$build/logs/$t.log" | sed "s/^/fuzz: $t /"
 done
 
 for t in "${targets[@]}"; do
   for input in fuzz/regressions/"$t"/* "$build"/regressions/"$t"/*; do
     [[ -f $input ]] || continue
     log="$build/logs/regression-$t-$(basename "$input").log"
-    if "$build/fuzz/$t" "$input" >"$log" 2>&1; then
+    if "$build/fuzz/$t" -timeout=10 "$input" >"$log" 2>&1; then
       echo "regression: $t $input: ok"
     else
-      echo "regression: $t $input: CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal' "$log")"
+      echo "regression: $t $input: CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after' "$log")"
       failed=1
     fi
   done
