@@ -123,7 +123,8 @@ def gltf_seeds(project, assets, out):
                 path = model.parent / image["uri"]
                 image["uri"] = data_uri("image/png", checker) if not small_file(path) or path.stat().st_size > 65536 \
                     else data_uri("image/jpeg" if path.suffix == ".jpg" else "image/png", path.read_bytes())
-        if any(len(b) > 65536 for b in buffers) and all("uri" not in a.get("sparse", {}) for a in doc.get("accessors", [])):
+        sparse = any("sparse" in a for a in doc.get("accessors", []))  # reduce_geometry does not rewrite those
+        if any(len(b) > 65536 for b in buffers) and not sparse:
             buffers = reduce_geometry(doc, buffers)
         embedded = json.loads(json.dumps(doc))
         for buffer, data in zip(embedded.get("buffers", []), buffers):

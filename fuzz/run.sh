@@ -16,7 +16,8 @@ assets=${PBR_ASSETS:-../shared/assets}
 scripts/install-deps.sh --fuzz || exit 1
 mkdir -p "$build/logs"
 if ! { CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -DPBR_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-         -DPBR_WERROR=OFF && cmake --build "$build" -j "${JOBS:-2}" --target "${targets[@]}"; } >"$build/logs/build.log" 2>&1; then
+         -DPBR_WERROR=OFF && cmake --build "$build" -j "${JOBS:-2}" --target "${targets[@]}"; } \
+     >"$build/logs/build.log" 2>&1; then
   tail -40 "$build/logs/build.log"
   exit 1
 fi
