@@ -25,6 +25,11 @@ python3 fuzz/make_corpus.py . "$assets" "$build/corpus" || exit 1
 python3 fuzz/make_regressions.py "$build/regressions" || exit 1
 
 export UBSAN_OPTIONS=print_stacktrace=1
+# Each target process writes its inputs in a folder of its own under PBR_FUZZ_TMP (fuzz/temp_input.cpp); one that
+# crashes or times out cannot remove it, so the whole tree goes at the end of the run.
+PBR_FUZZ_TMP=$(mktemp -d /dev/shm/pbr-fuzz.XXXXXX 2>/dev/null || mktemp -d) || exit 1
+export PBR_FUZZ_TMP
+trap 'rm -rf "$PBR_FUZZ_TMP"' EXIT
 
 failed=0
 for t in "${targets[@]}"; do
