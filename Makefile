@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 BUILD_TYPE ?= Release
 
-.PHONY: deps configure build run test sanitize clean bench
+.PHONY: deps configure build run test sanitize clean bench fuzz
 
 deps:
 	@scripts/install-deps.sh
@@ -47,5 +47,12 @@ bench: build
 	  --csv $(BENCH_OUT)/pair-cost.csv --json $(BENCH_OUT)/pair-cost.json
 	scripts/plot_bench.py $(BENCH_OUT)/bench.csv --out $(BENCH_OUT)
 
+# The libFuzzer targets of fuzz/ (clang, ASan + UBSan, in build-fuzz/): each fuzzed for FUZZ_SECONDS, then every
+# regression input; fails on any crash. `make fuzz FUZZ_SECONDS=3600` for a long run.
+FUZZ_SECONDS ?= 60
+
+fuzz:
+	FUZZ_SECONDS=$(FUZZ_SECONDS) fuzz/run.sh
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize out
+	rm -rf $(BUILD) $(BUILD)-sanitize build-fuzz out

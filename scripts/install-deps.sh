@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build, the tests and the headless renderer need; a no-op when all are present.
+# --fuzz adds what the fuzz build needs (clang and libFuzzer, see fuzz/README.md), which nothing else uses.
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,9 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth
 )
+if [[ "${1:-}" == "--fuzz" ]]; then
+  packages+=(clang-14 libfuzzer-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,218 @@
+#!/usr/bin/env python3
+"""Writes the fuzzers' seed corpora, one folder per target, from the project's scenes and the shared assets.
+
+Seeds are generated rather than committed: the assets are not ours to copy, and most are too large to mutate
+quickly. Each target's input is a single file, so what a seed refers to is made self-contained or absolute:
+scene files name textures and models by absolute path, glTF buffers and images become data URIs (with GLB
+versions), Radiance pictures are cut to a few scanlines, and PNG seeds are small images in each PNG colour type.
+Usage: make_corpus.py PROJECT_DIR ASSETS_DIR OUT_DIR
+"""
+import base64
+import json
+import pathlib
+import struct
+import sys
+import zlib
+
+MAX_SEED_BYTES = 1 << 20  # larger inputs slow every execution that mutates them
+
+
+def write(folder, name, data):
+    if len(data) > MAX_SEED_BYTES:
+        return
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_bytes(data if isinstance(data, bytes) else data.encode())
+
+
+def small_file(path):
+    return path.is_file() and path.stat().st_size <= MAX_SEED_BYTES
+
+
+def absolute_paths(value, folder):
+    """Replaces strings naming a small file relative to `folder` with its absolute path."""
+    if isinstance(value, dict):
+        return {k: absolute_paths(v, folder) for k, v in value.items()}
+    if isinstance(value, list):
+        return [absolute_paths(v, folder) for v in value]
+    if isinstance(value, str) and small_file(folder / value):
+        return str((folder / value).resolve())
+    return value
+
+
+def scene_seeds(project, assets, out):
+    for scene in sorted((project / "scenes").glob("*.json")):
+        doc = absolute_paths(json.loads(scene.read_text()), scene.parent)
+        write(out, scene.name, json.dumps(doc, indent=1))
+    box = assets / "BoxTextured/glTF-Embedded/BoxTextured.gltf"
+    if box.is_file():
+        doc = {"camera": {"position": [0, 1, 4], "target": [0, 0, 0]}, "ambient": 0.1,
+               "objects": [{"gltf": str(box.resolve()), "transform": {"scale": 2}}],
+               "lights": [{"position": [1, 2, 3], "radius": 10, "luminous_power": 200}]}
+        write(out, "gltf-object.json", json.dumps(doc, indent=1))
+
+
+def data_uri(mime, data):
+    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
+
+
+def glb(doc, binary):
+    """A GLB container: the JSON chunk, then the BIN chunk holding buffer 0."""
+    text = json.dumps(doc, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(binary), b"BIN\0") + binary
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
+COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
+INDEX_FORMAT = {5121: "B", 5123: "H", 5125: "I"}
+KEPT_TRIANGLES = 64
+
+
+def reduce_geometry(doc, buffers):
+    """Keeps the first KEPT_TRIANGLES triangles of each indexed primitive and the vertices they use, repacking the
+    bytes still referenced into one buffer: a model's structure at a few kilobytes, which mutates quickly."""
+    accessors, views = doc.get("accessors", []), doc.get("bufferViews", [])
+
+    def element(a):
+        return COMPONENT_BYTES[a["componentType"]] * COMPONENTS[a["type"]]
+
+    def view_bytes(view):
+        data = buffers[view["buffer"]]
+        return data[view.get("byteOffset", 0):view.get("byteOffset", 0) + view["byteLength"]]
+
+    for mesh in doc.get("meshes", []):
+        for primitive in mesh.get("primitives", []):
+            if "indices" not in primitive:
+                continue
+            indices = accessors[primitive["indices"]]
+            indices["count"] = min(indices["count"], 3 * KEPT_TRIANGLES)
+            fmt = INDEX_FORMAT[indices["componentType"]]
+            raw = view_bytes(views[indices["bufferView"]])[indices.get("byteOffset", 0):]
+            used = max(struct.unpack_from("<%d%s" % (indices["count"], fmt), raw)) + 1
+            for attribute in primitive["attributes"].values():
+                accessors[attribute]["count"] = min(accessors[attribute]["count"], used)
+    needed = {}
+    for a in accessors:
+        if "bufferView" in a:
+            view = views[a["bufferView"]]
+            size = a.get("byteOffset", 0) + (a["count"] - 1) * view.get("byteStride", element(a)) + element(a)
+            needed[a["bufferView"]] = max(needed.get(a["bufferView"], 0), size)
+    packed = b""
+    for index, view in enumerate(views):
+        data = view_bytes(view)[:needed.get(index, view["byteLength"])]
+        view.update(buffer=0, byteOffset=len(packed), byteLength=len(data))
+        packed += data + b"\0" * (-len(data) % 4)
+    doc["buffers"] = [{"byteLength": len(packed)}]
+    return [packed]
+
+
+def gltf_seeds(project, assets, out):
+    checker = (project / "scenes/textures/checker.png").read_bytes()
+    for model in sorted(assets.rglob("*.gltf")):
+        doc = json.loads(model.read_text())
+        buffers = []
+        for buffer in doc.get("buffers", []):
+            uri = buffer.get("uri", "")
+            buffers.append(base64.b64decode(uri.split(",", 1)[1]) if uri.startswith("data:")
+                           else (model.parent / uri).read_bytes())
+        # Large textures are replaced by a small PNG: the decoder has its own target.
+        for image in doc.get("images", []):
+            if "uri" in image and not image["uri"].startswith("data:"):
+                path = model.parent / image["uri"]
+                image["uri"] = data_uri("image/png", checker) if not small_file(path) or path.stat().st_size > 65536 \
+                    else data_uri("image/jpeg" if path.suffix == ".jpg" else "image/png", path.read_bytes())
+        sparse = any("sparse" in a for a in doc.get("accessors", []))  # reduce_geometry does not rewrite those
+        if any(len(b) > 65536 for b in buffers) and not sparse:
+            buffers = reduce_geometry(doc, buffers)
+        embedded = json.loads(json.dumps(doc))
+        for buffer, data in zip(embedded.get("buffers", []), buffers):
+            buffer["uri"] = data_uri("application/octet-stream", data)
+        write(out, model.stem + ".gltf", json.dumps(embedded))
+        if len(buffers) == 1:
+            doc["buffers"][0].pop("uri", None)
+            doc["buffers"][0]["byteLength"] = len(buffers[0])
+            write(out, model.stem + ".glb", glb(doc, buffers[0]))
+
+
+def rle_scanline_end(data, start, width):
+    """End offset of one new-style run-length scanline starting at `start`: 4 header bytes, then 4 channels."""
+    pos = start + 4
+    for _ in range(4):
+        done = 0
+        while done < width:
+            count = data[pos]
+            run = count > 128
+            n = count - 128 if run else count
+            pos += 2 if run else 1 + n
+            done += n
+    return pos
+
+
+def hdr_seeds(assets, out):
+    for picture in sorted(assets.rglob("*.hdr")):
+        data = picture.read_bytes()
+        header_end = data.index(b"\n\n") + 2
+        line_end = data.index(b"\n", header_end) + 1
+        width = int(data[header_end:line_end].split()[3])
+        rows = 4
+        pos = line_end
+        for _ in range(rows):
+            pos = rle_scanline_end(data, pos, width)
+        resolution = b"-Y %d +X %d\n" % (rows, width)
+        write(out, picture.stem + "-rows.hdr", data[:header_end] + resolution + data[line_end:pos])
+    header = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n"
+    write(out, "flat.hdr", header + bytes(range(64)))
+
+
+def png(width, height, colour_type, depth, rows, palette=None):
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+    raw = b"".join(b"\0" + row for row in rows)
+    body = chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, depth, colour_type, 0, 0, 0))
+    if palette:
+        body += chunk(b"PLTE", palette)
+    return b"\x89PNG\r\n\x1a\n" + body + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+def texture_seeds(project, assets, out):
+    write(out, "checker.png", (project / "scenes/textures/checker.png").read_bytes())
+    n = 8
+    grey = [bytes((x * 32 + y) % 256 for x in range(n)) for y in range(n)]
+    write(out, "grey8.png", png(n, n, 0, 8, grey))
+    write(out, "grey16.png", png(n, n, 0, 16, [bytes(b for v in r for b in (v, v)) for r in grey]))
+    write(out, "rgb8.png", png(n, n, 2, 8, [bytes(b for v in r for b in (v, 255 - v, v // 2)) for r in grey]))
+    write(out, "rgba8.png", png(n, n, 6, 8, [bytes(b for v in r for b in (v, v, 255 - v, v)) for r in grey]))
+    write(out, "grey-alpha8.png", png(n, n, 4, 8, [bytes(b for v in r for b in (v, 255 - v)) for r in grey]))
+    write(out, "palette4.png", png(n, n, 3, 4, [bytes(((v % 16) << 4 | (v % 16)) for v in r[: n // 2]) for r in grey],
+                                   palette=bytes(range(48))))
+    for jpeg in sorted(assets.rglob("*.jpg")):
+        write(out, jpeg.stem + "-corner.jpg", jpeg_corner(jpeg.read_bytes()))
+
+
+def jpeg_corner(data, size=32, scan_bytes=4096):
+    """The top-left size x size pixels of a baseline or progressive JPEG, without re-encoding: the frame header
+    says the smaller size, the entropy-coded data is cut after `scan_bytes` (that corner's blocks come first),
+    and an end-of-image marker follows. A 2048^2 texture decodes 20 times a second under the sanitizers."""
+    pos = 2
+    while pos + 4 <= len(data):
+        marker, length = data[pos + 1], struct.unpack(">H", data[pos + 2:pos + 4])[0]
+        if marker in (0xC0, 0xC1, 0xC2):
+            data = data[:pos + 5] + struct.pack(">HH", size, size) + data[pos + 9:]
+        if marker == 0xDA:
+            return data[:pos + 2 + length + scan_bytes] + b"\xff\xd9"
+        pos += 2 + length
+    return data
+
+
+def main():
+    project, assets, out = (pathlib.Path(a) for a in sys.argv[1:4])
+    scene_seeds(project, assets, out / "scene_json_fuzzer")
+    gltf_seeds(project, assets, out / "gltf_fuzzer")
+    hdr_seeds(assets, out / "radiance_hdr_fuzzer")
+    texture_seeds(project, assets, out / "texture_fuzzer")
+
+
+if __name__ == "__main__":
+    main()
