@@ -1,10 +1,10 @@
 #include "ibl/radiance_hdr.hpp"
 
-#include <stb_image.h>
-
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/image.hpp"
@@ -14,7 +14,7 @@ namespace pbr {
 
 namespace {
 
-// stb_image's limits: header lines up to 1024 bytes, run-length scanlines 8 to 32767 pixels wide.
+// Header lines up to 1024 bytes; run-length scanlines are 8 to 32767 pixels wide, the 15 bits of their length.
 constexpr size_t kMaxHeaderLine = 1024;
 constexpr int kMaxSide = 32767;
 
@@ -72,31 +72,54 @@ void readHeader(HdrReader& in, int& width, int& height) {
   }
 }
 
-// Walks the pixel data the way stb_image will decode it, so that a short or malformed file fails here instead.
-void checkPixels(HdrReader& in, int width, int height) {
+// One RGBE pixel as linear RGB, alpha 1: mantissas times 2^(e - 128 - 8), zero for e = 0 (Ward 1991, "Real Pixels").
+void storeRgbe(const unsigned char rgbe[4], float* out) {
+  const float scale = rgbe[3] == 0 ? 0.0f : std::ldexp(1.0f, int(rgbe[3]) - (128 + 8));
+  out[0] = rgbe[0] * scale;
+  out[1] = rgbe[1] * scale;
+  out[2] = rgbe[2] * scale;
+  out[3] = 1.0f;
+}
+
+// Decodes the pixels after the header: flat RGBE quadruples, or (width 8 to 32767) run-length scanlines of four
+// channel runs each. Every length is checked against what is left of the scanline and of the file, so a short or
+// malformed file fails with the scanline named and no input can loop.
+ImageRgbaF decodePixels(HdrReader& in, int width, int height) {
+  ImageRgbaF image{width, height, std::vector<float>(size_t{4} * width * height)};
   const size_t flatBytes = size_t{4} * width * height;
   const auto truncated = [&](int row) {
     in.fail("truncated Radiance file (pixel data ends in scanline " + std::to_string(row) + " of " +
             std::to_string(height) + ")");
   };
+  const auto decodeFlat = [&](size_t firstPixel, const unsigned char* first) {
+    unsigned char rgbe[4];
+    for (size_t p = firstPixel; p < size_t(width) * height; ++p) {
+      for (int c = 0; c < 4; ++c) rgbe[c] = first && p == firstPixel ? first[c] : in.next();
+      storeRgbe(rgbe, &image.pixels[p * 4]);
+    }
+  };
   if (width < 8) {
     if (in.left() < flatBytes) truncated(static_cast<int>(in.left() / (size_t{4} * width)));
-    return;
+    decodeFlat(0, nullptr);
+    return image;
   }
+  std::vector<unsigned char> scanline(size_t{4} * width);  // channel-major: all reds, all greens, ...
   for (int row = 0; row < height; ++row) {
     if (in.left() < 4) truncated(row);
-    const unsigned char c1 = in.next(), c2 = in.next(), hi = in.next(), lo = in.next();
-    if (c1 != 2 || c2 != 2 || (hi & 0x80)) {
-      // Not run-length encoded: stb_image then reads the whole picture as flat pixels, from this scanline on.
+    const unsigned char start[4] = {in.next(), in.next(), in.next(), in.next()};
+    if (start[0] != 2 || start[1] != 2 || (start[2] & 0x80)) {
+      // Not run-length encoded: the whole picture is flat pixels, from this scanline on.
       if (row > 0) in.fail("Radiance scanline " + std::to_string(row) + " is flat after run-length scanlines");
       if (in.left() + 4 < flatBytes) truncated(static_cast<int>((in.left() + 4) / (size_t{4} * width)));
-      return;
+      decodeFlat(0, start);
+      return image;
     }
-    if (((hi << 8) | lo) != width) {
-      in.fail("corrupt Radiance scanline " + std::to_string(row) + " (its length " + std::to_string((hi << 8) | lo) +
-              " is not the width " + std::to_string(width) + ")");
+    if (((start[2] << 8) | start[3]) != width) {
+      in.fail("corrupt Radiance scanline " + std::to_string(row) + " (its length " +
+              std::to_string((start[2] << 8) | start[3]) + " is not the width " + std::to_string(width) + ")");
     }
     for (int channel = 0; channel < 4; ++channel) {
+      unsigned char* out = &scanline[size_t(channel) * width];
       for (int x = 0; x < width;) {
         if (in.left() < 1) truncated(row);
         const unsigned count = in.next();
@@ -106,13 +129,22 @@ void checkPixels(HdrReader& in, int width, int height) {
           in.fail("corrupt Radiance scanline " + std::to_string(row) + " (a run of " + std::to_string(n) +
                   " pixels where " + std::to_string(width - x) + " are left)");
         }
-        const size_t payload = run ? 1 : n;
-        if (in.left() < payload) truncated(row);
-        in.skip(payload);
+        if (in.left() < (run ? 1 : n)) truncated(row);
+        if (run) {
+          std::fill_n(out + x, n, in.next());
+        } else {
+          for (unsigned i = 0; i < n; ++i) out[x + int(i)] = in.next();
+        }
         x += static_cast<int>(n);
       }
     }
+    for (int x = 0; x < width; ++x) {
+      const unsigned char rgbe[4] = {scanline[size_t(x)], scanline[size_t(width) + x], scanline[size_t(2) * width + x],
+                                     scanline[size_t(3) * width + x]};
+      storeRgbe(rgbe, &image.pixels[(size_t(row) * width + x) * 4]);
+    }
   }
+  return image;
 }
 
 }  // namespace
@@ -124,18 +156,7 @@ ImageRgbaF readRadianceHdr(const std::string& path) {
   HdrReader reader(path, bytes);
   int width = 0, height = 0;
   readHeader(reader, width, height);
-  checkPixels(reader, width, height);
-
-  int w = 0, h = 0, channels = 0;
-  std::unique_ptr<float, void (*)(void*)> pixels(
-      stbi_loadf_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4), stbi_image_free);
-  if (!pixels) reader.fail("cannot decode Radiance pixels" + decoderFailureReason());
-  if (w != width || h != height) reader.fail("decoded size differs from the header");
-  ImageRgbaF image;
-  image.width = w;
-  image.height = h;
-  image.pixels.assign(pixels.get(), pixels.get() + size_t{4} * w * h);
-  return image;
+  return decodePixels(reader, width, height);
 }
 
 }  // namespace pbr
