@@ -58,9 +58,54 @@ std::string decoderFailureReason() {
   return reason && *reason ? std::string(": ") + reason : std::string();
 }
 
+namespace {
+
+// stb_image builds each JPEG Huffman table into fixed arrays of 257 entries without checking that the 16 code
+// counts sum to at most 256 (ITU T.81 B.2.4.2), so a corrupt DHT segment writes past them. Walks the marker
+// segments (skipping entropy-coded data, stuffed bytes and restart markers) and returns what is wrong, or "".
+std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
+  if (size < 2 || b[0] != 0xFF || b[1] != 0xD8) return "";  // not a JPEG
+  for (size_t pos = 2; pos + 1 < size;) {
+    if (b[pos] != 0xFF) {
+      ++pos;
+      continue;
+    }
+    const unsigned marker = b[pos + 1];
+    if (marker == 0x00 || marker == 0xFF) {  // a stuffed 0xFF in entropy-coded data, or fill
+      ++pos;
+      continue;
+    }
+    if ((marker >= 0xD0 && marker <= 0xD8) || marker == 0x01) {  // RSTn, SOI, TEM: no length
+      pos += 2;
+      continue;
+    }
+    if (marker == 0xD9) return "";  // EOI
+    if (pos + 4 > size) return "truncated JPEG marker segment";
+    const size_t length = size_t(b[pos + 2]) << 8 | b[pos + 3];
+    if (length < 2 || pos + 2 + length > size) return "truncated JPEG marker segment";
+    if (marker == 0xC4) {
+      const size_t end = pos + 2 + length;
+      for (size_t table = pos + 4; table < end;) {
+        if (table + 17 > end) return "truncated JPEG Huffman table";
+        size_t codes = 0;
+        for (int i = 1; i <= 16; ++i) codes += b[table + i];
+        if (codes > 256) return "a JPEG Huffman table with " + std::to_string(codes) + " codes (at most 256)";
+        table += 17 + codes;
+        if (table > end) return "a JPEG Huffman table longer than its segment";
+      }
+    }
+    pos += 2 + length;
+  }
+  return "";
+}
+
+}  // namespace
+
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
+  const std::string jpegProblem = jpegHuffmanProblem(bytes, size);
+  if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &n, 4), stbi_image_free);
