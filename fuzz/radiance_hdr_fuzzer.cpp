@@ -1,4 +1,4 @@
-// Radiance .hdr environments (ibl/radiance_hdr.*): the header and scanline checks, then stb_image's decoder.
+// Radiance .hdr environments (ibl/radiance_hdr.*): the header reader and the checked run-length decoder.
 // Rejections throw std::runtime_error; any other exception escapes and is reported as a crash.
 #include <cstddef>
 #include <cstdint>
