@@ -9,6 +9,7 @@
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
 #include "app/args.hpp"
+#include "app/bench_report.hpp"
 #include "app/chart_script.hpp"
 #include "app/brdf_slice.hpp"
 #include "app/commands.hpp"
@@ -159,19 +160,20 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const auto writeRow = [&](const std::string& name, const std::string& scene, const std::string& model,
                             const std::string& terms, const std::string& hdr, const std::string& gbuffer,
                             const PairCost* c, const ErrorMetrics& m) {
-    const auto cell = [&](double v) { return c ? std::to_string(v) : std::string("n/a"); };
+    // The geometry rows have no cost: "n/a" in the CSV, "-" in the table.
+    const auto cell = [&](double v, int decimals) { return c ? fixedDecimals(v, decimals) : std::string("n/a"); };
     csv << name << ',' << scene << ',' << model << ",\"" << terms << "\"," << hdr << ',' << gbuffer << ','
-        << cell(c ? c->nsPerPair.median : 0) << ',' << cell(c ? c->nsPerPair.p10 : 0) << ','
-        << cell(c ? c->nsPerPair.p90 : 0) << ',' << cell(c ? c->fixedShare : 0) << ',' << m.relativeRmse << ','
+        << cell(c ? c->nsPerPair.median : 0, 4) << ',' << cell(c ? c->nsPerPair.p10 : 0, 4) << ','
+        << cell(c ? c->nsPerPair.p90 : 0, 4) << ',' << cell(c ? c->fixedShare : 0, 4) << ',' << m.relativeRmse << ','
         << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << '\n';
-    char spread[40] = "-";
-    if (c) std::snprintf(spread, sizeof spread, "%.3f-%.3f", c->nsPerPair.p10, c->nsPerPair.p90);
-    std::printf("%-16s %-18s %9s %17s %10.4g %8.3f %6.0f %8.4f\n", name.c_str(), scene.c_str(),
-                c ? std::to_string(c->nsPerPair.median).substr(0, 6).c_str() : "-", spread, m.relativeRmse,
-                m.meanLevels, m.maxLevels, m.shareOver2);
+    const std::string perPair = c ? fixedDecimals(c->nsPerPair.median, 3) : "-";
+    const std::string spread =
+        c ? fixedDecimals(c->nsPerPair.p10, 3) + "-" + fixedDecimals(c->nsPerPair.p90, 3) : std::string("-");
+    std::printf("%-16s %-18s %9s %17s %10.4g %8.3f %6.0f %8.4f\n", name.c_str(), scene.c_str(), perPair.c_str(),
+                spread.c_str(), m.relativeRmse, m.meanLevels, m.maxLevels, m.shareOver2);
   };
   for (const AccuracyScene& s : scenes) {
-    reference::ReferenceOptions refOptions = referenceOptions;
+    reference::ReferenceOptions refOptions = referenceOptions;  // meshes; the geometry row switches a copy
     const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
     const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
     // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.

@@ -17,12 +17,6 @@ using Record = std::vector<std::pair<std::string, std::string>>;
 const std::string kSkipped = "skipped";
 const std::string kNotApplicable = "n/a";
 
-std::string number(double v, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, v);
-  return text;
-}
-
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
   std::string out = "\"";
@@ -46,7 +40,7 @@ double statValue(const TimeSummary& t, int i) {
 
 void addTimes(Record& record, const std::string& prefix, const TimeSummary* times, const std::string& missing) {
   for (int i = 0; i < 5; ++i) {
-    record.emplace_back(prefix + "_" + kStatNames[i] + "_ms", times ? number(statValue(*times, i), 4) : missing);
+    record.emplace_back(prefix + "_" + kStatNames[i] + "_ms", times ? fixedDecimals(statValue(*times, i), 4) : missing);
   }
 }
 
@@ -72,7 +66,7 @@ Record settingsRecord(const BenchSettings& s) {
           {"models", joined(s.models)},
           {"warmup_frames", std::to_string(s.warmup)},
           {"timed_frames", std::to_string(s.frames)},
-          {"max_seconds", number(s.maxSeconds, 3)},
+          {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
           {"constant_density", s.constantDensity ? density : "no"},
           {"timing_requested", s.timing}};
 }
@@ -87,11 +81,11 @@ Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
                 {"lights", std::to_string(r.config.lights)},
                 {"culling", toString(r.config.culling)},
                 {"model", toString(r.config.model)},
-                {"light_radius_scale", number(r.config.radiusScale, 4)},
+                {"light_radius_scale", fixedDecimals(r.config.radiusScale, 4)},
                 {"status", ok ? "ok" : kSkipped},
                 {"skip_reason", ok ? "none" : r.skipReason},
-                {"estimated_s", number(r.estimatedSeconds, 3)},
-                {"elapsed_s", number(r.elapsedSeconds, 3)},
+                {"estimated_s", fixedDecimals(r.estimatedSeconds, 3)},
+                {"elapsed_s", fixedDecimals(r.elapsedSeconds, 3)},
                 {"timed_frames", std::to_string(r.frames.size())}};
   for (const std::string& name : passes) {
     const PassSummary* p = r.pass(name);
@@ -107,18 +101,18 @@ Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
       {"surviving_lights", cluster(std::to_string(s.visibleLights))},
       {"clusters", cluster(std::to_string(s.clusters))},
       {"non_empty_clusters", cluster(std::to_string(s.nonEmptyClusters))},
-      {"avg_lights_per_cluster", cluster(number(s.averagePerNonEmpty(), 3))},
+      {"avg_lights_per_cluster", cluster(fixedDecimals(s.averagePerNonEmpty(), 3))},
       {"max_lights_per_cluster", cluster(std::to_string(s.maxPerCluster))},
       {"index_entries", cluster(std::to_string(s.indexEntries))},
       {"overflowed_clusters", cluster(std::to_string(s.overflowedClusters))},
       {"pairs_evaluated", measured(std::to_string(s.pairs.evaluated))},
       {"pairs_contributing", measured(std::to_string(s.pairs.contributing))},
-      {"culling_efficiency", measured(number(s.cullingEfficiency(), 5))},
+      {"culling_efficiency", measured(fixedDecimals(s.cullingEfficiency(), 5))},
       {"gbuffer_bytes", measured(std::to_string(r.memory.gbuffer))},
       {"cluster_bytes", measured(std::to_string(r.memory.clusters))},
       {"light_bytes", measured(std::to_string(r.memory.lights))},
       {"gpu_bytes", measured(std::to_string(r.memory.total()))},
-      {"process_cpu_share", measured(number(r.processCpuShare, 3))}};
+      {"process_cpu_share", measured(fixedDecimals(r.processCpuShare, 3))}};
   rec.insert(rec.end(), stats.begin(), stats.end());
   return rec;
 }
@@ -192,6 +186,12 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
 
 }  // namespace
 
+std::string fixedDecimals(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, v);
+  return text;
+}
+
 void writeBenchCsv(std::ostream& out, const BenchReport& report) {
   for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << oneLine(value) << "\n";
   for (const auto& [key, value] : settingsRecord(report.settings)) out << "# " << key << ": " << value << "\n";
@@ -250,18 +250,18 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
     if (!r.skipped) {
       for (const std::string& name : passes) {
         const PassSummary* p = r.pass(name);
-        row.push_back(p ? number(p->ms.median, 2) : "-");
+        row.push_back(p ? fixedDecimals(p->ms.median, 2) : "-");
       }
       const bool clustered = r.config.culling == Culling::Clustered;
-      row.push_back(number(r.frameTime.median, 2));
-      row.push_back(number(r.frameTime.p10, 1) + "-" + number(r.frameTime.p90, 1));
-      row.push_back(number(r.cpuTime.median, 2));
-      row.push_back(clustered ? number(r.stats.averagePerNonEmpty(), 1) + " (max " +
+      row.push_back(fixedDecimals(r.frameTime.median, 2));
+      row.push_back(fixedDecimals(r.frameTime.p10, 1) + "-" + fixedDecimals(r.frameTime.p90, 1));
+      row.push_back(fixedDecimals(r.cpuTime.median, 2));
+      row.push_back(clustered ? fixedDecimals(r.stats.averagePerNonEmpty(), 1) + " (max " +
                                     std::to_string(r.stats.maxPerCluster) + ")"
                               : "-");
-      row.push_back(number(r.stats.cullingEfficiency(), 3));
-      row.push_back(number(static_cast<double>(r.memory.total()) / (1 << 20), 1));
-      row.push_back(number(r.processCpuShare * 100.0, 0) + "%");
+      row.push_back(fixedDecimals(r.stats.cullingEfficiency(), 3));
+      row.push_back(fixedDecimals(static_cast<double>(r.memory.total()) / (1 << 20), 1));
+      row.push_back(fixedDecimals(r.processCpuShare * 100.0, 0) + "%");
     }
     rows.push_back(row);
   }

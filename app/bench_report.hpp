@@ -1,11 +1,15 @@
 #pragma once
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "app/bench_sweep.hpp"
 #include "core/provenance.hpp"
 
 namespace pbr {
+
+// `v` with `decimals` digits after the point, as report cells print numbers.
+std::string fixedDecimals(double v, int decimals);
 
 // Everything `pbr bench` measured, and under which circumstances.
 struct BenchReport {

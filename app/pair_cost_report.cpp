@@ -1,5 +1,7 @@
 #include "app/pair_cost_report.hpp"
 
+#include "app/bench_report.hpp"
+
 #include <cstdio>
 #include <string>
 
@@ -10,12 +12,6 @@ namespace pbr {
 namespace {
 
 std::string terms(const AccuracyVariant& v) { return describeTerms(v.model, v.shading); }
-
-std::string fixed(double v, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 }  // namespace
 
@@ -31,8 +27,8 @@ void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
     const PairCost& c = report.costs[i];
     out << v.name << ',' << toString(v.model) << ",\"" << terms(v) << "\"," << toString(v.hdr) << ','
         << toString(v.gbuffer) << ',' << s.size.x << ',' << s.size.y << ',' << s.lights << ',' << s.rounds << ','
-        << fixed(c.nsPerPair.median, 4) << ',' << fixed(c.nsPerPair.p10, 4) << ',' << fixed(c.nsPerPair.p90, 4) << ','
-        << fixed(c.nsPerPair.min, 4) << ',' << fixed(c.nsPerPair.max, 4) << ',' << fixed(c.fixedShare, 4) << ','
+        << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ',' << fixedDecimals(c.nsPerPair.p90, 4) << ','
+        << fixedDecimals(c.nsPerPair.min, 4) << ',' << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
         << c.pairs << '\n';
   }
 }

@@ -88,8 +88,7 @@ WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, i
   if (options.culling != Culling::Clustered) return report;
   // Light lists only grow: a few rounds fit any static frame; the bound guards against a list at its limit.
   constexpr int kMaxSizingFrames = 4;
-  while (clusters_.readStatus().overflowed > 0 && report.listSizingFrames < kMaxSizingFrames &&
-         clusters_.growToDemand()) {
+  while (report.listSizingFrames < kMaxSizingFrames && clusters_.growToDemand()) {
     renderFrame(options, profiler);
     ++report.frames;
     ++report.listSizingFrames;

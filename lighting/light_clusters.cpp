@@ -123,8 +123,13 @@ void LightClusters::growFromPastDemand() {
     p.fence = nullptr;
     ClusterStatus s{};
     glGetNamedBufferSubData(p.buffer->id(), 0, sizeof s, &s);
-    if (s.demand > capacity_) ensureCapacity(static_cast<uint64_t>(s.demand) + s.demand / 4);
+    growTo(s.demand);
   }
+}
+
+// A quarter of headroom, so that demand creeping up frame by frame does not regrow the list every frame.
+void LightClusters::growTo(uint32_t demand) {
+  if (demand > capacity_) ensureCapacity(static_cast<uint64_t>(demand) + demand / 4);
 }
 
 void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
@@ -205,8 +210,7 @@ std::vector<std::vector<uint32_t>> LightClusters::readLists() const {
 
 bool LightClusters::growToDemand() {
   const uint32_t before = capacity_;
-  const ClusterStatus s = readStatus();
-  if (s.demand > capacity_) ensureCapacity(static_cast<uint64_t>(s.demand) + s.demand / 4);
+  growTo(readStatus().demand);
   return capacity_ > before;
 }
 

@@ -49,7 +49,7 @@ class LightClusters {
   // This frame's status; waits for the GPU (use at the end of a run or in stats mode).
   ClusterStatus readStatus() const;
   // Grows the list at once to this frame's measured demand (waits for the GPU: for warm-up, not timed frames).
-  // False when the list cannot grow, at its memory limit or out of memory.
+  // False when it did not grow: the demand fits, or the list is at its memory limit or out of memory.
   bool growToDemand();
 
   // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
@@ -63,6 +63,7 @@ class LightClusters {
  private:
   void rebuildGrid(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame);
   void growFromPastDemand();
+  void growTo(uint32_t demand);
   void ensureCapacity(uint64_t entries);
   void ensureLightBuffers(uint32_t lights);
 
