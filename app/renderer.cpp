@@ -15,6 +15,7 @@ Environment loadEnvironment(const EnvironmentDesc& e) {
 // Called while width_ is initialised, before any member allocates a target: an impossible size fails here.
 int checkedWidth(int width, int height, const RendererConfig& config) {
   checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config), queryFrameLimits());
+  checkFrameFormats(width, height, config.sizeOption, frameFormats(config));
   return width;
 }
 

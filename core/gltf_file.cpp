@@ -13,7 +13,7 @@
 #include "core/glb_container.hpp"
 #include "core/gltf_json_check.hpp"
 #include "core/input_file.hpp"
-#include "core/json_text.hpp"
+#include "core/json_file.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -66,20 +66,6 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-// The JSON text of the file, parsed after the nesting check; a syntax error names its line and column.
-nlohmann::json parseGltfJson(const std::string& text, const std::string& path) {
-  checkJsonNesting(text, path);
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw SceneError(path + ":" + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1) + ": not valid JSON");
-  } catch (const nlohmann::json::exception& e) {
-    // A number beyond double range ("1e999") is the one other failure: nlohmann names the literal.
-    const std::string what = e.what(), reason = what.substr(what.find(']') + 2);
-    throw SceneError(path + ": not valid JSON: " + (reason.size() <= 80 ? reason : reason.substr(0, 77) + "..."));
-  }
-}
-
 }  // namespace
 
 void GltfFile::fail(const std::string& what) const { throw SceneError(path + ": " + what); }
@@ -104,7 +90,7 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
     jsonText = chunks.json;
     if (chunks.hasBin) context.binChunk = chunks.binLength;
   }
-  const nlohmann::json doc = parseGltfJson(glb ? jsonText : bytes, path);
+  const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path);
   checkGltfJson(doc, context);
 
   tinygltf::TinyGLTF loader;

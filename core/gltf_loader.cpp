@@ -22,9 +22,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// The renderer works in float: framing a model, placing the default lights and culling lights square distances,
-// which overflow past about 1e19. Coordinates, after every transform, stay within this, far beyond any real model.
-constexpr double kMaxCoordinate = 1e12;
 // A transform that shrinks volume by more than this (a uniform scale of 1e-10) leaves nothing to see and a normal
 // matrix that overflows; zero collapses the model entirely.
 constexpr double kMinDeterminant = 1e-30;
@@ -360,8 +357,9 @@ class Loader {
     // Values finite as written may overflow float once converted or multiplied; name what the file wrote.
     if (!std::isfinite(light.luminousPower)) file_.fail(name + ".intensity: too large (got " + number(l.intensity) + ")");
     if (!std::isfinite(brightest)) file_.fail(name + ".color: too large");
-    if (!std::isfinite(light.radius)) {
-      file_.fail(name + (l.range > 0.0 ? ".range" : ".intensity") + ": gives an infinite light radius");
+    if (!(light.radius <= kMaxCoordinate)) {
+      file_.fail(name + (l.range > 0.0 ? ".range" : ".intensity") + ": gives a light radius beyond the coordinate limit " +
+                 number(kMaxCoordinate));
     }
     scene_.lights.push_back(light);
   }

@@ -120,6 +120,10 @@ json readJsonFile(const std::string& path) {
   } catch (const std::runtime_error& e) {
     throw SceneError(e.what());
   }
+  return parseJsonText(text, path);
+}
+
+json parseJsonText(const std::string& text, const std::string& path) {
   checkJsonNesting(text, path);
 
   json root;

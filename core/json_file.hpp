@@ -10,4 +10,8 @@ namespace pbr {
 // out of range also names its JSON path).
 nlohmann::json readJsonFile(const std::string& path);
 
+// Parses JSON text read from `path` (a glTF file or a GLB's JSON chunk) with the checks and messages of
+// readJsonFile.
+nlohmann::json parseJsonText(const std::string& text, const std::string& path);
+
 }  // namespace pbr

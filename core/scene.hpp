@@ -14,6 +14,11 @@
 
 namespace pbr {
 
+// The renderer works in float: framing a model, placing the default lights and culling lights square distances,
+// which overflow past about 1e19. Coordinates and light radii, after every transform, stay within this, far beyond
+// any real scene; the loaders refuse what is further out by the field that put it there.
+constexpr double kMaxCoordinate = 1e12;
+
 // A decoded image for a material, with its glTF sampler state (GL enums).
 struct TextureData {
   std::string name;  // file or glTF image name, for messages

@@ -37,6 +37,11 @@ void requireRegularFile(const JsonField& field, const std::string& path) {
 namespace fs = std::filesystem;
 using R = NumberRule;
 
+// Positions within the renderer's coordinate limit; a scale between 1e-9 and 1e12 (zero would collapse the normal
+// matrix, a negative scale would turn faces inside out).
+const R kCoordinate = R::closed(-kMaxCoordinate, kMaxCoordinate);
+const R kScale = R::closed(1e-9, kMaxCoordinate);
+
 // The command line's --lights limit: a typo must not allocate gigabytes.
 constexpr uint64_t kMaxRandomLights = 1u << 20;
 
@@ -48,8 +53,8 @@ fs::path resolve(const fs::path& folder, const std::string& path) {
 
 Camera readCamera(const JsonField& f) {
   Camera c;
-  c.position = f["position"].vec3(R::any());
-  c.target = f["target"].vec3(R::any());
+  c.position = f["position"].vec3(kCoordinate);
+  c.target = f["target"].vec3(kCoordinate);
   c.up = f["up"].vec3(R::any(), c.up);
   c.fovYDeg = f["fov_y_deg"].number(R::open(0.0, 180.0), c.fovYDeg);
   c.nearPlane = f["near"].number(R::above(0.0), c.nearPlane);
@@ -66,10 +71,9 @@ Camera readCamera(const JsonField& f) {
 
 // M = T * Rz * Ry * Rx * S: scale, then rotate about X, then Y, then Z, then translate.
 glm::mat4 readTransform(const JsonField& f) {
-  const glm::vec3 translate = f["translate"].vec3(R::any(), glm::vec3(0.0f));
+  const glm::vec3 translate = f["translate"].vec3(kCoordinate, glm::vec3(0.0f));
   const glm::vec3 rotate = f["rotate_deg"].vec3(R::any(), glm::vec3(0.0f));
-  // Zero would collapse the normal matrix and a negative scale would turn faces inside out.
-  const glm::vec3 scale = f["scale"].vec3OrNumber(R::above(0.0), glm::vec3(1.0f));
+  const glm::vec3 scale = f["scale"].vec3OrNumber(kScale, glm::vec3(1.0f));
   glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
   m = glm::rotate(m, glm::radians(rotate.z), glm::vec3(0.0f, 0.0f, 1.0f));
   m = glm::rotate(m, glm::radians(rotate.y), glm::vec3(0.0f, 1.0f, 0.0f));
@@ -135,9 +139,9 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
 
 PointLight readLight(const JsonField& f) {
   PointLight l;
-  l.position = f["position"].vec3(R::any());
+  l.position = f["position"].vec3(kCoordinate);
   l.color = f["color"].vec3OrNumber(R::atLeast(0.0), l.color);
-  l.radius = f["radius"].number(R::atLeast(0.0));
+  l.radius = f["radius"].number(R::closed(0.0, kMaxCoordinate));
   const JsonField power = f["luminous_power"], intensity = f["intensity_cd"];
   if (power.present() == intensity.present()) {
     f.fail(power.present() ? "expected luminous_power or intensity_cd, got both"
@@ -158,10 +162,10 @@ std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount) {
   const std::vector<JsonField> corners = bounds.items();
   const char* boundsShape = "[[min x, y, z], [max x, y, z]] with min <= max";
   if (!bounds.present() || corners.size() != 2) bounds.expected(boundsShape);
-  spec.boundsMin = corners[0].vec3(R::any());
-  spec.boundsMax = corners[1].vec3(R::any());
+  spec.boundsMin = corners[0].vec3(kCoordinate);
+  spec.boundsMax = corners[1].vec3(kCoordinate);
   if (glm::any(glm::greaterThan(spec.boundsMin, spec.boundsMax))) bounds.expected(boundsShape);
-  std::tie(spec.radiusMin, spec.radiusMax) = f["radius"].interval(R::atLeast(0.0));
+  std::tie(spec.radiusMin, spec.radiusMax) = f["radius"].interval(R::closed(0.0, kMaxCoordinate));
   std::tie(spec.powerMin, spec.powerMax) = f["luminous_power"].interval(R::atLeast(0.0));
   return makeRandomLights(spec);
 }

@@ -12,16 +12,21 @@ GBufferPrecision parseGBufferPrecision(const std::string& name) {
 
 const char* toString(GBufferPrecision precision) { return precision == GBufferPrecision::Lean ? "lean" : "float"; }
 
+GBufferFormats gbufferFormats(GBufferPrecision p) {
+  if (p == GBufferPrecision::Lean) return {GL_SRGB8_ALPHA8, GL_RG16, GL_RGBA8, GL_DEPTH_COMPONENT32F};
+  return {GL_RGBA32F, GL_RG32F, GL_RGBA32F, GL_DEPTH_COMPONENT32F};
+}
+
 // Both layouts hold the same encodings (octahedral normal in [0,1]^2, linear values once fetched), so the shaders
 // are the same: only the storage formats differ.
 GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p)
     : width(w),
       height(h),
       precision(p),
-      baseColor(p == GBufferPrecision::Lean ? GL_SRGB8_ALPHA8 : GL_RGBA32F, w, h),
-      normal(p == GBufferPrecision::Lean ? GL_RG16 : GL_RG32F, w, h),
-      material(p == GBufferPrecision::Lean ? GL_RGBA8 : GL_RGBA32F, w, h),
-      depth(GL_DEPTH_COMPONENT32F, w, h) {
+      baseColor(gbufferFormats(p).baseColor, w, h),
+      normal(gbufferFormats(p).normal, w, h),
+      material(gbufferFormats(p).material, w, h),
+      depth(gbufferFormats(p).depth, w, h) {
   const GLenum f = radiance.format();
   if (radiance.width() != w || radiance.height() != h ||
       (f != GL_RGBA16F && f != GL_R11F_G11F_B10F && f != GL_RGBA32F)) {

@@ -12,6 +12,12 @@ enum class GBufferPrecision { Lean, Float };
 GBufferPrecision parseGBufferPrecision(const std::string& name);  // "lean" | "float"
 const char* toString(GBufferPrecision precision);
 
+// The internal formats of the attachments for a precision (the frame-size check asks the driver about them).
+struct GBufferFormats {
+  GLenum baseColor, normal, material, depth;
+};
+GBufferFormats gbufferFormats(GBufferPrecision precision);
+
 // The G-buffer's attachments (layout and bytes per pixel in gbuffer/README.md). `radiance` is the frame's HDR
 // target, attached as colour attachment 3: the geometry pass writes emitted radiance there and the lighting pass
 // adds reflected light on top, so emission needs no attachment of its own. It must outlive the G-buffer.
@@ -27,9 +33,9 @@ struct GBuffer {
 
   int width, height;
   GBufferPrecision precision;
-  Texture baseColor;  // GL_SRGB8_ALPHA8 (float: GL_RGBA16F, linear)
+  Texture baseColor;  // GL_SRGB8_ALPHA8 (float: GL_RGBA32F, linear)
   Texture normal;     // GL_RG16, octahedral (float: GL_RG32F)
-  Texture material;   // GL_RGBA8, roughness + metalness + occlusion (float: GL_RGBA16F)
+  Texture material;   // GL_RGBA8, roughness + metalness + occlusion (float: GL_RGBA32F)
   Texture depth;      // GL_DEPTH_COMPONENT32F, reversed Z
   Framebuffer framebuffer;
 };

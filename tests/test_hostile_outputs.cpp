@@ -208,6 +208,31 @@ TEST_CASE("hostile outputs: a frame larger than the limits fails before renderin
 #endif
 }
 
+TEST_CASE("hostile outputs: the driver is asked about each target's format before anything is allocated") {
+  PBR_REQUIRE_GL();
+  pbr::RendererConfig wide;
+  wide.gbuffer = pbr::GBufferPrecision::Float;
+  wide.hdrFormat = pbr::HdrFormat::Rgba32f;
+  CHECK_NOTHROW(pbr::checkFrameFormats(64, 32, "--size", pbr::frameFormats(wide)));
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  // Over GL_MAX_TEXTURE_SIZE every driver's proxy test fails; the first format asked about is named.
+  const std::string size = "--pair-size " + std::to_string(maxSize + 1) + "x1";
+  CHECK_THROWS_WITH(pbr::checkFrameFormats(maxSize + 1, 1, "--pair-size", pbr::frameFormats(wide)),
+                    (size + ": the OpenGL driver refuses RGBA32F textures of that size (proxy texture test); try a "
+                            "smaller size").c_str());
+  // llvmpipe caps one texture at 1 GiB: 16384 x 16384 passes GL_MAX_TEXTURE_SIZE and, on a large machine, the
+  // memory estimate, but not the RGBA16F HDR target (2 GiB). Refused by name within a second, not after minutes.
+  const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer.find("llvmpipe") != std::string::npos) {
+    const TempDir dir;
+    const Run huge = runPbr(dir, tinyRender({"--size", "16384x16384"}));
+    CHECK(huge.exitCode == 1);
+    checkOneLineNaming(huge, "--size 16384x16384: ");
+    checkNotRendered(huge);
+  }
+}
+
 TEST_CASE("hostile outputs: the frame-size check names the option and the limit it is over") {
   pbr::RendererConfig lean;
   CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 8 + 32);

@@ -226,3 +226,21 @@ TEST_CASE("hostile scenes: degenerate and overflowing node transforms are report
   light.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
   checkRefused(dir, light.writeGltf(dir.path(), "light"), {"lights[0].intensity: too large"});
 }
+
+TEST_CASE("hostile scenes: JSON positions, scales and radii beyond the coordinate limit name their field") {
+  const TempDir dir;
+  const std::string object = R"("objects": [{"shape": "sphere", "transform": )";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {object + R"({"translate": [1e30, 0, 0]}}])", "objects[0].transform.translate[0]: expected a number in [-1e+12, 1e+12], got 1e+30"},
+      {object + R"({"scale": 1e-20}}])", "objects[0].transform.scale: expected a number in [1e-09, 1e+12], got 1e-20"},
+      {object + R"({"scale": [1, 1e13, 1]}}])", "objects[0].transform.scale[1]: expected a number in [1e-09, 1e+12]"},
+      {R"("lights": [{"position": [0, -2e12, 0], "radius": 1, "luminous_power": 1}])", "lights[0].position[1]: expected a number in [-1e+12, 1e+12]"},
+      {R"("lights": [{"position": [0, 0, 0], "radius": 1e20, "luminous_power": 1}])", "lights[0].radius: expected a number in [0, 1e+12], got 1e+20"},
+  };
+  int n = 0;
+  for (const auto& [body, message] : cases) {
+    checkRefused(dir, dir.write("far" + std::to_string(n++) + ".json", "{" + kCamera + ", " + body + "}"), {message});
+  }
+  const std::string camera = dir.write("camera.json", R"({"camera": {"position": [0, 0, 3e12], "target": [0, 0, 0]}})");
+  checkRefused(dir, camera, {"camera.position[2]: expected a number in [-1e+12, 1e+12], got 3000000000000.0"});
+}
