@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "renderer/display_image.hpp"
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
 #include "app/args.hpp"
@@ -14,7 +15,7 @@
 #include "app/brdf_slice.hpp"
 #include "app/commands.hpp"
 #include "app/error_map.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/output_file.hpp"
@@ -175,12 +176,12 @@ int runAccuracy(const std::vector<std::string>& argv) {
   for (const AccuracyScene& s : scenes) {
     reference::ReferenceOptions refOptions = referenceOptions;  // meshes; the geometry row switches a copy
     const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
-    const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
+    const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.exposure);
     // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.
     if (hasOnlyAnalyticShapes(s.scene)) {
       refOptions.geometry = reference::Geometry::Analytic;
       const reference::ReferenceFrame exact = reference::renderReference(s.scene, size.x, size.y, refOptions);
-      const ImageRgba8 exactLdr = postProcessReference(shaders, exact.radiance, s.scene.exposure);
+      const ImageRgba8 exactLdr = displayImage(shaders, exact.radiance, s.scene.exposure);
       writeRow("geometry", s.label, "reference", "triangle meshes against the exact shapes", "-", "-", nullptr,
                measureError(ref.radiance, refLdr, exact, exactLdr));
     }

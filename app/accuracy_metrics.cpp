@@ -72,20 +72,4 @@ std::vector<float> relativeErrorPerPixel(const ImageRgbaF& hdr, const reference:
   return out;
 }
 
-ImageRgba8 postProcessReference(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure) {
-  const int w = radiance.width, h = radiance.height;
-  // GL rows run bottom-up; images here top-down, as readback returns them.
-  std::vector<float> flipped(radiance.pixels.size());
-  const size_t row = size_t(w) * 4;
-  for (int y = 0; y < h; ++y)
-    std::copy_n(&radiance.pixels[size_t(h - 1 - y) * row], row, &flipped[size_t(y) * row]);
-  Texture hdr(GL_RGBA32F, w, h);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(hdr.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, flipped.data());
-  Texture ldr(GL_RGBA8, w, h);
-  PostPass post(shaders);
-  post.render(hdr, ldr, {exposure, true});
-  return readbackRgba8(ldr);
-}
-
 }  // namespace pbr

@@ -24,8 +24,4 @@ ErrorMetrics measureError(const ImageRgbaF& hdr, const ImageRgba8& ldr, const re
 // that black pixels do not divide by zero.
 std::vector<float> relativeErrorPerPixel(const ImageRgbaF& hdr, const reference::ReferenceFrame& ref);
 
-// The reference radiance through the renderer's own post pass (exposure, ACES, sRGB), so both 8-bit images
-// come from the same display transform. Needs a current GL context.
-ImageRgba8 postProcessReference(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure);
-
 }  // namespace pbr

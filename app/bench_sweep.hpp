@@ -5,7 +5,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "core/profiler.hpp"
 
 namespace pbr {

@@ -3,7 +3,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "app/experiments.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "core/builtin_scenes.hpp"
 #include "reference/reference_brdf.hpp"
 

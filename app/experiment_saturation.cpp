@@ -1,7 +1,7 @@
 #include <algorithm>
 
 #include "app/experiments.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "core/builtin_scenes.hpp"
 
 namespace pbr {

@@ -2,7 +2,7 @@
 
 #include "app/experiments.hpp"
 #include "app/frame_stats.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/context.hpp"
 

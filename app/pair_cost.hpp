@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/bench_sweep.hpp"
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 

@@ -6,7 +6,7 @@
 #include "app/bench_report.hpp"
 #include "app/bench_run.hpp"
 #include "app/commands.hpp"
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/image.hpp"

@@ -34,24 +34,27 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
       window_(options.size.x, options.size.y, "pbr view"),
       scene_(std::move(scene)),
       camera_(scene_.camera),
-      gbufferDebug_(shaders_),
       profiler_(chooseTimingMode(options.timing, window_.info().renderer)),
       movedLights_(scene_.lights) {
   const glm::ivec2 size = window_.framebufferSize();
-  resize(size.x, size.y);
+  renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+  attachPresentSource();
+  pendingSize_ = size;
   installCallbacks();
   lastFrame_ = lastTitle_ = Clock::now();
 }
 
 void Viewer::resize(int width, int height) {
   presentSource_.reset();
-  renderer_.reset();  // free the old targets before allocating the new ones
-  renderer_ = std::make_unique<Renderer>(shaders_, scene_, width, height);
-  renderer_->setLights(movedLights_);
+  renderer_->resize(width, height);
+  attachPresentSource();
+  pendingSize_ = {width, height};
+}
+
+void Viewer::attachPresentSource() {
   presentSource_ = std::make_unique<Framebuffer>();
   presentSource_->attach(GL_COLOR_ATTACHMENT0, renderer_->ldr());
   presentSource_->checkComplete();
-  pendingSize_ = {width, height};
 }
 
 void Viewer::run(int frames) {
@@ -81,11 +84,11 @@ void Viewer::frame() {
   renderer_->setCamera(camera_.camera());
   FrameOptions frameOptions = options_.frame;
   frameOptions.debugView = view_ == ViewerView::Clusters ? ClusterDebugView::Clusters : ClusterDebugView::None;
-  renderer_->renderFrame(frameOptions, profiler_);
   if (view_ != ViewerView::Final && view_ != ViewerView::Clusters) {
-    const auto channel = static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
-    gbufferDebug_.render(channel, renderer_->gbuffer(), renderer_->frameUniforms(), renderer_->ldr());
+    frameOptions.gbufferView =
+        static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
   }
+  renderer_->renderFrame(frameOptions, profiler_);
   present();
   ++framesRendered_;
   recordTimings(frameMs);

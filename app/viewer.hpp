@@ -8,10 +8,9 @@
 #include <glm/vec2.hpp>
 
 #include "app/orbit_camera.hpp"
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/window_context.hpp"
-#include "lighting/gbuffer_debug_pass.hpp"
 
 namespace pbr {
 
@@ -43,7 +42,8 @@ class Viewer {
   void frame();
   // The action of one key press (a GLFW key code), as the window's key callback calls it; other keys do nothing.
   void handleKey(int key);
-  // Rebuilds everything sized by the frame (G-buffer, HDR and LDR targets, cluster grid) at `width` x `height`.
+  // Rebuilds what the frame size owns (G-buffer, HDR and LDR targets, cluster grid) at `width` x `height`; the
+  // scene's uploads, IBL maps and compiled programs stay.
   void resize(int width, int height);
 
   ImageRgba8 screenshot() const;  // what the window shows, rows top-down
@@ -64,6 +64,7 @@ class Viewer {
   void flyFromHeldKeys(float seconds);
   void animateLights(float seconds);
   void setLightCount(size_t count);
+  void attachPresentSource();
   void present();
   void updateTitle();
   void recordTimings(double frameMs);
@@ -75,7 +76,6 @@ class Viewer {
   OrbitCamera camera_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<Framebuffer> presentSource_;  // wraps the renderer's LDR texture for the blit to the window
-  GBufferDebugPass gbufferDebug_;
   Profiler profiler_;
   ViewerView view_ = ViewerView::Final;
   float lightTime_ = 0.0f;  // seconds of animation so far

@@ -66,7 +66,7 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
           {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)}};
 }
 
-GBufferPass::GBufferPass(const ShaderLibrary& shaders, const Scene& scene)
+GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     : blockStride_(alignedStride()),
       objectBlocks_(static_cast<size_t>(blockStride_) * scene.objects.size(),
                     packObjectBlocks(scene, blockStride_).data(), 0) {
@@ -83,7 +83,7 @@ GBufferPass::GBufferPass(const ShaderLibrary& shaders, const Scene& scene)
     for (const ShaderDefine& d : defines) key += d.value;
     auto it = programIndex.find(key);
     if (it == programIndex.end()) {
-      programs_.push_back(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
+      programs_.push_back(&programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
       it = programIndex.emplace(key, programs_.size() - 1).first;
     }
     Draw d{};
@@ -123,7 +123,7 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   frame.bind(binding::kFrameUbo);
   size_t bound = std::numeric_limits<size_t>::max();
   for (const Draw& d : draws_) {
-    if (d.program != bound) programs_[d.program].use();
+    if (d.program != bound) programs_[d.program]->use();
     bound = d.program;
     if (d.doubleSided) {
       glDisable(GL_CULL_FACE);

@@ -6,7 +6,7 @@
 #include "core/gpu_mesh.hpp"
 #include "core/gpu_texture.hpp"
 #include "core/scene.hpp"
-#include "core/shader_library.hpp"
+#include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 #include "gbuffer/gbuffer.hpp"
 
@@ -17,7 +17,7 @@ namespace pbr {
 // shader permutation (the maps it samples, alpha masking), compiled once for all the draws that use it.
 class GBufferPass {
  public:
-  GBufferPass(const ShaderLibrary& shaders, const Scene& scene);
+  GBufferPass(ProgramCache& programs, const Scene& scene);
   void render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const;
 
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
@@ -39,7 +39,7 @@ class GBufferPass {
   // The material's Scene::textures index per texture unit, -1 for none.
   static std::array<int, kMapCount> materialMaps(const Material& material);
 
-  std::vector<Program> programs_;
+  std::vector<const Program*> programs_;  // one per permutation the scene uses, owned by the cache
   std::vector<GpuMesh> meshes_;
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;

@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/bindings.hpp"
 #include "core/gpu_texture.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/environment_cubemap.hpp"
@@ -82,13 +81,8 @@ IblMaps::IblMaps(Maps&& maps, const IblSettings& settings)
       specularSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
       dfgSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
 
-void IblMaps::bind() const {
-  irradiance_.bindBase(GL_UNIFORM_BUFFER, binding::kIblUbo);
-  glBindTextureUnit(binding::kIblSpecularUnit, specular_.id());
-  glBindSampler(binding::kIblSpecularUnit, specularSampler_.id());
-  glBindTextureUnit(binding::kIblDfgUnit, dfg_.id());
-  glBindSampler(binding::kIblDfgUnit, dfgSampler_.id());
-  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+EnvironmentMaps IblMaps::maps() const {
+  return {irradiance_.id(), specular_.id(), specularSampler_.id(), dfg_.id(), dfgSampler_.id()};
 }
 
 size_t IblMaps::bytes() const {

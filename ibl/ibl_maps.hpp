@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 
+#include "core/environment_maps.hpp"
 #include "core/profiler.hpp"
 #include "core/shader_library.hpp"
 #include "ibl/cubemap.hpp"
@@ -28,9 +29,8 @@ class IblMaps {
   IblMaps(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& settings = {},
           Profiler* profiler = nullptr);
 
-  // Binds the block to IBL_UBO and the maps, with their samplers, to IBL_SPECULAR_UNIT and IBL_DFG_UNIT, and
-  // turns on seamless cube-map filtering (GL state of the whole context).
-  void bind() const;
+  // The maps as the lighting pass and other readers take them (bindEnvironmentMaps).
+  EnvironmentMaps maps() const;
   // GPU memory the maps hold.
   size_t bytes() const;
 

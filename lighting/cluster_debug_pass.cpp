@@ -17,12 +17,7 @@ void ClusterDebugPass::render(ClusterDebugView view, const LightClusters& cluste
                               const UniformBuffer<FrameBlock>& frame, const Texture& ldr) {
   if (view == ClusterDebugView::None) return;
   const bool slices = view == ClusterDebugView::Slices;
-  std::unique_ptr<Program>& program = slices ? slicesProgram_ : clustersProgram_;
-  if (!program) {
-    program = std::make_unique<Program>(
-        shaders_.compute("lighting/cluster_debug.comp", {{"DEBUG_SLICES", slices ? "1" : "0"}}));
-  }
-  program->use();
+  programs_.compute("lighting/cluster_debug.comp", {{"DEBUG_SLICES", slices ? "1" : "0"}}).use();
   frame.bind(binding::kFrameUbo);
   clusters.bindForLighting();
   glBindTextureUnit(3, depth.id());

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "core/frame_block.hpp"
-#include "core/shader_library.hpp"
+#include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/light_clusters.hpp"
 
@@ -14,13 +14,12 @@ ClusterDebugView parseClusterDebugView(const std::string& name);  // "none" | "c
 // Paints a debug view of the cluster grid over the final RGBA8 frame, with a legend.
 class ClusterDebugPass {
  public:
-  explicit ClusterDebugPass(const ShaderLibrary& shaders) : shaders_(shaders) {}
+  explicit ClusterDebugPass(ProgramCache& programs) : programs_(programs) {}
   void render(ClusterDebugView view, const LightClusters& clusters, const Texture& depth,
               const UniformBuffer<FrameBlock>& frame, const Texture& ldr);
 
  private:
-  const ShaderLibrary& shaders_;
-  std::unique_ptr<Program> clustersProgram_, slicesProgram_;
+  ProgramCache& programs_;  // each view compiled on first use
 };
 
 }  // namespace pbr

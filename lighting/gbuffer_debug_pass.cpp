@@ -17,15 +17,21 @@ const char* toString(GBufferChannel channel) {
   return "?";
 }
 
+// The named define that selects the channel in lighting/gbuffer_debug.comp.
+const char* channelDefine(GBufferChannel channel) {
+  switch (channel) {
+    case GBufferChannel::BaseColor: return "GBUFFER_CHANNEL_BASE_COLOR";
+    case GBufferChannel::Normal: return "GBUFFER_CHANNEL_NORMAL";
+    case GBufferChannel::Roughness: return "GBUFFER_CHANNEL_ROUGHNESS";
+    case GBufferChannel::Metalness: return "GBUFFER_CHANNEL_METALNESS";
+    case GBufferChannel::Depth: return "GBUFFER_CHANNEL_DEPTH";
+  }
+  return "GBUFFER_CHANNEL_DEPTH";
+}
+
 void GBufferDebugPass::render(GBufferChannel channel, const GBuffer& gbuffer, const UniformBuffer<FrameBlock>& frame,
                               const Texture& ldr) {
-  const int index = static_cast<int>(channel);
-  std::unique_ptr<Program>& program = programs_[static_cast<size_t>(index)];
-  if (!program) {
-    program = std::make_unique<Program>(
-        shaders_.compute("lighting/gbuffer_debug.comp", {{"GBUFFER_CHANNEL", std::to_string(index)}}));
-  }
-  program->use();
+  programs_.compute("lighting/gbuffer_debug.comp", {{channelDefine(channel), "1"}}).use();
   frame.bind(binding::kFrameUbo);
   glBindTextureUnit(0, gbuffer.baseColor.id());
   glBindTextureUnit(1, gbuffer.normal.id());

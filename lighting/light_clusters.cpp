@@ -22,16 +22,16 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) 
   return nearPlane * std::pow(farPlane / nearPlane, static_cast<float>(slice) / static_cast<float>(slices));
 }
 
-LightClusters::LightClusters(const ShaderLibrary& shaders, const ClusterConfig& config)
+LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config)
     : config_(config),
-      boundsProgram_(shaders.compute("lighting/cluster_bounds.comp")),
-      viewLightsProgram_(shaders.compute("lighting/cluster_lights.comp")),
-      tilesProgram_(shaders.compute("lighting/cluster_tiles.comp")),
-      countProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
-      countStatsProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
-      scanProgram_(shaders.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "0"}})),
-      scanStatsProgram_(shaders.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "1"}})),
-      fillProgram_(shaders.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
+      boundsProgram_(programs.compute("lighting/cluster_bounds.comp")),
+      viewLightsProgram_(programs.compute("lighting/cluster_lights.comp")),
+      tilesProgram_(programs.compute("lighting/cluster_tiles.comp")),
+      countProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
+      countStatsProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
+      scanProgram_(programs.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "0"}})),
+      scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "1"}})),
+      fillProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
       status_(sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);

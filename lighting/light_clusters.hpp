@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/frame_block.hpp"
-#include "core/shader_library.hpp"
+#include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/cluster_block.hpp"
 #include "lighting/light_buffer.hpp"
@@ -35,7 +35,7 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices);
 // grows for the next frame.
 class LightClusters {
  public:
-  LightClusters(const ShaderLibrary& shaders, const ClusterConfig& config);
+  LightClusters(ProgramCache& programs, const ClusterConfig& config);
   ~LightClusters();
   LightClusters(const LightClusters&) = delete;
   LightClusters& operator=(const LightClusters&) = delete;
@@ -68,8 +68,8 @@ class LightClusters {
   void ensureLightBuffers(uint32_t lights);
 
   ClusterConfig config_;
-  Program boundsProgram_, viewLightsProgram_, tilesProgram_, countProgram_, countStatsProgram_, scanProgram_,
-      scanStatsProgram_, fillProgram_;
+  const Program &boundsProgram_, &viewLightsProgram_, &tilesProgram_, &countProgram_, &countStatsProgram_,
+      &scanProgram_, &scanStatsProgram_, &fillProgram_;
   UniformBuffer<ClusterBlock> block_;
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};

@@ -33,24 +33,20 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"HDR_MAX", maximum});
   defines.push_back({"CLUSTERED", flag(clustered)});
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
-  defines.push_back({"IBL", flag(o.ibl && !blinnPhong)});
+  defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   return defines;
 }
 
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
-  const ShaderDefines defines = permutation(o, clustered, radianceFormat);
-  // The defines themselves are the key: two permutations share a program only if they compile the same source.
-  const std::string key = definesKey(defines);
-  auto it = programs_.find(key);
-  if (it == programs_.end()) it = programs_.emplace(key, shaders_.compute("lighting/deferred.comp", defines)).first;
-  return it->second;
+  return programs_.compute("lighting/deferred.comp", permutation(o, clustered, radianceFormat));
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
                           const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
                           const LightClusters* clusters) {
   // Made (on first use) before anything is bound for this pass: making a table dispatches a pass of its own.
-  const Texture* ambient = options.model == ShadingModel::Pbr && !options.ibl
+  const bool ibl = options.model == ShadingModel::Pbr && options.environment;
+  const Texture* ambient = options.model == ShadingModel::Pbr && !ibl
                                ? &ambientAlbedo_.table(shaderDefines(options.variant))
                                : nullptr;
   const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
@@ -61,6 +57,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   block_.bind(binding::kLightingUbo);
   lights.bind();
   if (clusters) clusters->bindForLighting();
+  if (ibl) bindEnvironmentMaps(*options.environment);
   if (ambient) {
     glBindTextureUnit(binding::kAmbientAlbedoUnit, ambient->id());
     glBindSampler(binding::kAmbientAlbedoUnit, ambientSampler_.id());

@@ -1,14 +1,14 @@
 #pragma once
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <string>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/environment_maps.hpp"
 #include "core/frame_block.hpp"
-#include "core/shader_library.hpp"
+#include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
@@ -37,9 +37,9 @@ struct LightingOptions {
   ShadingVariant variant;  // PBR only
   glm::vec3 ambient{0.0f};
   bool stats = false;  // count light-pixel pairs (evaluated, contributing) on the GPU
-  // PBR only: image-based lighting from the maps bound by IblMaps::bind() replaces `ambient`, and pixels
-  // without geometry show the environment.
-  bool ibl = false;
+  // PBR only: image-based lighting from these maps replaces `ambient`, and pixels without geometry show the
+  // environment. Null: uniform ambient light.
+  const EnvironmentMaps* environment = nullptr;
 };
 
 struct PairCounts {
@@ -51,8 +51,10 @@ struct PairCounts {
 // IBL), compiled on first use.
 class LightingPass {
  public:
-  explicit LightingPass(const ShaderLibrary& shaders)
-      : shaders_(shaders), ambientAlbedo_(shaders), ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
+  explicit LightingPass(ProgramCache& programs)
+      : programs_(programs),
+        ambientAlbedo_(programs.library()),
+        ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
   // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
@@ -69,8 +71,7 @@ class LightingPass {
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat);
 
-  const ShaderLibrary& shaders_;
-  std::map<std::string, Program> programs_;  // by their defines
+  ProgramCache& programs_;  // permutations compiled on first use
   UniformBuffer<LightingBlock> block_;
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
   Sampler ambientSampler_;

@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 
-#include "core/shader_library.hpp"
+#include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 
 namespace pbr {
@@ -22,11 +22,11 @@ struct PostSettings {
 // HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
 class PostPass {
  public:
-  explicit PostPass(const ShaderLibrary& shaders) : program_(shaders.compute("post/post.comp")) {}
+  explicit PostPass(ProgramCache& programs) : program_(programs.compute("post/post.comp")) {}
   void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
 
  private:
-  Program program_;
+  const Program& program_;
   UniformBuffer<PostBlock> block_;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 
 namespace pbr::test {
 

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "core/builtin_scenes.hpp"
 #include "tests/gl_test_context.hpp"
 

@@ -1,8 +1,9 @@
 #include <doctest/doctest.h>
 
+#include "renderer/display_image.hpp"
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"
 
@@ -18,7 +19,7 @@ TEST_CASE("G-buffer precision: the float layout removes the lean layout's quanti
   options.variant = parseShadingVariant("fresnel=exact");
   RendererConfig config;
   config.hdrFormat = HdrFormat::Rgba32f;
-  const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, floor.scene.exposure);
+  const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, floor.scene.exposure);
   auto error = [&](const RendererConfig& c) {
     const RenderedFrames f = renderOffscreen(shaders, floor.scene, size, options, 1, c);
     return measureError(f.hdr, f.ldr, ref, refLdr).relativeRmse;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_limits.hpp"
-#include "app/renderer.hpp"
+#include "renderer/frame_limits.hpp"
+#include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 

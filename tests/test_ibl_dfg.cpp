@@ -62,7 +62,7 @@ TEST_CASE("ibl dfg: iblDfg reads the texels whose centres lie on the ends of bot
   settings.dfgSize = 16;
   settings.dfgSamples = 64;
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), settings);
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   const std::vector<glm::vec2> texels = pbr::test::readDfgTable(maps.dfg());
   const GlslProbe probe("ibl dfg lookup", R"(
 #include "ibl/ibl_sample.glsl"

@@ -131,7 +131,7 @@ TEST_CASE("ibl diffuse: a constant environment has irradiance pi L everywhere") 
   const pbr::ShaderLibrary shaders;
   const glm::vec3 radiance(0.5f, 1.0f, 2.0f);
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(radiance), smallSettings(16));
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   const std::vector<glm::dvec3> normals = pbr::test::fibonacciSphere(500);
   const std::vector<glm::vec4> e = gpuIrradiance(normals);
   for (size_t i = 0; i < normals.size(); ++i) {
@@ -147,7 +147,7 @@ TEST_CASE("ibl diffuse: white furnace, a white Lambert surface under a uniform e
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), smallSettings(16));
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   // Lambert with albedo 1 reflects E / pi; iblDiffuse is exactly that for the caller to multiply by its albedo.
   const GlslProbe probe("ibl white furnace", R"(
 #include "ibl/ibl_sample.glsl"
@@ -168,7 +168,7 @@ TEST_CASE("ibl diffuse: spherical-harmonic irradiance of the sky matches brute f
   const pbr::Environment sky = pbr::Environment::sky(pbr::SkyParams{});
   constexpr int kSize = 32;
   const pbr::IblMaps maps(shaders, sky, smallSettings(kSize));
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   const pbr::Cubemap cube = pbr::EnvironmentCubemapPass(shaders).run(sky, kSize);
   const pbr::test::CubeTexels texels = pbr::test::cubeTexels(cube, 0);
 

@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "core/assets.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/scene_json.hpp"

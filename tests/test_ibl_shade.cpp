@@ -85,7 +85,7 @@ TEST_CASE("ibl shade: white furnace, a white dielectric under radiance 1 shades 
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), smallSettings());
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   // The specular lobe reflects F0 A + B of the prefiltered radiance (1 at every level) and the diffuse lobe gets
   // the rest, (1 - F0 A - B) E / pi with E = pi: the sum is 1 for any table, so this checks the plumbing from the
   // maps to the split sum, which a lost pi or a wrong level would break.
@@ -105,7 +105,7 @@ TEST_CASE("ibl shade: a white metal reflects A + B of the furnace, and 1 with th
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), smallSettings());
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   const std::vector<glm::vec4> input = shadingGrid();
   const std::vector<glm::vec4> single = shadeProbe("1.0", "1.0", "1.0").run(input);
   const std::vector<glm::vec4> compensated = shadeProbe("1.0", "1.0", "1.0", true).run(input);
@@ -168,7 +168,7 @@ TEST_CASE("ibl maps: a shipped 1k environment at the default settings, timed as 
   }
 
   // bind() puts the maps where ibl_sample.glsl looks for them.
-  maps.bind();
+  pbr::bindEnvironmentMaps(maps.maps());
   GLint bound = 0;
   glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, pbr::binding::kIblUbo, &bound);
   CHECK(static_cast<GLuint>(bound) == maps.irradiance().id());

@@ -10,9 +10,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/display_image.hpp"
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "core/gltf_loader.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
@@ -86,7 +87,7 @@ RenderedFrames gpuFrame(const ShaderLibrary& shaders, const Scene& scene) {
 
 ErrorMetrics gpuError(const ShaderLibrary& shaders, const RenderedFrames& gpu, const Scene& scene) {
   const ReferenceFrame ref = renderWith(scene, Geometry::Meshes);
-  return measureError(gpu.hdr, gpu.ldr, ref, postProcessReference(shaders, ref.radiance, scene.exposure));
+  return measureError(gpu.hdr, gpu.ldr, ref, displayImage(shaders, ref.radiance, scene.exposure));
 }
 
 ErrorMetrics gpuError(const Scene& scene) {

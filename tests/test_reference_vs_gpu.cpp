@@ -3,9 +3,10 @@
 #include <map>
 #include <string>
 
+#include "renderer/display_image.hpp"
 #include "app/accuracy_metrics.hpp"
 #include "app/accuracy_variants.hpp"
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
@@ -49,7 +50,7 @@ std::map<std::string, double> errors(const std::string& sceneSpec) {
   const AccuracyScene s = loadAccuracyScene(sceneSpec);
   const reference::ReferenceFrame ref = reference::renderReference(s.scene, kSize.x, kSize.y);
   const ShaderLibrary shaders;
-  const ImageRgba8 refLdr = postProcessReference(shaders, ref.radiance, s.scene.exposure);
+  const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.exposure);
   std::map<std::string, double> out;
   for (const AccuracyVariant& v : accuracyLadder()) {
     if (v.model != ShadingModel::Pbr) continue;
@@ -115,7 +116,7 @@ TEST_CASE("reference: the study variant matches the reference rendered with the 
     const RenderedFrames f = test::renderScene(s.scene, kSize, options);
     auto error = [&](const reference::ReferenceOptions& o) {
       const reference::ReferenceFrame ref = reference::renderReference(s.scene, kSize.x, kSize.y, o);
-      return measureError(f.hdr, f.ldr, ref, postProcessReference(shaders, ref.radiance, s.scene.exposure)).relativeRmse;
+      return measureError(f.hdr, f.ldr, ref, displayImage(shaders, ref.radiance, s.scene.exposure)).relativeRmse;
     };
     const double own = error(study), standard = error({});
     MESSAGE(spec << ": study frame against the reference with the study's forms " << own << ", with its own model "

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "core/gl.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/reference_shading.hpp"

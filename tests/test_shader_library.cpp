@@ -313,8 +313,9 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         options.stats = stats;
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
         // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
-        options.ibl = model == pbr::ShadingModel::Pbr;
-        if (options.ibl) ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        const pbr::EnvironmentMaps maps;
+        options.environment = &maps;
+        if (model == pbr::ShadingModel::Pbr) ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
       }
     }
   }

@@ -183,12 +183,16 @@ TEST_CASE("view: F12 after a model switch saves a screenshot matching the headle
   checkMatches(pbr::readPng(path), headless(dir, kSize, {"--model", "blinn-phong"}));
 }
 
-TEST_CASE("view: a resized window rebuilds the G-buffer and the cluster grid") {
+TEST_CASE("view: a resized window rebuilds the G-buffer and the cluster grid, and nothing scene-sized") {
   const TempDir dir;
   const auto viewer = openViewer();
   if (!viewer) return;
   show(*viewer, 1);
   CHECK(viewer->frameSize() == kSize);
+  const pbr::RendererCounters before = viewer->renderer().counters();
+  CHECK(before.sceneBuilds == 1);
+  CHECK(before.targetBuilds == 1);
+  CHECK(before.programsCompiled > 0);
   // Through the window system, as a user's drag would: the framebuffer-size callback reaches the next frame.
   const glm::ivec2 resized{200, 120};
   glfwSetWindowSize(viewer->window().window(), resized.x, resized.y);
@@ -207,6 +211,12 @@ TEST_CASE("view: a resized window rebuilds the G-buffer and the cluster grid") {
   // The same path called directly, to a size no window manager would be asked for.
   viewer->resize(96, 200);
   checkMatches(show(*viewer), headless(dir, {96, 200}));
+  // Two resizes: two new sets of targets, while meshes, textures, lights and IBL maps were uploaded once and
+  // no program was compiled again.
+  const pbr::RendererCounters after = viewer->renderer().counters();
+  CHECK(after.sceneBuilds == 1);
+  CHECK(after.targetBuilds == before.targetBuilds + 2);
+  CHECK(after.programsCompiled == before.programsCompiled);
 }
 
 TEST_CASE("view: pbr view --frames runs unattended and writes a screenshot matching pbr render") {

@@ -1,7 +1,7 @@
 #version 450 core
 // One G-buffer channel as a picture over the final frame, decoded by readSurface exactly as the lighting pass
-// sees it. GBUFFER_CHANNEL: 0 base colour (sRGB-encoded for display), 1 normals (world, 0.5 n + 0.5),
-// 2 roughness, 3 metalness, 4 view depth (log scale between near and far, near white).
+// sees it. One of GBUFFER_CHANNEL_BASE_COLOR (sRGB-encoded for display), _NORMAL (world, 0.5 n + 0.5),
+// _ROUGHNESS, _METALNESS or _DEPTH (view depth, log scale between near and far, near white) is defined.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "surface.glsl"
@@ -15,18 +15,20 @@ void main() {
   Surface s;
   vec3 color = vec3(0.0);
   if (readSurface(p, s)) {
-#if GBUFFER_CHANNEL == 0
+#if defined(GBUFFER_CHANNEL_BASE_COLOR)
     color = srgbEncode(s.baseColor);
-#elif GBUFFER_CHANNEL == 1
+#elif defined(GBUFFER_CHANNEL_NORMAL)
     color = s.normal * 0.5 + 0.5;
-#elif GBUFFER_CHANNEL == 2
+#elif defined(GBUFFER_CHANNEL_ROUGHNESS)
     color = vec3(s.roughness);
-#elif GBUFFER_CHANNEL == 3
+#elif defined(GBUFFER_CHANNEL_METALNESS)
     color = vec3(s.metalness);
-#else
+#elif defined(GBUFFER_CHANNEL_DEPTH)
     // Log scale: equal steps for equal ratios of distance, as the exponential cluster slices are spread.
     float t = log(s.viewDepth / frame.clip.x) / log(frame.clip.y / frame.clip.x);
     color = vec3(1.0 - clamp(t, 0.0, 1.0));
+#else
+#error one GBUFFER_CHANNEL_* must be defined
 #endif
   }
   imageStore(ldr, p, vec4(color, 1.0));

@@ -1,4 +1,4 @@
-#include "app/frame_limits.hpp"
+#include "renderer/frame_limits.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer_config.hpp"
 #include "core/gl.hpp"
 
 namespace pbr {

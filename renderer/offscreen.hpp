@@ -3,7 +3,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/renderer.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 

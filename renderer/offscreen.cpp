@@ -1,4 +1,4 @@
-#include "app/offscreen.hpp"
+#include "renderer/offscreen.hpp"
 
 namespace pbr {
 

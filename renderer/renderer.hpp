@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/frame_block.hpp"
@@ -8,12 +9,10 @@
 #include "core/scene.hpp"
 #include "core/shader_library.hpp"
 #include "core/uniform_buffer.hpp"
-#include "gbuffer/gbuffer.hpp"
-#include "gbuffer/gbuffer_pass.hpp"
-#include "ibl/ibl_maps.hpp"
-#include "lighting/cluster_debug_pass.hpp"
-#include "lighting/lighting_pass.hpp"
-#include "post/post_pass.hpp"
+#include "renderer/frame_targets.hpp"
+#include "renderer/pass_list.hpp"
+#include "renderer/renderer_config.hpp"
+#include "renderer/scene_resources.hpp"
 
 namespace pbr {
 
@@ -24,6 +23,7 @@ struct FrameOptions {
   float exposure = 1.0f;
   bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
   ClusterDebugView debugView = ClusterDebugView::None;  // painted over the final frame (clustered only)
+  std::optional<GBufferChannel> gbufferView;            // replaces the final frame with one G-buffer channel
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -48,15 +48,6 @@ struct FrameCapture {
   ImageRgbaF* hdr = nullptr;  // radiance before exposure, as the lighting pass wrote it
 };
 
-// What a renderer is built with, beyond the scene and the frame size.
-struct RendererConfig {
-  ClusterConfig clusters;
-  HdrFormat hdrFormat = HdrFormat::Rgba16f;
-  GBufferPrecision gbuffer = GBufferPrecision::Lean;
-  Profiler* precomputeProfiler = nullptr;  // times the IBL precomputation when the scene has an environment
-  std::string sizeOption = "--size";       // the option the frame size came from, named when it is too large
-};
-
 // What Renderer::warmUp did before the timed frames.
 struct WarmUpReport {
   int frames = 0;            // untimed frames rendered
@@ -64,16 +55,29 @@ struct WarmUpReport {
   uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list at its limit)
 };
 
-// The whole frame: G-buffer -> deferred lighting (HDR, RGBA16F by default) -> post (RGBA8), with each pass timed.
+// How often each lifetime's objects were built, for checking that a resize rebuilds only what the size owns.
+struct RendererCounters {
+  int sceneBuilds = 0;          // SceneResources: uploads, IBL precomputation
+  int targetBuilds = 0;         // FrameTargets
+  size_t programsCompiled = 0;  // programs in the scene's cache
+};
+
+// The frame: scene resources (built once), frame targets (rebuilt on resize) and the pass list that runs over them
+// (G-buffer -> cluster assignment -> deferred lighting -> post -> debug views -> read-back), each pass timed.
 class Renderer {
  public:
   // A scene with an environment has its IBL maps precomputed here, once; with config.precomputeProfiler that is
   // one profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
   // std::runtime_error naming the file when the environment's .hdr cannot be used, and naming config.sizeOption
-  // when the frame is over the context's texture size or the memory available (app/frame_limits.hpp), before any
-  // target is allocated.
+  // when the frame is over the context's texture size, the memory available or what the driver can create
+  // (renderer/frame_limits.hpp), before any target is allocated. `scene` must outlive the renderer.
   Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height, const RendererConfig& config = {});
 
+  // Replaces the frame targets at the new size; the scene's resources and compiled programs stay.
+  void resize(int width, int height);
+
+  // The passes one frame runs with these options, in order, each saying what it reads and writes.
+  PassList passList(const FrameOptions& options, const FrameCapture& capture = {});
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
   // After at least one frame: renders `frames` more untimed frames, then, with clustered culling, more until every cluster's light
   // list fits (each grows the list at once to the measured demand), so that no timed frame pays for a list sized
@@ -84,36 +88,31 @@ class Renderer {
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
   // changes); new lights replace the light buffer.
   void setCamera(const Camera& camera);
-  void setLights(const std::vector<PointLight>& lights) { lights_.upload(lights); }
+  void setLights(const std::vector<PointLight>& lights) { scene_.lights.upload(lights); }
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
-  const LightClusters& clusters() const { return clusters_; }
-  const LightBuffer& lights() const { return lights_; }
-  const GBuffer& gbuffer() const { return gbuffer_; }
-  const IblMaps* ibl() const { return ibl_.get(); }  // null without an environment
+  const LightClusters& clusters() const { return targets_->clusters; }
+  const LightBuffer& lights() const { return scene_.lights; }
+  const GBuffer& gbuffer() const { return targets_->gbuffer; }
+  const IblMaps* ibl() const { return scene_.ibl.get(); }  // null without an environment
   const UniformBuffer<FrameBlock>& frameUniforms() const { return frame_; }
-  const Texture& ldr() const { return ldr_; }  // the final RGBA8 frame, rows bottom-up as GL stores them
+  const Texture& ldr() const { return targets_->ldr; }  // the final RGBA8 frame, rows bottom-up as GL stores them
+  const RendererCounters& counters() const { return counters_; }
 
-  int width() const { return width_; }
-  int height() const { return height_; }
+  int width() const { return targets_->width; }
+  int height() const { return targets_->height; }
 
  private:
-  const Scene& scene_;
-  int width_, height_;
+  const Scene& sceneData_;
+  RendererConfig config_;
+  RendererCounters counters_;
+  SceneResources scene_;
+  std::unique_ptr<FrameTargets> targets_;
+  Camera camera_;
   FrameBlock frameData_;
   UniformBuffer<FrameBlock> frame_;
-  Texture hdr_;  // radiance: emission from the G-buffer pass, then reflected light from the lighting pass
-  GBuffer gbuffer_;
-  GBufferPass gbufferPass_;
-  LightBuffer lights_;
-  LightClusters clusters_;
-  LightingPass lightingPass_;
-  std::unique_ptr<IblMaps> ibl_;
   FrameOptions lastOptions_;
-  PostPass postPass_;
-  ClusterDebugPass debugPass_;
-  Texture ldr_;
 };
 
 }  // namespace pbr

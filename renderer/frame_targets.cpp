@@ -1,0 +1,26 @@
+#include "renderer/frame_targets.hpp"
+
+#include "renderer/frame_limits.hpp"
+
+namespace pbr {
+
+namespace {
+
+// Called while `width` is initialised, before any member allocates a target: an impossible size fails here.
+int checkedWidth(int width, int height, const RendererConfig& config) {
+  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config), queryFrameLimits());
+  checkFrameFormats(width, height, config.sizeOption, frameFormats(config));
+  return width;
+}
+
+}  // namespace
+
+FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererConfig& config)
+    : width(checkedWidth(w, h, config)),
+      height(h),
+      hdr(glInternalFormat(config.hdrFormat), w, h),
+      gbuffer(w, h, hdr, config.gbuffer),
+      ldr(GL_RGBA8, w, h),
+      clusters(programs, config.clusters) {}
+
+}  // namespace pbr

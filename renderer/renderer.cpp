@@ -1,0 +1,127 @@
+#include "renderer/renderer.hpp"
+
+#include "core/readback.hpp"
+
+namespace pbr {
+
+Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
+                   const RendererConfig& config)
+    : sceneData_(scene),
+      config_(config),
+      counters_{1, 1, 0},
+      scene_(shaders, scene, config.precomputeProfiler),
+      targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config)),
+      camera_(scene.camera),
+      frameData_(makeFrameBlock(camera_, width, height)),
+      frame_(frameData_) {
+  counters_.programsCompiled = scene_.programs.compiled();
+}
+
+void Renderer::resize(int width, int height) {
+  targets_.reset();  // free the old targets before allocating the new ones
+  targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_);
+  ++counters_.targetBuilds;
+  counters_.programsCompiled = scene_.programs.compiled();
+  setCamera(camera_);
+}
+
+void Renderer::setCamera(const Camera& camera) {
+  camera_ = camera;
+  frameData_ = makeFrameBlock(camera, width(), height());
+  frame_.update(frameData_);
+}
+
+PassList Renderer::passList(const FrameOptions& options, const FrameCapture& capture) {
+  using R = FrameResource;
+  FrameTargets& t = *targets_;
+  const bool clustered = options.culling == Culling::Clustered;
+  const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
+  PassList passes;
+  passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
+                    [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
+  if (clustered) {
+    passes.push_back({"cluster", {R::Lights, R::Camera}, {R::ClusterLists},
+                      [this, &t, stats = options.stats] { t.clusters.assign(frameData_, frame_, scene_.lights, stats); }});
+  }
+  std::vector<R> lightingReads = {R::GBuffer, R::Radiance, R::Lights, R::Camera};
+  if (clustered) lightingReads.push_back(R::ClusterLists);
+  if (ibl) lightingReads.push_back(R::Environment);
+  passes.push_back({"lighting", lightingReads, {R::Radiance}, [this, &t, options, clustered, ibl] {
+                      const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
+                                                    t.gbuffer.depth};
+                      const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
+                      const LightingOptions lighting{options.model, options.variant, sceneData_.ambient, options.stats,
+                                                     ibl ? &maps : nullptr};
+                      scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
+                                             clustered ? &t.clusters : nullptr);
+                    }});
+  passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options] {
+                      scene_.post.render(t.hdr, t.ldr, {options.exposure, options.model == ShadingModel::Pbr});
+                    }});
+  if (clustered && options.debugView != ClusterDebugView::None) {
+    passes.push_back({"debug", {R::ClusterLists, R::GBuffer, R::Camera, R::Display}, {R::Display},
+                      [this, &t, view = options.debugView] {
+                        scene_.clusterDebug.render(view, t.clusters, t.gbuffer.depth, frame_, t.ldr);
+                      }});
+  }
+  if (options.gbufferView) {
+    passes.push_back({"gbuffer view", {R::GBuffer, R::Camera}, {R::Display}, [this, &t, channel = *options.gbufferView] {
+                        scene_.gbufferDebug.render(channel, t.gbuffer, frame_, t.ldr);
+                      }});
+  }
+  if (capture.ldr || capture.hdr) {
+    std::vector<R> reads;
+    if (capture.ldr) reads.push_back(R::Display);
+    if (capture.hdr) reads.push_back(R::Radiance);
+    passes.push_back({"readback", reads, {R::Capture}, [&t, capture] {
+                        if (capture.ldr) *capture.ldr = readbackRgba8(t.ldr);
+                        if (capture.hdr) *capture.hdr = readbackRgbaF(t.hdr);
+                      }});
+  }
+  checkPassList(passes);
+  return passes;
+}
+
+void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture) {
+  const PassList passes = passList(options, capture);
+  profiler.beginFrame();
+  runPassList(passes, profiler);
+  profiler.endFrame();
+  lastOptions_ = options;
+  counters_.programsCompiled = scene_.programs.compiled();
+}
+
+WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, int frames) {
+  WarmUpReport report;
+  for (; report.frames < frames; ++report.frames) renderFrame(options, profiler);
+  if (options.culling != Culling::Clustered) return report;
+  // Light lists only grow: a few rounds fit any static frame; the bound guards against a list at its limit.
+  constexpr int kMaxSizingFrames = 4;
+  while (report.listSizingFrames < kMaxSizingFrames && targets_->clusters.growToDemand()) {
+    renderFrame(options, profiler);
+    ++report.frames;
+    ++report.listSizingFrames;
+  }
+  report.overflowedClusters = targets_->clusters.readStatus().overflowed;
+  return report;
+}
+
+LightStats Renderer::lightStats() const {
+  LightStats s;
+  s.lights = scene_.lights.count();
+  if (lastOptions_.culling == Culling::Clustered) {
+    const LightClusters& clusters = targets_->clusters;
+    const ClusterStatus status = clusters.readStatus();
+    const glm::uvec3 d = clusters.dims();
+    s.clusters = d.x * d.y * d.z;
+    s.nonEmptyClusters = status.nonEmpty;
+    s.maxPerCluster = status.maxPerCluster;
+    s.indexEntries = status.demand;
+    s.overflowedClusters = status.overflowed;
+    s.visibleLights = status.visibleLights;
+  }
+  if (lastOptions_.stats) s.pairs = scene_.lighting.readPairCounts();
+  return s;
+}
+
+}  // namespace pbr

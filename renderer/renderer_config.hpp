@@ -1,0 +1,20 @@
+#pragma once
+#include <string>
+
+#include "core/profiler.hpp"
+#include "gbuffer/gbuffer.hpp"
+#include "lighting/light_clusters.hpp"
+#include "lighting/shading_model.hpp"
+
+namespace pbr {
+
+// What a renderer is built with, beyond the scene and the frame size.
+struct RendererConfig {
+  ClusterConfig clusters;
+  HdrFormat hdrFormat = HdrFormat::Rgba16f;
+  GBufferPrecision gbuffer = GBufferPrecision::Lean;
+  Profiler* precomputeProfiler = nullptr;  // times the IBL precomputation when the scene has an environment
+  std::string sizeOption = "--size";       // the option the frame size came from, named when it is too large
+};
+
+}  // namespace pbr

@@ -1,0 +1,36 @@
+#pragma once
+#include <memory>
+
+#include "core/profiler.hpp"
+#include "core/program_cache.hpp"
+#include "core/scene.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+#include "ibl/ibl_maps.hpp"
+#include "lighting/cluster_debug_pass.hpp"
+#include "lighting/gbuffer_debug_pass.hpp"
+#include "lighting/light_buffer.hpp"
+#include "lighting/lighting_pass.hpp"
+#include "post/post_pass.hpp"
+
+namespace pbr {
+
+// What lives as long as the scene, whatever the frame size: the program cache (every pass's permutations, the
+// cluster passes' too), the uploaded meshes, textures and material blocks (inside the G-buffer pass), the light
+// buffer, the IBL maps precomputed from the scene's environment, and the passes that hold no per-size state.
+// Built once per scene; a resize does not touch it.
+struct SceneResources {
+  // Throws what the IBL precomputation throws (an unusable .hdr, named). With a profiler the precomputation is
+  // one profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame.
+  SceneResources(const ShaderLibrary& shaders, const Scene& scene, Profiler* precomputeProfiler);
+
+  ProgramCache programs;  // first: the passes below hold references into it
+  GBufferPass geometry;
+  LightBuffer lights;
+  std::unique_ptr<IblMaps> ibl;  // null without an environment
+  LightingPass lighting;
+  PostPass post;
+  ClusterDebugPass clusterDebug;
+  GBufferDebugPass gbufferDebug;
+};
+
+}  // namespace pbr
