@@ -207,7 +207,7 @@ int runRender(const std::vector<std::string>& argv) {
                 describe(precomputeProfiler.mode()));
     printPrecomputeTimings(precomputeProfiler.takeResults(true));
   }
-  FrameOptions options{model, variant, culling, exposure, false, debugView};
+  FrameOptions options{model, variant, culling, exposure, false, debugView, {}};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

@@ -1,15 +1,16 @@
 #include "core/environment_maps.hpp"
 
-#include "core/bindings.hpp"
 
 namespace pbr {
 
+ShaderDefines environmentBindingDefines() { return bindingDefines({kIblUbo, kIblSpecularUnit, kIblDfgUnit}); }
+
 void bindEnvironmentMaps(const EnvironmentMaps& maps) {
-  glBindBufferBase(GL_UNIFORM_BUFFER, binding::kIblUbo, maps.irradianceBlock);
-  glBindTextureUnit(binding::kIblSpecularUnit, maps.specularCube);
-  glBindSampler(binding::kIblSpecularUnit, maps.specularSampler);
-  glBindTextureUnit(binding::kIblDfgUnit, maps.dfgTable);
-  glBindSampler(binding::kIblDfgUnit, maps.dfgSampler);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kIblUbo.index, maps.irradianceBlock);
+  glBindTextureUnit(kIblSpecularUnit.index, maps.specularCube);
+  glBindSampler(kIblSpecularUnit.index, maps.specularSampler);
+  glBindTextureUnit(kIblDfgUnit.index, maps.dfgTable);
+  glBindSampler(kIblDfgUnit.index, maps.dfgSampler);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 

@@ -2,6 +2,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/binding_table.hpp"
 #include "core/camera.hpp"
 
 namespace pbr {
@@ -20,5 +21,8 @@ struct FrameBlock {
 static_assert(sizeof(FrameBlock) == 4 * 64 + 4 * 16, "FrameBlock must match its std140 layout");
 
 FrameBlock makeFrameBlock(const Camera& camera, int width, int height);
+
+// Where every pass that reads the camera finds the frame block.
+constexpr BindingPoint kFrameUbo{"FRAME_UBO", BindingKind::UniformBuffer, 0};
 
 }  // namespace pbr

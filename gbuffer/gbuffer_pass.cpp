@@ -7,7 +7,7 @@
 
 #include <glm/matrix.hpp>
 
-#include "core/bindings.hpp"
+#include "gbuffer/gbuffer_bindings.hpp"
 #include "gbuffer/object_block.hpp"
 
 namespace pbr {
@@ -43,16 +43,17 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
 }  // namespace
 
 std::array<int, GBufferPass::kMapCount> GBufferPass::materialMaps(const Material& m) {
-  static_assert(binding::kBaseColorMapUnit < kMapCount && binding::kMetallicRoughnessMapUnit < kMapCount &&
-                    binding::kNormalMapUnit < kMapCount && binding::kOcclusionMapUnit < kMapCount &&
-                    binding::kEmissiveMapUnit < kMapCount,
+  using namespace gbuffer_binding;
+  static_assert(kBaseColorMapUnit.index < kMapCount && kMetallicRoughnessMapUnit.index < kMapCount &&
+                    kNormalMapUnit.index < kMapCount && kOcclusionMapUnit.index < kMapCount &&
+                    kEmissiveMapUnit.index < kMapCount,
                 "material maps are bound to units 0 .. kMapCount - 1");
   std::array<int, kMapCount> maps{};
-  maps[binding::kBaseColorMapUnit] = m.baseColorTexture;
-  maps[binding::kMetallicRoughnessMapUnit] = m.metallicRoughnessTexture;
-  maps[binding::kNormalMapUnit] = m.normalTexture;
-  maps[binding::kOcclusionMapUnit] = m.occlusionTexture;
-  maps[binding::kEmissiveMapUnit] = m.emissiveTexture;
+  maps[kBaseColorMapUnit.index] = m.baseColorTexture;
+  maps[kMetallicRoughnessMapUnit.index] = m.metallicRoughnessTexture;
+  maps[kNormalMapUnit.index] = m.normalTexture;
+  maps[kOcclusionMapUnit.index] = m.occlusionTexture;
+  maps[kEmissiveMapUnit.index] = m.emissiveTexture;
   return maps;
 }
 
@@ -83,7 +84,8 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     for (const ShaderDefine& d : defines) key += d.value;
     auto it = programIndex.find(key);
     if (it == programIndex.end()) {
-      programs_.push_back(&programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
+      programs_.push_back(
+          &programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", concat(defines, gbufferBindingDefines())));
       it = programIndex.emplace(key, programs_.size() - 1).first;
     }
     Draw d{};
@@ -120,7 +122,7 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, zeros);
   glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
 
-  frame.bind(binding::kFrameUbo);
+  frame.bind(kFrameUbo.index);
   size_t bound = std::numeric_limits<size_t>::max();
   for (const Draw& d : draws_) {
     if (d.program != bound) programs_[d.program]->use();
@@ -135,7 +137,8 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
       glBindTextures(0, static_cast<GLsizei>(kMapCount), d.textures.data());
       glBindSamplers(0, static_cast<GLsizei>(kMapCount), d.samplers.data());
     }
-    glBindBufferRange(GL_UNIFORM_BUFFER, binding::kObjectUbo, objectBlocks_.id(), d.blockOffset, sizeof(ObjectBlock));
+    glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
+                      sizeof(ObjectBlock));
     meshes_[static_cast<size_t>(d.mesh)].draw();
   }
   // Later passes fetch from these units with their own (mipmap-less) textures: a sampler left bound would make

@@ -13,6 +13,20 @@ struct ClusterBlock {
 };
 static_assert(sizeof(ClusterBlock) == 48, "ClusterBlock must match its std140 layout");
 
+// std430 mirrors of the per-cluster records in shaders/lighting/clusters.glsl.
+struct ClusterHeader {
+  uint32_t offset;  // first entry in the light-index list
+  uint32_t count;
+};
+static_assert(sizeof(ClusterHeader) == 8, "ClusterHeader must match its std430 layout");
+struct ClusterBounds {
+  glm::vec4 minView;  // view-space AABB of the froxel, padded
+  glm::vec4 maxView;
+};
+static_assert(sizeof(ClusterBounds) == 32, "ClusterBounds must match its std430 layout");
+// One light of cluster_lights.comp's output: its view-space bounding sphere (xyz centre, w radius).
+using ClusterViewLight = glm::vec4;
+
 // std430 mirror of `Status` in shaders/lighting/cluster_scan.comp.
 struct ClusterStatus {
   uint32_t demand;

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "core/bindings.hpp"
+#include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
@@ -17,10 +17,11 @@ void ClusterDebugPass::render(ClusterDebugView view, const LightClusters& cluste
                               const UniformBuffer<FrameBlock>& frame, const Texture& ldr) {
   if (view == ClusterDebugView::None) return;
   const bool slices = view == ClusterDebugView::Slices;
-  programs_.compute("lighting/cluster_debug.comp", {{"DEBUG_SLICES", slices ? "1" : "0"}}).use();
-  frame.bind(binding::kFrameUbo);
+  programs_.compute("lighting/cluster_debug.comp",
+                    concat({{"DEBUG_SLICES", slices ? "1" : "0"}}, lightingBindingDefines())).use();
+  frame.bind(kFrameUbo.index);
   clusters.bindForLighting();
-  glBindTextureUnit(3, depth.id());
+  glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
   glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glDispatchCompute(static_cast<GLuint>((ldr.width() + 7) / 8), static_cast<GLuint>((ldr.height() + 7) / 8), 1);

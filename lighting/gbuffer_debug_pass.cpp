@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "core/bindings.hpp"
+#include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
@@ -31,12 +31,12 @@ const char* channelDefine(GBufferChannel channel) {
 
 void GBufferDebugPass::render(GBufferChannel channel, const GBuffer& gbuffer, const UniformBuffer<FrameBlock>& frame,
                               const Texture& ldr) {
-  programs_.compute("lighting/gbuffer_debug.comp", {{channelDefine(channel), "1"}}).use();
-  frame.bind(binding::kFrameUbo);
-  glBindTextureUnit(0, gbuffer.baseColor.id());
-  glBindTextureUnit(1, gbuffer.normal.id());
-  glBindTextureUnit(2, gbuffer.material.id());
-  glBindTextureUnit(3, gbuffer.depth.id());
+  programs_.compute("lighting/gbuffer_debug.comp", concat({{channelDefine(channel), "1"}}, lightingBindingDefines())).use();
+  frame.bind(kFrameUbo.index);
+  glBindTextureUnit(lighting_binding::kBaseColorUnit.index, gbuffer.baseColor.id());
+  glBindTextureUnit(lighting_binding::kNormalUnit.index, gbuffer.normal.id());
+  glBindTextureUnit(lighting_binding::kMaterialUnit.index, gbuffer.material.id());
+  glBindTextureUnit(lighting_binding::kDepthUnit.index, gbuffer.depth.id());
   glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glDispatchCompute(static_cast<GLuint>((ldr.width() + 7) / 8), static_cast<GLuint>((ldr.height() + 7) / 8), 1);

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/bindings.hpp"
+#include "lighting/lighting_bindings.hpp"
 #include "core/context.hpp"
 
 namespace pbr {
@@ -32,7 +32,7 @@ void LightBuffer::upload(const std::vector<PointLight>& lights) {
 }
 
 void LightBuffer::bind() const {
-  if (buffer_) buffer_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+  if (buffer_) buffer_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightSsbo.index);
 }
 
 }  // namespace pbr

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/bindings.hpp"
+#include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
 namespace {
 
 ShaderDefines assignDefines(bool fill, bool stats) {
-  return {{"ASSIGN_FILL", fill ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}};
+  return concat({{"ASSIGN_FILL", fill ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}}, lightingBindingDefines());
 }
 
 GLuint groupsFor(uint32_t items, uint32_t groupSize) { return (items + groupSize - 1) / groupSize; }
@@ -24,13 +24,13 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) 
 
 LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config)
     : config_(config),
-      boundsProgram_(programs.compute("lighting/cluster_bounds.comp")),
-      viewLightsProgram_(programs.compute("lighting/cluster_lights.comp")),
-      tilesProgram_(programs.compute("lighting/cluster_tiles.comp")),
+      boundsProgram_(programs.compute("lighting/cluster_bounds.comp", lightingBindingDefines())),
+      viewLightsProgram_(programs.compute("lighting/cluster_lights.comp", lightingBindingDefines())),
+      tilesProgram_(programs.compute("lighting/cluster_tiles.comp", lightingBindingDefines())),
       countProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
       countStatsProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
-      scanProgram_(programs.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "0"}})),
-      scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", {{"ASSIGN_STATS", "1"}})),
+      scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
+      scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       fillProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
       status_(sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
@@ -63,14 +63,14 @@ void LightClusters::rebuildGrid(const FrameBlock& f, const UniformBuffer<FrameBl
   blockData_.dims = glm::uvec4(dims_, tile);
   blockData_.slicing = glm::vec4(nearPlane, farPlane, scale, -scale * std::log(nearPlane));
   blockData_.counts = glm::uvec4(0, clusters, 0, 0);
-  bounds_ = std::make_unique<Buffer>(clusters * 32ull, nullptr, 0);
-  headers_ = std::make_unique<Buffer>(clusters * 8ull, nullptr, 0);
+  bounds_ = std::make_unique<Buffer>(clusters * sizeof(ClusterBounds), nullptr, 0);
+  headers_ = std::make_unique<Buffer>(clusters * sizeof(ClusterHeader), nullptr, 0);
   block_.update(blockData_);
 
   boundsProgram_.use();
-  frame.bind(binding::kFrameUbo);
-  block_.bind(binding::kClusterUbo);
-  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterBoundsSsbo);
+  frame.bind(kFrameUbo.index);
+  block_.bind(lighting_binding::kClusterUbo.index);
+  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterBoundsSsbo.index);
   glDispatchCompute(groupsFor(clusters, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -94,7 +94,7 @@ void LightClusters::ensureCapacity(uint64_t entries) {
   if (entries <= capacity_) return;
   while (glGetError() != GL_NO_ERROR) {
   }
-  auto grown = std::make_unique<Buffer>(entries * 4, nullptr, 0);
+  auto grown = std::make_unique<Buffer>(entries * sizeof(uint32_t), nullptr, 0);
   if (glGetError() == GL_OUT_OF_MEMORY) {
     if (!warnedLimit_) {
       std::fprintf(stderr, "clusters: out of GPU memory growing the light index list to %.1f MiB; clusters that do "
@@ -110,7 +110,8 @@ void LightClusters::ensureCapacity(uint64_t entries) {
 // Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound.
 void LightClusters::ensureLightBuffers(uint32_t lights) {
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y, words = (std::max(lights, 1u) + 31u) / 32u;
-  const uint64_t viewBytes = words * 32 * 16, maskBytes = tiles * words * 4;
+  // View lights are written in whole 32-light words, so a mask word never reads past the buffer.
+  const uint64_t viewBytes = words * 32 * sizeof(ClusterViewLight), maskBytes = tiles * words * sizeof(uint32_t);
   if (!viewLights_ || viewLights_->size() < viewBytes) viewLights_ = std::make_unique<Buffer>(viewBytes, nullptr, 0);
   if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = std::make_unique<Buffer>(maskBytes, nullptr, 0);
 }
@@ -147,16 +148,16 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
     glClearNamedBufferData(visible_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   }
 
-  frame.bind(binding::kFrameUbo);
-  block_.bind(binding::kClusterUbo);
+  frame.bind(kFrameUbo.index);
+  block_.bind(lighting_binding::kClusterUbo.index);
   lights.bind();
-  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterBoundsSsbo);
-  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
-  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
-  status_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterStatusSsbo);
-  viewLights_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterViewLightsSsbo);
-  tileMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterTileMasksSsbo);
-  if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightVisibleSsbo);
+  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterBoundsSsbo.index);
+  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
+  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
+  status_.bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterStatusSsbo.index);
+  viewLights_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewLightsSsbo.index);
+  tileMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterTileMasksSsbo.index);
+  if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightVisibleSsbo.index);
 
   viewLightsProgram_.use();
   glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
@@ -185,19 +186,19 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
 }
 
 void LightClusters::bindForLighting() const {
-  block_.bind(binding::kClusterUbo);
-  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterSsbo);
-  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndexSsbo);
-  status_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterStatusSsbo);
+  block_.bind(lighting_binding::kClusterUbo.index);
+  headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
+  indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
+  status_.bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterStatusSsbo.index);
 }
 
 std::vector<std::vector<uint32_t>> LightClusters::readLists() const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   const uint32_t clusters = blockData_.counts.y;
   std::vector<uint32_t> headers(clusters * 2ull);
-  glGetNamedBufferSubData(headers_->id(), 0, static_cast<GLsizeiptr>(headers.size() * 4), headers.data());
+  glGetNamedBufferSubData(headers_->id(), 0, static_cast<GLsizeiptr>(headers.size() * sizeof(uint32_t)), headers.data());
   std::vector<uint32_t> indices(capacity_);
-  glGetNamedBufferSubData(indices_->id(), 0, static_cast<GLsizeiptr>(indices.size() * 4), indices.data());
+  glGetNamedBufferSubData(indices_->id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(uint32_t)), indices.data());
   std::vector<std::vector<uint32_t>> lists(clusters);
   for (uint32_t c = 0; c < clusters; ++c) {
     const uint32_t offset = headers[2 * c], count = headers[2 * c + 1];

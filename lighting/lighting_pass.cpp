@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/bindings.hpp"
+#include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
@@ -38,7 +38,8 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
 }
 
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
-  return programs_.compute("lighting/deferred.comp", permutation(o, clustered, radianceFormat));
+  return programs_.compute("lighting/deferred.comp",
+                           concat(permutation(o, clustered, radianceFormat), lightingBindingDefines()));
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
@@ -53,24 +54,26 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
   program(options, clusters != nullptr, radiance.format()).use();
-  frame.bind(binding::kFrameUbo);
-  block_.bind(binding::kLightingUbo);
+  frame.bind(kFrameUbo.index);
+  block_.bind(lighting_binding::kLightingUbo.index);
   lights.bind();
   if (clusters) clusters->bindForLighting();
   if (ibl) bindEnvironmentMaps(*options.environment);
   if (ambient) {
-    glBindTextureUnit(binding::kAmbientAlbedoUnit, ambient->id());
-    glBindSampler(binding::kAmbientAlbedoUnit, ambientSampler_.id());
+    glBindTextureUnit(lighting_binding::kAmbientAlbedoUnit.index, ambient->id());
+    glBindSampler(lighting_binding::kAmbientAlbedoUnit.index, ambientSampler_.id());
   }
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
     if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) pairStats_ = std::make_unique<Buffer>(pairGroups_ * 8, nullptr, 0);
     const uint32_t zero = 0;
     glClearNamedBufferData(pairStats_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    pairStats_->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightingStatsSsbo);
+    pairStats_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightingStatsSsbo.index);
   }
-  const GLuint textures[] = {surface.baseColor.id(), surface.normal.id(), surface.material.id(), surface.depth.id()};
-  glBindTextures(0, 4, textures);
+  glBindTextureUnit(lighting_binding::kBaseColorUnit.index, surface.baseColor.id());
+  glBindTextureUnit(lighting_binding::kNormalUnit.index, surface.normal.id());
+  glBindTextureUnit(lighting_binding::kMaterialUnit.index, surface.material.id());
+  glBindTextureUnit(lighting_binding::kDepthUnit.index, surface.depth.id());
   glBindImageTexture(0, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE, radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glDispatchCompute(groupsX, groupsY, 1);

@@ -1,6 +1,5 @@
 #include "post/post_pass.hpp"
 
-#include "core/bindings.hpp"
 
 namespace pbr {
 
@@ -8,7 +7,7 @@ void PostPass::render(const Texture& hdr, const Texture& ldr, const PostSettings
   block_.update({settings.exposure, settings.toneMap ? 1u : 0u,
                  glm::uvec2(static_cast<unsigned>(ldr.width()), static_cast<unsigned>(ldr.height()))});
   program_.use();
-  block_.bind(binding::kPostUbo);
+  block_.bind(kPostUbo.index);
   glBindTextureUnit(0, hdr.id());
   glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glDispatchCompute(static_cast<GLuint>((ldr.width() + 7) / 8), static_cast<GLuint>((ldr.height() + 7) / 8), 1);

@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 
+#include "core/binding_table.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
 
@@ -19,10 +20,14 @@ struct PostSettings {
   bool toneMap = true;  // false for LDR frames: clamp + sRGB only
 };
 
+// The post pass's settings block, one binding point for C++ and GLSL.
+constexpr BindingPoint kPostUbo{"POST_UBO", BindingKind::UniformBuffer, 3};
+
 // HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
 class PostPass {
  public:
-  explicit PostPass(ProgramCache& programs) : program_(programs.compute("post/post.comp")) {}
+  explicit PostPass(ProgramCache& programs)
+      : program_(programs.compute("post/post.comp", bindingDefines({kPostUbo}))) {}
   void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
 
  private:

@@ -1,5 +1,7 @@
 #include "tests/glsl_probe.hpp"
 
+#include "lighting/lighting_bindings.hpp"
+
 #include <stdexcept>
 
 namespace pbr::test {
@@ -30,7 +32,7 @@ std::string probeShader(const std::string& source) {
 }  // namespace
 
 GlslProbe::GlslProbe(const std::string& name, const std::string& source, const ShaderDefines& defines)
-    : program_(ShaderLibrary().computeFromSource(name, probeShader(source), defines)) {}
+    : program_(ShaderLibrary().computeFromSource(name, probeShader(source), concat(defines, lightingBindingDefines()))) {}
 
 std::vector<glm::vec4> GlslProbe::run(const std::vector<glm::vec4>& input) const {
   std::vector<glm::vec4> output(input.size());

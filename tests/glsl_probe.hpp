@@ -17,8 +17,9 @@ namespace pbr::test {
 // `name`, where line n + 1 is line n of `source` (line 1 is the #version line the probe adds).
 class GlslProbe {
  public:
-  // Input and output live in std430 SSBOs at these bindings, above the renderer's (core/bindings.hpp) and
-  // within the 8 that every GL 4.3+ implementation offers.
+  // Input and output live in std430 SSBOs at these bindings, within the 8 that every GL 4.3+ implementation
+  // offers. Probes are compiled with the lighting module's binding defines (lighting/lighting_bindings.hpp), so
+  // that they may include its GLSL and the IBL's; none of those files declares a storage block at 6 or 7.
   static constexpr unsigned kInputBinding = 6;
   static constexpr unsigned kOutputBinding = 7;
 

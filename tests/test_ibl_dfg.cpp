@@ -6,7 +6,6 @@
 #include <cmath>
 #include <vector>
 
-#include "core/bindings.hpp"
 #include "core/shader_library.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/ibl_maps.hpp"

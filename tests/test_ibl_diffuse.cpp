@@ -12,7 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/assets.hpp"
-#include "core/bindings.hpp"
+#include "core/environment_maps.hpp"
 #include "core/shader_library.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/ibl_maps.hpp"
@@ -226,7 +226,7 @@ vec4 probe(vec4 v) { return textureLod(irradianceMap, v.xyz, 0.0); }
     start = std::chrono::steady_clock::now();
     const pbr::Buffer sh = shPass.run(cube);
     const double shMs = msSince(start);
-    sh.bindBase(GL_UNIFORM_BUFFER, pbr::binding::kIblUbo);
+    sh.bindBase(GL_UNIFORM_BUFFER, pbr::kIblUbo.index);
     const ErrorStats shError = errorStats(gpuIrradiance(normals), reference);
 
     start = std::chrono::steady_clock::now();

@@ -14,7 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/assets.hpp"
-#include "core/bindings.hpp"
+#include "core/environment_maps.hpp"
 #include "core/context.hpp"
 #include "core/profiler.hpp"
 #include "core/shader_library.hpp"
@@ -167,15 +167,15 @@ TEST_CASE("ibl maps: a shipped 1k environment at the default settings, timed as 
     }
   }
 
-  // bind() puts the maps where ibl_sample.glsl looks for them.
+  // bindEnvironmentMaps puts the maps where ibl_sample.glsl looks for them.
   pbr::bindEnvironmentMaps(maps.maps());
   GLint bound = 0;
-  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, pbr::binding::kIblUbo, &bound);
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, pbr::kIblUbo.index, &bound);
   CHECK(static_cast<GLuint>(bound) == maps.irradiance().id());
-  glActiveTexture(GL_TEXTURE0 + pbr::binding::kIblSpecularUnit);
+  glActiveTexture(GL_TEXTURE0 + pbr::kIblSpecularUnit.index);
   glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &bound);
   CHECK(static_cast<GLuint>(bound) == maps.specular().id());
-  glActiveTexture(GL_TEXTURE0 + pbr::binding::kIblDfgUnit);
+  glActiveTexture(GL_TEXTURE0 + pbr::kIblDfgUnit.index);
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
   CHECK(static_cast<GLuint>(bound) == maps.dfg().id());
   glActiveTexture(GL_TEXTURE0);

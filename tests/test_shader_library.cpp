@@ -19,11 +19,16 @@
 #include <utility>
 #include <vector>
 
-#include "core/bindings.hpp"
+#include "core/binding_table.hpp"
+#include "core/environment_maps.hpp"
+#include "core/frame_block.hpp"
 #include "core/shader_library.hpp"
+#include "gbuffer/gbuffer_bindings.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "lighting/shading_model.hpp"
+#include "post/post_pass.hpp"
 #include "tests/gl_test_context.hpp"
 
 namespace fs = std::filesystem;
@@ -289,13 +294,15 @@ std::string describeDefines(const ShaderDefines& defines) {
   return out;
 }
 
-void checkComputeCompiles(const std::string& file, const DefineSets& permutations) {
+// Each permutation with the binding defines of the module that compiles it, as its pass does.
+void checkComputeCompiles(const std::string& file, const DefineSets& permutations,
+                          const ShaderDefines& bindings = pbr::lightingBindingDefines()) {
   const ShaderLibrary shaders;
   for (const ShaderDefines& defines : permutations) {
     CAPTURE(file);
     const std::string described = describeDefines(defines);
     CAPTURE(described);
-    CHECK_NOTHROW(shaders.compute(file, defines));
+    CHECK_NOTHROW(shaders.compute(file, pbr::concat(defines, bindings)));
   }
 }
 
@@ -333,7 +340,11 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/cluster_lights.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_tiles.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
-  checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}});
+  for (const char* channel : {"GBUFFER_CHANNEL_BASE_COLOR", "GBUFFER_CHANNEL_NORMAL", "GBUFFER_CHANNEL_ROUGHNESS",
+                              "GBUFFER_CHANNEL_METALNESS", "GBUFFER_CHANNEL_DEPTH"}) {
+    checkComputeCompiles("lighting/gbuffer_debug.comp", DefineSets{ShaderDefines{{channel, "1"}}});
+  }
+  checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}}, pbr::bindingDefines({pbr::kPostUbo}));
   const ShaderLibrary shaders;
   const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
                                                  "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK"};
@@ -344,7 +355,8 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   for (const ShaderDefines& defines : flagCombinations(gbufferFlags)) {
     const std::string described = describeDefines(defines);
     CAPTURE(described);
-    CHECK_NOTHROW(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", defines));
+    CHECK_NOTHROW(
+        shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", pbr::concat(defines, pbr::gbufferBindingDefines())));
   }
 }
 
@@ -358,75 +370,32 @@ std::string readText(const fs::path& path) {
   return ss.str();
 }
 
-// kLightIndexSsbo -> LIGHT_INDEX_SSBO, the GLSL spelling of the same binding.
-std::string glslName(const std::string& cppName) {
-  std::string out;
-  for (size_t i = 1; i < cppName.size(); ++i) {
-    const char c = cppName[i];
-    if (std::isupper(static_cast<unsigned char>(c)) && i > 1) out += '_';
-    out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  }
-  return out;
-}
-
 }  // namespace
 
-TEST_CASE("shader library: bindings.glsl and core/bindings.hpp hold the same binding points") {
-  const fs::path source = PBR_SOURCE_DIR;
-
-  std::map<std::string, long> glsl;
-  static const std::regex defineRe(R"(^\s*#\s*define\s+(\w+)\s+(\S+)\s*$)");
-  for (const std::string& line : lines(readText(source / "shaders/common/bindings.glsl"))) {
-    std::smatch m;
-    if (!std::regex_match(line, m, defineRe)) continue;
-    CAPTURE(line);
-    REQUIRE(std::regex_match(m[2].str(), std::regex(R"(\d+u?)")));
-    glsl[m[1].str()] = std::stol(m[2].str());
+TEST_CASE("shader library: every binding point a shader names comes from a binding table, and tables do not collide") {
+  // The names GLSL reads in layout(binding = NAME): each must be a define of the table its module compiles with.
+  std::set<std::string> declared;
+  for (const ShaderDefines& table : {pbr::lightingBindingDefines(), pbr::gbufferBindingDefines(),
+                                     pbr::bindingDefines({pbr::kPostUbo})}) {
+    for (const pbr::ShaderDefine& d : table) declared.insert(d.name);
   }
-
-  // The header is parsed rather than listed here so that a constant added on one side only is caught.
-  std::map<std::string, long> cpp;
-  static const std::regex constantRe(R"(constexpr\s+[\w:]+(?:\s+int)?\s+(k\w+)\s*=\s*(\d+)u?\s*;)");
-  const std::string header = readText(source / "core/bindings.hpp");
-  for (std::sregex_iterator it(header.begin(), header.end(), constantRe), end; it != end; ++it) {
-    cpp[glslName((*it)[1].str())] = std::stol((*it)[2].str());
+  static const std::regex named(R"(binding\s*=\s*([A-Z_][A-Z0-9_]*))");
+  size_t uses = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(PBR_SOURCE_DIR) / "shaders")) {
+    if (!entry.is_regular_file()) continue;
+    const std::string text = readText(entry.path());
+    for (std::sregex_iterator it(text.begin(), text.end(), named), end; it != end; ++it, ++uses) {
+      CAPTURE(entry.path().string());
+      CHECK_MESSAGE(declared.count((*it)[1].str()) == 1, (*it)[1].str() << " is in no binding table");
+    }
   }
-
-  // Anchors the parser to the compiled constants, so a misparse cannot make both maps agree by accident.
-  const std::map<std::string, unsigned> compiled = {
-      {"FRAME_UBO", pbr::binding::kFrameUbo},
-      {"OBJECT_UBO", pbr::binding::kObjectUbo},
-      {"LIGHTING_UBO", pbr::binding::kLightingUbo},
-      {"POST_UBO", pbr::binding::kPostUbo},
-      {"CLUSTER_UBO", pbr::binding::kClusterUbo},
-      {"LIGHT_SSBO", pbr::binding::kLightSsbo},
-      {"CLUSTER_SSBO", pbr::binding::kClusterSsbo},
-      {"LIGHT_INDEX_SSBO", pbr::binding::kLightIndexSsbo},
-      {"LIGHT_VISIBLE_SSBO", pbr::binding::kLightVisibleSsbo},
-      {"CLUSTER_BOUNDS_SSBO", pbr::binding::kClusterBoundsSsbo},
-      {"CLUSTER_STATUS_SSBO", pbr::binding::kClusterStatusSsbo},
-      {"LIGHTING_STATS_SSBO", pbr::binding::kLightingStatsSsbo},
-      {"BASE_COLOR_MAP_UNIT", pbr::binding::kBaseColorMapUnit},
-      {"METALLIC_ROUGHNESS_MAP_UNIT", pbr::binding::kMetallicRoughnessMapUnit},
-      {"NORMAL_MAP_UNIT", pbr::binding::kNormalMapUnit},
-      {"OCCLUSION_MAP_UNIT", pbr::binding::kOcclusionMapUnit},
-      {"EMISSIVE_MAP_UNIT", pbr::binding::kEmissiveMapUnit},
-  };
-  for (const auto& [name, value] : compiled) {
-    CAPTURE(name);
-    REQUIRE(cpp.count(name) == 1);
-    CHECK(cpp.at(name) == static_cast<long>(value));
-  }
-
-  for (const auto& [name, value] : glsl) {
-    CAPTURE(name);
-    CHECK_MESSAGE(cpp.count(name) == 1, "GLSL binding without a C++ constant");
-    if (cpp.count(name)) CHECK(cpp.at(name) == value);
-  }
-  for (const auto& [name, value] : cpp) {
-    CAPTURE(name);
-    CHECK_MESSAGE(glsl.count(name) == 1, "C++ binding without a GLSL define");
-  }
+  CHECK(uses > 20);
+  // Points bound together must not share an index within a kind; different kinds may.
+  CHECK_THROWS_WITH_AS(pbr::bindingDefines({pbr::kFrameUbo, {"OTHER_UBO", pbr::BindingKind::UniformBuffer, 0}}),
+                       "binding points FRAME_UBO and OTHER_UBO share index 0", std::logic_error);
+  CHECK_NOTHROW(pbr::bindingDefines({pbr::kFrameUbo, {"SOME_SSBO", pbr::BindingKind::StorageBuffer, 0}}));
+  CHECK_THROWS_WITH_AS(pbr::bindingDefines({pbr::kFrameUbo, pbr::kFrameUbo}), "binding point FRAME_UBO is declared twice",
+                       std::logic_error);
 }
 
 TEST_CASE("shader library: brdf.glsl tests exactly the defines that name the PBR variant's terms") {

@@ -1,5 +1,3 @@
-#include "bindings.glsl"
-
 // Mirrors pbr::FrameBlock (core/frame_block.hpp).
 layout(std140, binding = FRAME_UBO) uniform FrameBlock {
   mat4 view;

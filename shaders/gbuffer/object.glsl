@@ -1,5 +1,3 @@
-#include "../common/bindings.glsl"
-
 // Mirrors pbr::ObjectBlock (gbuffer/object_block.hpp).
 layout(std140, binding = OBJECT_UBO) uniform ObjectBlock {
   mat4 model;

@@ -1,9 +1,9 @@
-// Image-based lighting for the lighting pass: the maps pbr::IblMaps precomputes, bound by IblMaps::bind().
+// Image-based lighting for the lighting pass: the maps pbr::IblMaps precomputes, bound by bindEnvironmentMaps
+// (core/environment_maps.hpp) at the points its table defines:
 //   IBL_UBO            IblBlock: 9 spherical-harmonic radiance coefficients of the environment (diffuse)
 //   IBL_SPECULAR_UNIT  GGX-prefiltered radiance cube map, RGBA16F; level k holds roughness k / (levels - 1)
 //   IBL_DFG_UNIT       split-sum DFG table, RG16F, x = n.v, y = perceptual roughness
 // IBL_MULTIPLE_SCATTERING 1 adds the multiple-scattering energy compensation to shadeIbl.
-#include "../common/bindings.glsl"
 #include "../lighting/brdf.glsl"
 #include "sh9.glsl"
 

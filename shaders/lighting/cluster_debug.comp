@@ -8,7 +8,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "../common/digits.glsl"
 #include "clusters.glsl"
 
-layout(binding = 3) uniform sampler2D gDepth;
+layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;
 layout(rgba8, binding = 0) uniform image2D ldr;
 layout(std430, binding = CLUSTER_SSBO) readonly buffer Headers { ClusterHeader headers[]; };
 layout(std430, binding = CLUSTER_STATUS_SSBO) readonly buffer Status { uint demand, nonEmpty, maxPerCluster; } status;

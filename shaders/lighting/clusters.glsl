@@ -1,5 +1,3 @@
-#include "../common/bindings.glsl"
-
 // Mirrors pbr::ClusterBlock (lighting/cluster_block.hpp).
 layout(std140, binding = CLUSTER_UBO) uniform ClusterBlock {
   uvec4 dims;     // tiles x, tiles y, depth slices, tile size in pixels
@@ -7,7 +5,7 @@ layout(std140, binding = CLUSTER_UBO) uniform ClusterBlock {
   uvec4 counts;   // lights in the frame, clusters, index-list capacity, stats enabled
 } clusterGrid;
 
-// Per cluster: where its light indices start in the index list, and how many there are.
+// Per cluster (mirrored by lighting/cluster_block.hpp): where its light indices start in the index list, and how many there are.
 struct ClusterHeader {
   uint offset;
   uint count;

@@ -1,5 +1,3 @@
-#include "../common/bindings.glsl"
-
 // Mirrors pbr::GpuLight (lighting/light_buffer.hpp), std430.
 struct PointLight {
   vec4 positionRadius;  // world position, influence radius R

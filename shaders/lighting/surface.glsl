@@ -1,10 +1,10 @@
 #include "../common/frame.glsl"
 #include "../common/octahedral.glsl"
 
-layout(binding = 0) uniform sampler2D gBaseColor;  // SRGB8_ALPHA8, decoded to linear by texelFetch
-layout(binding = 1) uniform sampler2D gNormal;     // RG16 octahedral
-layout(binding = 2) uniform sampler2D gMaterial;   // RGBA8 roughness, metalness, occlusion
-layout(binding = 3) uniform sampler2D gDepth;      // 32F reversed-Z
+layout(binding = SURFACE_BASE_COLOR_UNIT) uniform sampler2D gBaseColor;  // SRGB8_ALPHA8, linear when fetched
+layout(binding = SURFACE_NORMAL_UNIT) uniform sampler2D gNormal;         // RG16 octahedral
+layout(binding = SURFACE_MATERIAL_UNIT) uniform sampler2D gMaterial;     // RGBA8 roughness, metalness, occlusion
+layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;           // 32F reversed-Z
 
 struct Surface {
   vec3 position;      // world

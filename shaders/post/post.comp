@@ -3,7 +3,6 @@
 // then exact sRGB encoding into RGBA8.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "../common/bindings.glsl"
 #include "aces.glsl"
 #include "srgb.glsl"
 

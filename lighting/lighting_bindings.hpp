@@ -1,0 +1,33 @@
+#pragma once
+#include "core/binding_table.hpp"
+
+namespace pbr {
+
+// The binding points of the lighting module's passes (deferred lighting, cluster assignment, debug views), one
+// table for C++ and GLSL: programs are compiled with lightingBindingDefines().
+namespace lighting_binding {
+constexpr BindingPoint kLightingUbo{"LIGHTING_UBO", BindingKind::UniformBuffer, 2};
+constexpr BindingPoint kClusterUbo{"CLUSTER_UBO", BindingKind::UniformBuffer, 4};
+constexpr BindingPoint kLightSsbo{"LIGHT_SSBO", BindingKind::StorageBuffer, 0};
+constexpr BindingPoint kClusterSsbo{"CLUSTER_SSBO", BindingKind::StorageBuffer, 1};
+constexpr BindingPoint kLightIndexSsbo{"LIGHT_INDEX_SSBO", BindingKind::StorageBuffer, 2};
+constexpr BindingPoint kLightVisibleSsbo{"LIGHT_VISIBLE_SSBO", BindingKind::StorageBuffer, 3};
+constexpr BindingPoint kClusterBoundsSsbo{"CLUSTER_BOUNDS_SSBO", BindingKind::StorageBuffer, 4};
+constexpr BindingPoint kClusterStatusSsbo{"CLUSTER_STATUS_SSBO", BindingKind::StorageBuffer, 5};
+constexpr BindingPoint kLightingStatsSsbo{"LIGHTING_STATS_SSBO", BindingKind::StorageBuffer, 6};
+constexpr BindingPoint kClusterViewLightsSsbo{"CLUSTER_VIEW_LIGHTS_SSBO", BindingKind::StorageBuffer, 7};
+constexpr BindingPoint kClusterTileMasksSsbo{"CLUSTER_TILE_MASKS_SSBO", BindingKind::StorageBuffer, 8};
+// The G-buffer channels as shaders/lighting/surface.glsl samples them.
+constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
+constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};
+constexpr BindingPoint kMaterialUnit{"SURFACE_MATERIAL_UNIT", BindingKind::TextureUnit, 2};
+constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit, 3};
+// The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
+constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
+}  // namespace lighting_binding
+
+// The frame block's, the lighting module's and the environment maps' points: everything bound while the lighting
+// module's programs run.
+ShaderDefines lightingBindingDefines();
+
+}  // namespace pbr
