@@ -13,8 +13,8 @@ namespace {
 
 dvec3 diffuseColor(const ReferenceMaterial& m) { return (1.0 - m.metalness) * m.baseColor; }
 
-// Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures": (n.h)^n. Its spherical-Gaussian fit
-// after Karis 2012, "Spherical Gaussian approximation for Blinn-Phong, Phong and Fresnel".
+// Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures": (n.h)^n.
+// Karis 2012, "Spherical Gaussian approximation for Blinn-Phong, Phong and Fresnel": e^(n (n.h - 1)).
 double lobeValue(double NoH, double shininess, BlinnPhongLobe lobe) {
   return lobe == BlinnPhongLobe::SphericalGaussian ? std::exp(shininess * (NoH - 1.0)) : std::pow(NoH, shininess);
 }

@@ -63,7 +63,7 @@ Image renderPbr(const Scene& scene, int width, int height, BrdfForms::Visibility
   BrdfForms forms;
   forms.visibility = visibility;
   forms.fresnel = BrdfForms::Fresnel::Schlick;
-  // The plane's one material: tabulated once per frame, as per pixel the integral would cost seconds.
+  // One material, so one table per frame: it can afford finer bins than renderReference's per-object tables.
   const AlbedoTable albedo(scene.material, forms, 256, 48);
   const dvec3& n = scene.plane.normal;
   return render(scene, width, height, [&](const dvec3& p, const dvec3& v) {

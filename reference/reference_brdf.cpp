@@ -42,7 +42,7 @@ double smithVisibilityHammon(double NoV, double NoL, double alpha) {
   return 0.5 / ((1.0 - alpha) * 2.0 * NoL * NoV + alpha * (NoL + NoV));
 }
 
-// Uncorrelated masking and shadowing, G2 = G1(v) G1(l).
+// Heitz 2014, "Understanding the Masking-Shadowing Function": uncorrelated masking and shadowing, G1(v) G1(l).
 double smithVisibilitySeparable(double NoV, double NoL, double alpha) {
   return smithG1(NoV, alpha) * smithG1(NoL, alpha) / (4.0 * NoL * NoV);
 }

@@ -113,8 +113,8 @@ TEST_CASE("reference: each BRDF form has its closed form") {
       CHECK(smithVisibilityHammon(nv, nl, 0.0) == doctest::Approx(1.0 / (4.0 * nl * nv)).epsilon(1e-12));
       CHECK(smithVisibilityHammon(nv, nl, 1.0) == doctest::Approx(1.0 / (2.0 * (nl + nv))).epsilon(1e-12));
       // Walter et al. 2007, eq. 34: G1 = 2 n.x / (n.x + sqrt(a^2 + (1 - a^2) (n.x)^2)), uncorrelated.
-      // Heitz 2014, eq. 99: height-correlated G2 = 1 / (1 + Lambda(v) + Lambda(l)), Lambda(x) =
-      // (sqrt(1 + a^2 tan^2 x) - 1) / 2.
+      // Heitz 2014, "Understanding the Masking-Shadowing Function": height-correlated G2 =
+      // 1 / (1 + Lambda(v) + Lambda(l)) with Lambda(x) = (sqrt(1 + a^2 tan^2 x) - 1) / 2.
       for (double a : {0.01, 0.3, 1.0}) {
         auto g1 = [a](double c) { return 2.0 * c / (c + std::sqrt(a * a + (1.0 - a * a) * c * c)); };
         CHECK(smithVisibilitySeparable(nv, nl, a) == doctest::Approx(g1(nv) * g1(nl) / (4.0 * nl * nv)).epsilon(1e-12));
