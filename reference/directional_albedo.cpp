@@ -9,14 +9,6 @@ namespace pbr::reference {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Smith's GGX masking G1(v) = 2 n.v / (n.v + sqrt(a^2 + (1 - a^2) n.v^2)) (Heitz 2014).
-double smithG1(double NoV, double alpha) {
-  const double a2 = alpha * alpha;
-  return 2.0 * NoV / (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV));
-}
-
 // Heitz 2018, listing 1: stretch V to the hemisphere configuration, sample the projected disk, unstretch.
 dvec3 sampleVisibleNormal(const dvec3& V, double alpha, double u1, double u2) {
   const dvec3 Vh = glm::normalize(dvec3(alpha * V.x, alpha * V.y, V.z));
@@ -37,8 +29,7 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
   const dvec3 N(0, 0, 1);
   const double cv = std::clamp(NoV, 1e-4, 1.0);
   const dvec3 V(std::sqrt(1.0 - cv * cv), 0.0, cv);
-  const double r = std::max(m.roughness, kMinRoughness);
-  const double alpha = r * r;
+  const double alpha = alphaFromRoughness(m.roughness);
   dvec3 specular(0.0), diffuse(0.0);
   for (int i = 0; i < samples; ++i) {
     for (int j = 0; j < samples; ++j) {
@@ -59,6 +50,18 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
     }
   }
   return (specular + diffuse) / (double(samples) * samples);
+}
+
+AlbedoTable::AlbedoTable(const ReferenceMaterial& m, const BrdfForms& forms, int bins, int samples) {
+  for (int b = 0; b < bins; ++b) values_.push_back(directionalAlbedo(m, (b + 0.5) / bins, forms, samples));
+}
+
+dvec3 AlbedoTable::operator()(double NoV) const {
+  const int bins = int(values_.size());
+  const double x = std::clamp(NoV * bins - 0.5, 0.0, bins - 1.0);
+  const int i = std::min(int(x), bins - 2);
+  const double f = x - i;
+  return values_[i] * (1.0 - f) + values_[i + 1] * f;
 }
 
 }  // namespace pbr::reference

@@ -87,16 +87,20 @@ std::optional<Hit> AnalyticScene::closestHit(const Ray& ray, double tMin, double
   return best;
 }
 
-Ray cameraRay(const Camera& camera, int width, int height, int x, int y) {
-  const dvec3 eye(camera.position);
-  const dvec3 forward = glm::normalize(dvec3(camera.target) - eye);
+dvec3 cameraDirection(const Camera& camera, int width, int height, double px, double py) {
+  // glm::lookAtRH's basis: the camera looks down -z, x is right, y is up.
+  const dvec3 forward = glm::normalize(dvec3(camera.target) - dvec3(camera.position));
   const dvec3 right = glm::normalize(glm::cross(forward, dvec3(camera.up)));
   const dvec3 up = glm::cross(right, forward);
   const double tanHalf = std::tan(glm::radians(double(camera.fovYDeg)) * 0.5);
   const double aspect = double(width) / double(height);
-  const double ndcX = (x + 0.5) / width * 2.0 - 1.0;
-  const double ndcY = 1.0 - (y + 0.5) / height * 2.0;
-  return {eye, glm::normalize(forward + ndcX * aspect * tanHalf * right + ndcY * tanHalf * up)};
+  const double ndcX = px / width * 2.0 - 1.0;
+  const double ndcY = 1.0 - py / height * 2.0;
+  return forward + ndcX * aspect * tanHalf * right + ndcY * tanHalf * up;
+}
+
+Ray cameraRay(const Camera& camera, int width, int height, int x, int y) {
+  return {dvec3(camera.position), glm::normalize(cameraDirection(camera, width, height, x + 0.5, y + 0.5))};
 }
 
 }  // namespace pbr::reference

@@ -48,6 +48,10 @@ class AnalyticScene final : public RayCaster {
   std::vector<Shape> shapes_;
 };
 
+// The direction from the camera through the continuous image point (px, py), py counted down from the top edge,
+// unnormalised: its component along the view axis is 1, so a ray parameter along it is the depth that the near
+// and far planes clip.
+dvec3 cameraDirection(const Camera& camera, int width, int height, double px, double py);
 // The ray through the centre of pixel (x, y), rows counted from the top, for the scene camera.
 Ray cameraRay(const Camera& camera, int width, int height, int x, int y);
 

@@ -7,15 +7,25 @@
 
 namespace pbr::reference {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 // Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces".
 double ggxD(double NoH, double alpha) {
   const double a2 = alpha * alpha;
   const double d = NoH * NoH * (a2 - 1.0) + 1.0;
   return a2 / (kPi * d * d);
+}
+
+double alphaFromRoughness(double roughness) {
+  const double r = std::max(roughness, kMinRoughness);
+  return r * r;
+}
+
+dvec3 specularF0(const ReferenceMaterial& m) { return (1.0 - m.metalness) * dvec3(0.04) + m.metalness * m.baseColor; }
+
+// Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 72: GGX's Lambda(theta) =
+// (sqrt(1 + alpha^2 tan^2 theta) - 1) / 2 and G1 = 1 / (1 + Lambda).
+double smithG1(double NoX, double alpha) {
+  const double tan2 = (1.0 - NoX * NoX) / (NoX * NoX);
+  return 1.0 / (1.0 + 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0));
 }
 
 // Heitz 2014, "Understanding the Masking-Shadowing Function": G2 / (4 n.l n.v), height-correlated.
@@ -32,14 +42,9 @@ double smithVisibilityHammon(double NoV, double NoL, double alpha) {
   return 0.5 / ((1.0 - alpha) * 2.0 * NoL * NoV + alpha * (NoL + NoV));
 }
 
-// Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 72: GGX's Lambda(theta) =
-// (sqrt(1 + alpha^2 tan^2 theta) - 1) / 2, G1 = 1 / (1 + Lambda), uncorrelated G2 = G1(v) G1(l).
+// Heitz 2014, "Understanding the Masking-Shadowing Function": uncorrelated masking and shadowing, G1(v) G1(l).
 double smithVisibilitySeparable(double NoV, double NoL, double alpha) {
-  auto g1 = [alpha](double c) {
-    const double tan2 = (1.0 - c * c) / (c * c);
-    return 1.0 / (1.0 + 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0));
-  };
-  return g1(NoV) * g1(NoL) / (4.0 * NoL * NoV);
+  return smithG1(NoV, alpha) * smithG1(NoL, alpha) / (4.0 * NoL * NoV);
 }
 
 // Cook & Torrance 1982, "A Reflectance Model for Computer Graphics", unpolarised dielectric Fresnel.
@@ -72,9 +77,8 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const double NoL = std::max(glm::dot(N, L), 0.0);
   const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
   const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
-  const double r = std::max(m.roughness, kMinRoughness);
-  const double alpha = r * r;
-  const dvec3 f0 = (1.0 - m.metalness) * dvec3(0.04) + m.metalness * m.baseColor;
+  const double alpha = alphaFromRoughness(m.roughness);
+  const dvec3 f0 = specularF0(m);
   auto fresnel = [&](double c) {
     switch (forms.fresnel) {
       case BrdfForms::Fresnel::Schlick:
@@ -109,6 +113,7 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   return {diffuse, specular};
 }
 
+// Karis 2013, "Real Shading in Unreal Engine 4": the window (1 - (d / R)^4)^2 brings 1 / d^2 to 0 at R.
 double attenuation(double d, double radius) {
   if (!(radius > 0.0)) return 0.0;
   const double x = d / radius;

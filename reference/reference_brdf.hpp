@@ -5,6 +5,8 @@ namespace pbr::reference {
 
 using glm::dvec3;
 
+constexpr double kPi = 3.14159265358979323846;
+
 // The reference PBR model in double precision, written from the equations and sharing no code with the shaders:
 // GGX NDF, exact height-correlated Smith visibility, exact unpolarised Fresnel for the dielectric part (index of
 // refraction from F0 = 0.04) and Schlick for the metallic part, Lambert weighted by (1 - F(n.v)). BrdfForms swaps
@@ -17,6 +19,10 @@ struct ReferenceMaterial {
 
 // The renderer clamps perceptual roughness to this; the reference does too, so both describe the same surface.
 constexpr double kMinRoughness = 0.045;
+// The renderer's alpha for a perceptual roughness: max(roughness, kMinRoughness)^2.
+double alphaFromRoughness(double roughness);
+// The normal-incidence reflectance mix(0.04, baseColor, metalness) that the Schlick forms start from.
+dvec3 specularF0(const ReferenceMaterial& m);
 
 // Which form of each term evaluateBrdf uses; the defaults are the reference model above. The NDF is always GGX.
 struct BrdfForms {
@@ -36,6 +42,8 @@ struct BrdfForms {
 };
 
 double ggxD(double NoH, double alpha);
+// Smith's GGX masking of one direction at cosine NoX to the normal.
+double smithG1(double NoX, double alpha);
 double smithVisibilityExact(double NoV, double NoL, double alpha);
 double smithVisibilityHammon(double NoV, double NoL, double alpha);
 double smithVisibilitySeparable(double NoV, double NoL, double alpha);

@@ -12,13 +12,13 @@
 
 #include "reference/directional_albedo.hpp"
 #include "reference/mesh_scene.hpp"
+#include "reference/point_light.hpp"
 #include "reference/raycast.hpp"
 
 namespace pbr::reference {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kAlbedoBins = 64;
 constexpr int kAlbedoSamples = 32;  // per axis: the albedo is smooth in n.v and known to about 1e-3
 
@@ -39,25 +39,14 @@ ReferenceMaterial toReference(const Material& m) {
   return {dvec3(m.baseColor), double(m.roughness), double(m.metalness)};
 }
 
-// Directional albedo of each object's material over n.v, for the exact response to uniform ambient light.
-std::vector<std::vector<dvec3>> albedoTables(const Scene& scene, const BrdfForms& forms, int threads) {
-  std::vector<std::vector<dvec3>> tables(scene.objects.size());
+// One albedo table per object, empty where no ambient light makes it needed.
+std::vector<AlbedoTable> albedoTables(const Scene& scene, const BrdfForms& forms, int threads) {
+  std::vector<AlbedoTable> tables(scene.objects.size());
   if (scene.ambient == glm::vec3(0.0f)) return tables;
   parallelFor(int(scene.objects.size()), threads, [&](int i) {
-    for (int b = 0; b < kAlbedoBins; ++b) {
-      const double nv = (b + 0.5) / kAlbedoBins;
-      const ReferenceMaterial m = toReference(scene.objects[size_t(i)].material);
-      tables[size_t(i)].push_back(directionalAlbedo(m, nv, forms, kAlbedoSamples));
-    }
+    tables[size_t(i)] = AlbedoTable(toReference(scene.objects[size_t(i)].material), forms, kAlbedoBins, kAlbedoSamples);
   });
   return tables;
-}
-
-dvec3 lookupAlbedo(const std::vector<dvec3>& table, double NoV) {
-  const double x = std::clamp(NoV * kAlbedoBins - 0.5, 0.0, kAlbedoBins - 1.0);
-  const int i = std::min(int(x), kAlbedoBins - 2);
-  const double f = x - i;
-  return table[i] * (1.0 - f) + table[i + 1] * f;
 }
 
 }  // namespace
@@ -89,7 +78,7 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
   const std::unique_ptr<const RayCaster> geometry =
       options.geometry == Geometry::Meshes ? std::unique_ptr<const RayCaster>(std::make_unique<MeshScene>(scene))
                                            : std::make_unique<AnalyticScene>(scene);
-  const std::vector<std::vector<dvec3>> albedo = albedoTables(scene, options.forms, threads);
+  const std::vector<AlbedoTable> albedo = albedoTables(scene, options.forms, threads);
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
   ReferenceFrame frame{{width, height, std::vector<float>(size_t(width) * height * 4, 0.0f)},
                        std::vector<int>(size_t(width) * height, -1)};
@@ -106,16 +95,9 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
         const ReferenceMaterial m = toReference(scene.objects[hit->object].material);
         const dvec3 V = -ray.direction;
         const double NoV = std::max(glm::dot(hit->normal, V), 1e-4);
-        if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * lookupAlbedo(albedo[hit->object], NoV);
+        if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * albedo[hit->object](NoV);
         for (const PointLight& light : scene.lights) {
-          const dvec3 toLight = dvec3(light.position) - hit->position;
-          const double d = glm::length(toLight);
-          const dvec3 L = d > 1e-12 ? toLight / d : hit->normal;
-          const double NoL = glm::dot(hit->normal, L);
-          const double att = attenuation(d, light.radius);
-          if (NoL <= 0.0 || att <= 0.0) continue;
-          const double intensity = light.luminousPower / (4.0 * kPi);
-          color += evaluateBrdf(hit->normal, V, L, m, options.forms).sum() * dvec3(light.color) * (intensity * att * NoL);
+          color += reflectedRadiance(light, hit->position, hit->normal, V, m, options.forms);
         }
       }
       if (hit) frame.objectIds[size_t(y) * width + x] = int(hit->object);

@@ -11,9 +11,9 @@
 #include <glm/vec4.hpp>
 
 #include "lighting/shading_model.hpp"
+#include "reference/reference_brdf.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
-#include "tests/study_brdf.hpp"
 
 using pbr::test::GlslProbe;
 
@@ -39,14 +39,6 @@ std::vector<ThetaNode> thetaGrid(double a, int n) {
     nodes.push_back({a * std::sinh(t * s), a * s * std::cosh(t * s) / n});
   }
   return nodes;
-}
-
-// Walter et al. 2007, eq. 33, written from the paper: D = a^2 / (pi cos^4 theta (a^2 + tan^2 theta)^2).
-double referenceGgx(double cosTheta, double a) {
-  const double c2 = cosTheta * cosTheta;
-  const double tan2 = (1.0 - c2) / c2;
-  const double k = a * a + tan2;
-  return a * a / (kPi * c2 * c2 * k * k);
 }
 
 // Fresnel probes: for each row of F0s, v.h from 0 to 1 in kSteps steps, as (v.h, F0).
@@ -89,7 +81,7 @@ vec4 probe(vec4 v) { return vec4(D_GGX(v.x, v.z, v.y)); }
       const double c = std::cos(grid[i].theta);
       const double w = 2.0 * kPi * c * std::sin(grid[i].theta) * grid[i].weight;
       gpu += w * d[k * kNodes + i].x;
-      reference += w * referenceGgx(c, a);
+      reference += w * pbr::reference::ggxD(c, a);
     }
     CAPTURE(roughness[k]);
     INFO("the quadrature alone must be exact to 1e-4 for the 1% tolerance to test the shader");
@@ -331,7 +323,8 @@ vec4 probe(vec4 v) {
       const double tv = input[i].x, tl = input[i].y, pl = input[i].z, roughness = input[i].w;
       const glm::dvec3 N(0.0, 0.0, 1.0), V(std::sin(tv), 0.0, std::cos(tv));
       const glm::dvec3 L(std::sin(tl) * std::cos(pl), std::sin(tl) * std::sin(pl), std::cos(tl));
-      const glm::dvec3 expected = pbr::test::studyBrdf(N, V, L, baseColor, roughness, std::stod(metalness));
+      const pbr::reference::ReferenceMaterial m{baseColor, roughness, std::stod(metalness)};
+      const glm::dvec3 expected = pbr::reference::evaluateBrdf(N, V, L, m, pbr::reference::BrdfForms::study()).sum();
       CAPTURE(metalness);
       CAPTURE(roughness);
       CAPTURE(tv);

@@ -3,18 +3,17 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <random>
 #include <utility>
 #include <vector>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "reference/display_transform.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
 
@@ -24,27 +23,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-using Mat3 = std::array<std::array<double, 3>, 3>;
-
 double relativeError(double actual, double expected) { return std::abs(actual - expected) / std::abs(expected); }
-
-glm::dvec3 mul(const Mat3& m, const glm::dvec3& v) {
-  glm::dvec3 r;
-  for (int i = 0; i < 3; ++i) r[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z;
-  return r;
-}
-
-// Stephen Hill's fit of the ACES RRT + ODT (github.com/TheRealMJP/BakingLab, ACES.hlsl), rows as published.
-glm::dvec3 acesReference(const glm::dvec3& color) {
-  static const Mat3 input = {{{0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}}};
-  static const Mat3 output = {
-      {{1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}}};
-  glm::dvec3 v = mul(input, color);
-  for (int i = 0; i < 3; ++i) {
-    v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) / (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
-  }
-  return glm::clamp(mul(output, v), 0.0, 1.0);
-}
 
 double angleDegrees(const glm::dvec3& a, const glm::dvec3& b) {
   // atan2 of sine and cosine stays accurate for the tiny angles measured here, unlike acos of a dot product.
@@ -89,7 +68,7 @@ vec4 probe(vec4 v) { return vec4(acesFitted(v.rgb), 0.0); }
     if (i > 0 && i < coloured) {
       CHECK(glm::all(glm::greaterThanEqual(glm::vec3(out[i]), glm::vec3(out[i - 1]))));
     }
-    const glm::dvec3 expected = acesReference(glm::dvec3(input[i]));
+    const glm::dvec3 expected = pbr::reference::acesHill(glm::dvec3(input[i]));
     INFO("reference (" << expected.x << ", " << expected.y << ", " << expected.z << ")");
     CHECK(glm::length(glm::dvec3(out[i]) - expected) < 1e-4);
   }

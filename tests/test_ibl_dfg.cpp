@@ -9,9 +9,10 @@
 #include "core/shader_library.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/ibl_maps.hpp"
+#include "reference/split_sum_dfg.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
-#include "tests/ibl_reference.hpp"
+#include "tests/ibl_readback.hpp"
 
 using pbr::test::GlslProbe;
 
@@ -29,7 +30,7 @@ TEST_CASE("ibl dfg: the GPU table matches a double-precision quadrature within 1
   for (int x : {0, 4, 16, 32, 48, 63}) {
     for (int y : {0, 8, 24, 40, 63}) {
       const double NoV = std::max(x / (kSize - 1.0), 1e-4), roughness = y / (kSize - 1.0);
-      const glm::dvec2 expected = pbr::test::referenceDfg(NoV, roughness);
+      const glm::dvec2 expected = pbr::reference::splitSumDfg(NoV, roughness);
       const glm::vec2 gpu = texels[static_cast<size_t>(y) * kSize + x];
       CAPTURE(NoV);
       CAPTURE(roughness);
@@ -47,7 +48,7 @@ TEST_CASE("ibl dfg: the GPU table matches a double-precision quadrature within 1
   // A + B = integral of n.l / (2 pi (1 + n.l)) dl = 1 - ln 2: a closed form that checks the quadrature too.
   const glm::vec2 rough = texels[static_cast<size_t>(kSize) * kSize - 1];
   CHECK(rough.x + rough.y == doctest::Approx(1.0 - std::log(2.0)).epsilon(5e-3));
-  const glm::dvec2 roughReference = pbr::test::referenceDfg(1.0, 1.0);
+  const glm::dvec2 roughReference = pbr::reference::splitSumDfg(1.0, 1.0);
   CHECK(roughReference.x + roughReference.y == doctest::Approx(1.0 - std::log(2.0)).epsilon(1e-4));
 }
 

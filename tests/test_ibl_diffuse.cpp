@@ -17,12 +17,14 @@
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/ibl_maps.hpp"
 #include "ibl/irradiance_sh.hpp"
+#include "reference/environment_integrals.hpp"
+#include "reference/reference_brdf.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
-#include "tests/ibl_reference.hpp"
+#include "tests/ibl_readback.hpp"
 
 using pbr::test::GlslProbe;
-using pbr::test::kPi;
+using pbr::reference::kPi;
 
 namespace {
 
@@ -132,7 +134,7 @@ TEST_CASE("ibl diffuse: a constant environment has irradiance pi L everywhere") 
   const glm::vec3 radiance(0.5f, 1.0f, 2.0f);
   const pbr::IblMaps maps(shaders, pbr::Environment::uniform(radiance), smallSettings(16));
   pbr::bindEnvironmentMaps(maps.maps());
-  const std::vector<glm::dvec3> normals = pbr::test::fibonacciSphere(500);
+  const std::vector<glm::dvec3> normals = pbr::reference::fibonacciSphere(500);
   const std::vector<glm::vec4> e = gpuIrradiance(normals);
   for (size_t i = 0; i < normals.size(); ++i) {
     for (int c = 0; c < 3; ++c) REQUIRE(e[i][c] == doctest::Approx(kPi * radiance[c]).epsilon(2e-3));
@@ -153,7 +155,7 @@ TEST_CASE("ibl diffuse: white furnace, a white Lambert surface under a uniform e
 #include "ibl/ibl_sample.glsl"
 vec4 probe(vec4 v) { return vec4(iblDiffuse(v.xyz) * vec3(1.0), 0.0); }
 )");
-  const std::vector<glm::dvec3> normals = pbr::test::fibonacciSphere(1000);
+  const std::vector<glm::dvec3> normals = pbr::reference::fibonacciSphere(1000);
   const std::vector<glm::vec4> shaded = probe.run(asInput(normals));
   for (const glm::vec4& l : shaded) {
     for (int c = 0; c < 3; ++c) REQUIRE(l[c] == doctest::Approx(1.0).epsilon(0.02));
@@ -170,18 +172,18 @@ TEST_CASE("ibl diffuse: spherical-harmonic irradiance of the sky matches brute f
   const pbr::IblMaps maps(shaders, sky, smallSettings(kSize));
   pbr::bindEnvironmentMaps(maps.maps());
   const pbr::Cubemap cube = pbr::EnvironmentCubemapPass(shaders).run(sky, kSize);
-  const pbr::test::CubeTexels texels = pbr::test::cubeTexels(cube, 0);
+  const pbr::reference::CubeTexels texels = pbr::test::cubeTexels(cube, 0);
 
-  const std::vector<glm::dvec3> normals = pbr::test::fibonacciSphere(400);
+  const std::vector<glm::dvec3> normals = pbr::reference::fibonacciSphere(400);
   std::vector<glm::dvec3> reference;
-  for (const glm::dvec3& n : normals) reference.push_back(pbr::test::bruteForceIrradiance(texels, n));
+  for (const glm::dvec3& n : normals) reference.push_back(pbr::reference::bruteForceIrradiance(texels, n));
   const std::vector<glm::vec4> sh = gpuIrradiance(normals);
 
   // A rigorous bound: for light from one direction of irradiance E0 at normal incidence, bands 0-2 give
   // E0 (1/4 + c/2 + 5/32 (3c^2 - 1)) against E0 max(c, 0), c the cosine, at most 3/32 E0 apart (at c = 0).
   // Irradiance is linear in the radiance, so for any environment the error is at most 3/32 of the integral of L
   // over the sphere.
-  const glm::dvec3 bound = pbr::test::totalEnergy(texels) * (3.0 / 32.0);
+  const glm::dvec3 bound = pbr::reference::totalEnergy(texels) * (3.0 / 32.0);
   for (size_t i = 0; i < normals.size(); ++i) {
     for (int c = 0; c < 3; ++c) REQUIRE(std::abs(sh[i][c] - reference[i][c]) <= bound[c] * 1.001);
   }
@@ -206,17 +208,17 @@ vec4 probe(vec4 v) { return textureLod(irradianceMap, v.xyz, 0.0); }
   constexpr int kFace = 128;
   constexpr int kConvolvedSize = 16;
   constexpr int kConvolvedSourceLevel = 2;  // 32^2 faces
-  const std::vector<glm::dvec3> normals = pbr::test::fibonacciSphere(1000);
+  const std::vector<glm::dvec3> normals = pbr::reference::fibonacciSphere(1000);
 
   for (const std::string name : {"venice_sunset_1k", "pedestrian_overpass_1k"}) {
     CAPTURE(name);
     const pbr::Environment environment =
         pbr::Environment::fromHdrFile(pbr::assetPath("environments/" + name + ".hdr"));
     const pbr::Cubemap cube = environmentPass.run(environment, kFace);
-    const pbr::test::CubeTexels texels = pbr::test::cubeTexels(cube, 0);
+    const pbr::reference::CubeTexels texels = pbr::test::cubeTexels(cube, 0);
     auto start = std::chrono::steady_clock::now();
     std::vector<glm::dvec3> reference;
-    for (const glm::dvec3& n : normals) reference.push_back(pbr::test::bruteForceIrradiance(texels, n));
+    for (const glm::dvec3& n : normals) reference.push_back(pbr::reference::bruteForceIrradiance(texels, n));
     const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     // Untimed first runs: llvmpipe compiles a shader's machine code at its first dispatch.

@@ -11,12 +11,15 @@
 
 #include "core/shader_library.hpp"
 #include "ibl/environment_cubemap.hpp"
+#include "reference/cube_map_geometry.hpp"
+#include "reference/environment_integrals.hpp"
+#include "reference/reference_brdf.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
-#include "tests/ibl_reference.hpp"
+#include "tests/ibl_readback.hpp"
 
 using pbr::test::GlslProbe;
-using pbr::test::kPi;
+using pbr::reference::kPi;
 
 namespace {
 
@@ -70,13 +73,13 @@ vec4 probe(vec4 v) { return vec4(cubeTexelDirection(ivec3(v.xyz), int(v.w)), 0.0
     }
     const std::vector<glm::vec4> output = directions.run(input);
     for (size_t i = 0; i < input.size(); ++i) {
-      const pbr::test::CubeCoord c = pbr::test::cubeCoord(glm::dvec3(output[i]));
+      const pbr::reference::CubeCoord c = pbr::reference::cubeCoord(glm::dvec3(output[i]));
       CAPTURE(size);
       CAPTURE(i);
       CHECK(c.face == static_cast<int>(input[i].z));
       CHECK(static_cast<int>(std::floor(c.st.x * size)) == static_cast<int>(input[i].x));
       CHECK(static_cast<int>(std::floor(c.st.y * size)) == static_cast<int>(input[i].y));
-      CHECK(glm::length(glm::dvec3(output[i]) - pbr::test::cubeTexelDirection(c.face, static_cast<int>(input[i].x),
+      CHECK(glm::length(glm::dvec3(output[i]) - pbr::reference::cubeTexelDirection(c.face, static_cast<int>(input[i].x),
                                                                                static_cast<int>(input[i].y), size)) <
             1e-6);
     }
@@ -104,7 +107,7 @@ vec4 probe(vec4 v) { return textureLod(cube, v.xyz, 0.0); }
   for (int face = 0; face < 6; ++face) {
     for (int y = 0; y < kSize; ++y) {
       for (int x = 0; x < kSize; ++x) {
-        input.emplace_back(glm::vec3(pbr::test::cubeTexelDirection(face, x, y, kSize)), 0.0f);
+        input.emplace_back(glm::vec3(pbr::reference::cubeTexelDirection(face, x, y, kSize)), 0.0f);
         expected.emplace_back(face, x, y);
       }
     }
@@ -137,7 +140,7 @@ TEST_CASE("ibl environment: an equirectangular image coded by direction lands on
     for (int y = 0; y < kSize; ++y) {
       for (int x = 0; x < kSize; ++x) {
         const glm::dvec3 shown = decodeDirection(texels[(static_cast<size_t>(face) * kSize + y) * kSize + x]);
-        worst = std::min(worst, glm::dot(shown, pbr::test::cubeTexelDirection(face, x, y, kSize)));
+        worst = std::min(worst, glm::dot(shown, pbr::reference::cubeTexelDirection(face, x, y, kSize)));
       }
     }
   }
@@ -187,8 +190,8 @@ TEST_CASE("ibl environment: the sky's sun keeps its energy, widened to a texel o
     const double energy = 1000.0 * 2.0 * kPi * (1.0 - std::cos(radiusDeg * kPi / 180.0));
     for (int level = 0; level < 3; ++level) {
       CAPTURE(level);
-      const pbr::test::CubeTexels texels = pbr::test::cubeTexels(cube, level);
-      CHECK(pbr::test::totalEnergy(texels).x == doctest::Approx(energy).epsilon(0.03));
+      const pbr::reference::CubeTexels texels = pbr::test::cubeTexels(cube, level);
+      CHECK(pbr::reference::totalEnergy(texels).x == doctest::Approx(energy).epsilon(0.03));
       // The brightest texel looks at the sun and is no brighter than it.
       size_t brightest = 0;
       for (size_t i = 0; i < texels.radiance.size(); ++i) {

@@ -19,9 +19,12 @@
 #include "core/profiler.hpp"
 #include "core/shader_library.hpp"
 #include "ibl/ibl_maps.hpp"
+#include "reference/environment_integrals.hpp"
+#include "reference/reference_brdf.hpp"
+#include "reference/split_sum_dfg.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"
-#include "tests/ibl_reference.hpp"
+#include "tests/ibl_readback.hpp"
 
 using pbr::test::GlslProbe;
 
@@ -53,7 +56,7 @@ vec4 probe(vec4 v) {
 // 100 normals x view tilts from 0 to 89 degrees x roughness 0 to 1.
 std::vector<glm::vec4> shadingGrid() {
   std::vector<glm::vec4> input;
-  for (const glm::dvec3& n : pbr::test::fibonacciSphere(100)) {
+  for (const glm::dvec3& n : pbr::reference::fibonacciSphere(100)) {
     // octEncode (common/octahedral.glsl) in double.
     const glm::dvec3 o = n / (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
     glm::dvec2 e(o.x, o.y);
@@ -63,7 +66,7 @@ std::vector<glm::vec4> shadingGrid() {
     e = e * 0.5 + 0.5;
     for (double tiltDeg : {0.0, 30.0, 60.0, 80.0, 89.0}) {
       for (double roughness : {0.0, 0.1, 0.25, 0.5, 0.75, 1.0}) {
-        input.emplace_back(e.x, e.y, tiltDeg * pbr::test::kPi / 180.0, roughness);
+        input.emplace_back(e.x, e.y, tiltDeg * pbr::reference::kPi / 180.0, roughness);
       }
     }
   }
@@ -115,7 +118,7 @@ TEST_CASE("ibl shade: a white metal reflects A + B of the furnace, and 1 with th
   for (size_t i = 0; i < input.size(); ++i) {
     const double NoV = std::cos(static_cast<double>(input[i].z));
     const auto key = std::make_pair(input[i].z, input[i].w);
-    if (!references.count(key)) references[key] = pbr::test::referenceDfg(NoV, input[i].w);
+    if (!references.count(key)) references[key] = pbr::reference::splitSumDfg(NoV, input[i].w);
     const glm::dvec2 dfg = references[key];
     CAPTURE(NoV);
     CAPTURE(input[i].w);

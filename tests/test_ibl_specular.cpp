@@ -12,10 +12,12 @@
 #include "core/shader_library.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/specular_prefilter.hpp"
+#include "reference/environment_integrals.hpp"
+#include "reference/reference_brdf.hpp"
 #include "tests/gl_test_context.hpp"
-#include "tests/ibl_reference.hpp"
+#include "tests/ibl_readback.hpp"
 
-using pbr::test::kPi;
+using pbr::reference::kPi;
 
 namespace {
 
@@ -40,7 +42,7 @@ double kernelPeak(double a) {
   double c = 0.0;
   for (int i = 0; i < kNodes; ++i) {
     const double theta = (i + 0.5) / kNodes * kPi / 4.0;
-    c += std::cos(2.0 * theta) * pbr::test::ggxD(std::cos(theta), a) * std::cos(theta) * std::sin(theta) *
+    c += std::cos(2.0 * theta) * pbr::reference::ggxD(std::cos(theta), a) * std::cos(theta) * std::sin(theta) *
          (kPi / 4.0 / kNodes);
   }
   c *= 2.0 * kPi;
@@ -48,7 +50,7 @@ double kernelPeak(double a) {
 }
 
 // Largest ratio of a texel to the mean of its 8 neighbours on the same face, among texels brighter than `floor`.
-double maxNeighbourRatio(const pbr::test::CubeTexels& texels, double floor) {
+double maxNeighbourRatio(const pbr::reference::CubeTexels& texels, double floor) {
   const int n = texels.size;
   double worst = 0.0;
   for (int face = 0; face < 6; ++face) {
@@ -97,19 +99,19 @@ TEST_CASE("ibl specular: a sun on black keeps its energy and never outshines wha
     for (int level = 0; level < kLevels; ++level) {
       CAPTURE(samples);
       CAPTURE(level);
-      const pbr::test::CubeTexels t = pbr::test::cubeTexels(prefiltered, level);
+      const pbr::reference::CubeTexels t = pbr::test::cubeTexels(prefiltered, level);
       double peak = 0.0;
       for (const glm::dvec3& l : t.radiance) peak = std::max(peak, l.x);
       // The prefiltered radiance is the sun's radiance weighted by a kernel that integrates to 1 and peaks at
       // kernelPeak: it can exceed neither the sun's radiance nor its energy times that peak. The estimate reads
       // the sun blurred over mip texels (filtered importance sampling), which biases the peak by up to about 10%
       // (measured); reading level 0 instead overshoots 1.6 to 8.5 times at these settings (ibl/README.md).
-      const double a = pbr::test::alphaFromRoughness(static_cast<double>(level) / (kLevels - 1));
+      const double a = pbr::reference::alphaFromRoughness(static_cast<double>(level) / (kLevels - 1));
       const double bound = std::min<double>(kSunRadiance, sunEnergy * kernelPeak(a));
       CHECK(peak <= bound * 1.25);
       // A convolution on the sphere with a rotation-invariant kernel keeps the integral: the energy of every level
       // is the sun's, up to the quadrature error of summing texel centres, too coarse to judge below 8^2 faces.
-      if (t.size >= 8) CHECK(pbr::test::totalEnergy(t).x == doctest::Approx(sunEnergy).epsilon(0.1));
+      if (t.size >= 8) CHECK(pbr::reference::totalEnergy(t).x == doctest::Approx(sunEnergy).epsilon(0.1));
       // Fireflies: isolated texels far above their neighbours. A GGX-blurred disc falls off smoothly (measured at
       // most 1.5x the neighbours' mean); without filtered importance sampling 3.7x to 1e30x.
       if (level > 0 && t.size >= 8) CHECK(maxNeighbourRatio(t, peak * 1e-3) < 2.0);

@@ -1,5 +1,5 @@
 // End-to-end: frames of the whole renderer (G-buffer, lighting, post) against an independent double-precision
-// ray cast of the same plane and lights (tests/reference_shading.*).
+// ray cast of the same plane and lights (reference/plane_reference.*).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -12,10 +12,12 @@
 
 #include "renderer/renderer.hpp"
 #include "core/gl.hpp"
+#include "reference/display_transform.hpp"
+#include "reference/plane_reference.hpp"
 #include "tests/gl_test_context.hpp"
-#include "tests/reference_shading.hpp"
 
 namespace ref = pbr::reference;
+namespace plane = pbr::reference::plane;
 using glm::dvec3;
 
 namespace {
@@ -36,7 +38,7 @@ constexpr double kAbs = 1e-5;
 
 struct TestMaterial {
   std::string name;
-  ref::Material material;
+  ref::ReferenceMaterial material;
 };
 
 // Base colours are sRGB8 codes >= 170 (see kRel), roughness and metalness exact k/255.
@@ -53,15 +55,15 @@ std::vector<TestMaterial> materials() {
 
 // Three coloured lights: one 0.6 above the plane in front of the camera (mirror highlight in view), one whose
 // radius-3.5 window cuts the plane in a visible circle of radius ~3.35, one far and wide.
-std::vector<ref::PointLight> threeLights() {
+std::vector<pbr::PointLight> threeLights() {
   return {{{0.5, 0.6, 1.0}, 4.0, {1.0, 0.9, 0.8}, 600.0},
           {{-3.0, 1.0, -2.0}, 3.5, {0.3, 0.5, 1.0}, 1500.0},
           {{3.0, 2.0, -5.0}, 10.0, {1.0, 0.4, 0.2}, 3000.0}};
 }
 
 // The camera looks down at the 40 x 40 plane y = 0 so that rows near the top see past its far edge (sky).
-ref::Scene analyticScene(const ref::Material& material, std::vector<ref::PointLight> lights, dvec3 ambient) {
-  ref::Scene s;
+plane::Scene analyticScene(const ref::ReferenceMaterial& material, std::vector<pbr::PointLight> lights, dvec3 ambient) {
+  plane::Scene s;
   s.camera = {{0.0, 2.5, 6.0}, {0.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, 50.0, 0.1, 100.0};
   s.plane.halfU = s.plane.halfV = 20.0;
   s.material = material;
@@ -71,28 +73,20 @@ ref::Scene analyticScene(const ref::Material& material, std::vector<ref::PointLi
 }
 
 // The lit scene of most cases, with a little ambient so that the ambient term is checked alongside the lights.
-ref::Scene litScene(const ref::Material& material) {
+plane::Scene litScene(const ref::ReferenceMaterial& material) {
   return analyticScene(material, threeLights(), {0.02, 0.03, 0.05});
 }
 
-pbr::Scene rendererScene(const ref::Scene& s) {
+pbr::Scene rendererScene(const plane::Scene& s) {
   pbr::Scene scene;
-  scene.camera.position = glm::vec3(s.camera.position);
-  scene.camera.target = glm::vec3(s.camera.target);
-  scene.camera.up = glm::vec3(s.camera.up);
-  scene.camera.fovYDeg = static_cast<float>(s.camera.fovYDeg);
-  scene.camera.nearPlane = static_cast<float>(s.camera.nearPlane);
-  scene.camera.farPlane = static_cast<float>(s.camera.farPlane);
+  scene.camera = s.camera;
   pbr::Material m;
   m.baseColor = glm::vec3(s.material.baseColor);
   m.roughness = static_cast<float>(s.material.roughness);
   m.metalness = static_cast<float>(s.material.metalness);
   const glm::vec3 size(2.0 * s.plane.halfU, 1.0, 2.0 * s.plane.halfV);  // of the unit square in the xz plane
   scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), size), m);
-  for (const ref::PointLight& l : s.lights) {
-    scene.lights.push_back(
-        {glm::vec3(l.position), static_cast<float>(l.radius), glm::vec3(l.color), static_cast<float>(l.luminousPower)});
-  }
+  scene.lights = s.lights;
   scene.ambient = glm::vec3(s.ambient);
   return scene;
 }
@@ -129,16 +123,16 @@ struct Comparison {
 };
 
 // Compares every surface pixel channel by channel with |g - r| <= rel * r + abs, and every sky pixel with 0.
-Comparison compare(const pbr::ImageRgbaF& gpu, const ref::Image& expected, double rel, double abs) {
+Comparison compare(const pbr::ImageRgbaF& gpu, const plane::Image& expected, double rel, double abs) {
   REQUIRE(gpu.width == expected.width);
   REQUIRE(gpu.height == expected.height);
   Comparison c;
   for (int y = 0; y < gpu.height; ++y) {
     for (int x = 0; x < gpu.width; ++x) {
-      const ref::Pixel& p = expected.at(x, y);
+      const plane::Pixel& p = expected.at(x, y);
       const float* g = gpu.at(x, y);
-      if (p.kind == ref::PixelKind::Sky && (g[0] != 0.0f || g[1] != 0.0f || g[2] != 0.0f)) ++c.litSky;
-      if (p.kind != ref::PixelKind::Surface) continue;
+      if (p.kind == plane::PixelKind::Sky && (g[0] != 0.0f || g[1] != 0.0f || g[2] != 0.0f)) ++c.litSky;
+      if (p.kind != plane::PixelKind::Surface) continue;
       ++c.surfacePixels;
       for (int ch = 0; ch < 3; ++ch) {
         const double r = p.radiance[ch], err = std::abs(g[ch] - r);
@@ -158,7 +152,7 @@ Comparison compare(const pbr::ImageRgbaF& gpu, const ref::Image& expected, doubl
 }
 
 // Checks a GPU frame against the reference and that the comparison covered most of the frame.
-void checkAgainstReference(const std::string& what, const pbr::ImageRgbaF& gpu, const ref::Image& expected) {
+void checkAgainstReference(const std::string& what, const pbr::ImageRgbaF& gpu, const plane::Image& expected) {
   const Comparison c = compare(gpu, expected, kRel, kAbs);
   MESSAGE(what << ": " << c.surfacePixels << " surface pixels, relative error max " << c.maxRel << ", mean "
                << c.meanRel());
@@ -220,11 +214,11 @@ TEST_CASE("render analytic: PBR plane matches the double-precision reference") {
   const pbr::ShaderLibrary shaders;
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
-    const ref::Scene expected = litScene(material);
+    const plane::Scene expected = litScene(material);
     const pbr::Scene scene = rendererScene(expected);
     pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     const Frame f = render(renderer, options(pbr::ShadingModel::Pbr));
-    const ref::Image image = ref::render(expected, kWidth, kHeight, ref::Model::Pbr);
+    const plane::Image image = plane::renderPbr(expected, kWidth, kHeight);
     checkAgainstReference("PBR " + name, f.hdr, image);
   }
 }
@@ -234,13 +228,13 @@ TEST_CASE("render analytic: Blinn-Phong matches the reference and differs from P
   const pbr::ShaderLibrary shaders;
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
-    const ref::Scene expected = litScene(material);
+    const plane::Scene expected = litScene(material);
     const pbr::Scene scene = rendererScene(expected);
     pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     const Frame phong = render(renderer, options(pbr::ShadingModel::BlinnPhong));
     const Frame pbrFrame = render(renderer, options(pbr::ShadingModel::Pbr));
     checkAgainstReference("Blinn-Phong " + name, phong.hdr,
-                          ref::render(expected, kWidth, kHeight, ref::Model::BlinnPhong));
+                          plane::renderBlinnPhong(expected, kWidth, kHeight));
     // LDR frames skip tone mapping: the post pass only clamps and encodes.
     const LdrComparison ldr = compareLdr(phong, [](const dvec3& c) { return c; });
     MESSAGE("Blinn-Phong LDR: max error " << ldr.maxError << ", " << ldr.off << " of " << ldr.channels
@@ -259,7 +253,7 @@ TEST_CASE("render analytic: Blinn-Phong's spherical-Gaussian lobe matches e^(n (
   const pbr::ShaderLibrary shaders;
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
-    const ref::Scene expected = litScene(material);
+    const plane::Scene expected = litScene(material);
     const pbr::Scene scene = rendererScene(expected);  // the renderer keeps a reference to it
     pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     pbr::FrameOptions sg = options(pbr::ShadingModel::BlinnPhong);
@@ -267,7 +261,7 @@ TEST_CASE("render analytic: Blinn-Phong's spherical-Gaussian lobe matches e^(n (
     const Frame gaussian = render(renderer, sg);
     const Frame power = render(renderer, options(pbr::ShadingModel::BlinnPhong));
     checkAgainstReference("Blinn-Phong lobe=sg " + name, gaussian.hdr,
-                          ref::render(expected, kWidth, kHeight, ref::Model::BlinnPhongSG));
+                          plane::renderBlinnPhong(expected, kWidth, kHeight, ref::BlinnPhongLobe::SphericalGaussian));
     size_t darker = 0, brighter = 0;
     for (size_t i = 0; i < gaussian.hdr.pixels.size(); ++i) {
       // pow is exp2(n log2 x) in float: log2's rounding, times n (1248 for the polished metal), leaves pow itself
@@ -287,17 +281,17 @@ TEST_CASE("render analytic: Hammon visibility is close to the exact term but not
   const pbr::ShaderLibrary shaders;
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
-    const ref::Scene expected = litScene(material);
+    const plane::Scene expected = litScene(material);
     const pbr::Scene scene = rendererScene(expected);
     pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     const Frame hammon = render(renderer, options(pbr::ShadingModel::Pbr, pbr::Visibility::Hammon));
     const Frame exact = render(renderer, options(pbr::ShadingModel::Pbr));
     checkAgainstReference("Hammon " + name, hammon.hdr,
-                          ref::render(expected, kWidth, kHeight, ref::Model::Pbr, ref::SmithVisibility::Hammon));
+                          plane::renderPbr(expected, kWidth, kHeight, ref::BrdfForms::Visibility::Hammon));
     // Hammon's linear form is an approximation whose error grows with roughness: against the exact reference it
     // is off by 1-11% on average and up to ~17% at grazing pixels on these materials (see the message). These
     // bounds only reject a term that is far off; the tight check is the one against the Hammon reference above.
-    const ref::Image exactReference = ref::render(expected, kWidth, kHeight, ref::Model::Pbr);
+    const plane::Image exactReference = plane::renderPbr(expected, kWidth, kHeight);
     const Comparison vsExact = compare(hammon.hdr, exactReference, 0.25, kAbs);
     MESSAGE("Hammon vs exact reference (" << name << "): relative difference max " << vsExact.maxRel << ", mean "
                                           << vsExact.meanRel());
@@ -343,11 +337,11 @@ TEST_CASE("render analytic: without lights only the ambient term remains") {
   const pbr::ShaderLibrary shaders;
   for (const auto& [name, material] : materials()) {
     CAPTURE(name);
-    const ref::Scene expected = analyticScene(material, {}, {0.25, 0.5, 1.0});
+    const plane::Scene expected = analyticScene(material, {}, {0.25, 0.5, 1.0});
     const pbr::Scene scene = rendererScene(expected);
     pbr::Renderer renderer(shaders, scene, kWidth, kHeight);
     checkAgainstReference("ambient " + name, render(renderer, options(pbr::ShadingModel::Pbr)).hdr,
-                          ref::render(expected, kWidth, kHeight, ref::Model::Pbr));
+                          plane::renderPbr(expected, kWidth, kHeight));
   }
   const pbr::Scene dark = rendererScene(analyticScene(materials()[0].material, {}, dvec3(0.0)));
   pbr::Renderer renderer(shaders, dark, kWidth, kHeight);
