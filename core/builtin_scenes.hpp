@@ -33,7 +33,11 @@ struct SceneParams {
 std::vector<std::string> builtinSceneNames();
 bool isBuiltinScene(const std::string& name);
 
-// Throws SceneError for an unknown name or a parameter out of range.
+// The folder of the built-in scenes' files: PBR_SCENE_DIR in the environment, else the source tree's scenes/.
+std::string builtinSceneDir();
+
+// Loads scenes/<name>.json and applies `params` to it. Throws SceneError for an unknown name, a missing or
+// malformed file, or a parameter out of range.
 Scene makeBuiltinScene(const std::string& name, const SceneParams& params = {});
 
 }  // namespace pbr

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "core/assets.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/gltf_loader.hpp"
 #include "core/image.hpp"
@@ -45,10 +47,21 @@ const R kScale = R::closed(1e-9, kMaxCoordinate);
 // The command line's --lights limit: a typo must not allocate gigabytes.
 constexpr uint64_t kMaxRandomLights = 1u << 20;
 
-// Paths in a scene file are relative to the file's folder, so that a scene and its assets move together.
-fs::path resolve(const fs::path& folder, const std::string& path) {
+// Paths in a scene file are relative to the file's folder, so that a scene and its assets move together; "asset:"
+// names a file of the shared asset folder, which moves on its own (PBR_ASSET_DIR).
+constexpr std::string_view kAssetPrefix = "asset:";
+
+std::string resolve(const JsonField& f, const fs::path& folder) {
+  const std::string path = f.string();
+  if (path.rfind(kAssetPrefix, 0) == 0) {
+    try {
+      return assetPath(path.substr(kAssetPrefix.size()));
+    } catch (const SceneError& e) {
+      f.fail(e.what());
+    }
+  }
   const fs::path p(path);
-  return (p.is_absolute() ? p : folder / p).lexically_normal();
+  return (p.is_absolute() ? p : folder / p).lexically_normal().string();
 }
 
 Camera readCamera(const JsonField& f) {
@@ -83,7 +96,7 @@ glm::mat4 readTransform(const JsonField& f) {
 
 // Loads an sRGB base colour image once per file, however many materials use it.
 int readTexture(const JsonField& f, const fs::path& folder, Scene& scene) {
-  const std::string path = resolve(folder, f.string()).string();
+  const std::string path = resolve(f, folder);
   for (size_t i = 0; i < scene.textures.size(); ++i) {
     if (scene.textures[i].name == path) return static_cast<int>(i);
   }
@@ -122,7 +135,7 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
   const glm::mat4 transform = readTransform(f["transform"]);
   if (gltf.present()) {
     if (f["material"].present()) f["material"].fail("a glTF object takes its materials from its file");
-    const std::string path = resolve(folder, gltf.string()).string();
+    const std::string path = resolve(gltf, folder);
     requireRegularFile(gltf, path);
     try {
       appendGltf(scene, path, transform, policy);
@@ -191,7 +204,7 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
   }
   EnvironmentDesc e;
   if (file.present()) {
-    e.file = resolve(folder, file.string()).string();
+    e.file = resolve(file, folder);
     requireRegularFile(file, e.file);
   } else {
     e.sky = readSky(sky);

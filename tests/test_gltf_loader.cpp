@@ -477,7 +477,9 @@ TEST_CASE("gltf assets: PBR_ASSET_DIR moves the asset folder, and a missing asse
   ::setenv("PBR_ASSET_DIR", dir.path().c_str(), 1);
   const std::string expected = (dir.path() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb").string();
   const std::string message = errorOf([] { pbr::makeBuiltinScene("helmet"); });
-  CHECK(message.rfind(expected + ": ", 0) == 0);
+  // The scene file names the model "asset:...", so the message leads with the file and field that did.
+  const std::string scene = pbr::builtinSceneDir() + "/helmet.json";
+  CHECK(message.rfind(scene + ": objects[0].gltf: " + expected + ": asset not found", 0) == 0);
   CHECK(message.find('\n') == std::string::npos);
   std::ofstream(dir.path() / "present.txt") << "x";
   CHECK(pbr::assetPath("present.txt") == (dir.path() / "present.txt").string());

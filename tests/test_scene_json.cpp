@@ -237,6 +237,24 @@ TEST_CASE("scene file: glTF objects resolve relative to the scene file and take 
   CHECK(s.textures.size() == direct.textures.size());
 }
 
+TEST_CASE("scene file: an \"asset:\" path is in the shared asset folder, wherever the scene file is") {
+  const TempDir dir;
+  const pbr::Scene s = pbr::loadSceneFile(dir.write("asset.json", R"({
+    "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "objects": [{"gltf": "asset:BoxTextured/glTF-Embedded/BoxTextured.gltf"}]
+  })"));
+  pbr::Scene direct;
+  pbr::appendGltf(direct, boxAsset());
+  CHECK(s.objects.size() == direct.objects.size());
+  const std::string missing = dir.write("missing.json", R"({
+    "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "objects": [{"gltf": "asset:Nothing/none.gltf"}]
+  })");
+  const std::string expected =
+      missing + ": objects[0].gltf: " + pbr::assetDir() + "/Nothing/none.gltf: asset not found";
+  CHECK_THROWS_WITH_AS(pbr::loadSceneFile(missing), doctest::Contains(expected.c_str()), pbr::SceneError);
+}
+
 TEST_CASE("scene file: a .gltf given alone is framed and lit by the default rig") {
   pbr::Scene direct;
   const pbr::Bounds bounds = pbr::appendGltf(direct, boxAsset());
