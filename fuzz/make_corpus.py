@@ -15,6 +15,7 @@ import sys
 import zlib
 
 MAX_SEED_BYTES = 1 << 20  # larger inputs slow every execution that mutates them
+BOX = "BoxTextured/glTF-Embedded/BoxTextured.gltf"
 
 
 def write(folder, name, data):
@@ -28,12 +29,16 @@ def small_file(path):
     return path.is_file() and path.stat().st_size <= MAX_SEED_BYTES
 
 
-def absolute_paths(value, folder):
-    """Replaces strings naming a small file relative to `folder` with its absolute path."""
+def absolute_paths(value, folder, assets):
+    """Replaces strings naming a small file relative to `folder` with its absolute path. A shared asset
+    ("asset:P") too large to load at fuzzing speed is replaced by the small embedded box model."""
     if isinstance(value, dict):
-        return {k: absolute_paths(v, folder) for k, v in value.items()}
+        return {k: absolute_paths(v, folder, assets) for k, v in value.items()}
     if isinstance(value, list):
-        return [absolute_paths(v, folder) for v in value]
+        return [absolute_paths(v, folder, assets) for v in value]
+    if isinstance(value, str) and value.startswith("asset:"):
+        asset = assets / value[len("asset:"):]
+        return str((asset if small_file(asset) else assets / BOX).resolve())
     if isinstance(value, str) and small_file(folder / value):
         return str((folder / value).resolve())
     return value
@@ -41,9 +46,9 @@ def absolute_paths(value, folder):
 
 def scene_seeds(project, assets, out):
     for scene in sorted((project / "scenes").glob("*.json")):
-        doc = absolute_paths(json.loads(scene.read_text()), scene.parent)
+        doc = absolute_paths(json.loads(scene.read_text()), scene.parent, assets)
         write(out, scene.name, json.dumps(doc, indent=1))
-    box = assets / "BoxTextured/glTF-Embedded/BoxTextured.gltf"
+    box = assets / BOX
     if box.is_file():
         doc = {"camera": {"position": [0, 1, 4], "target": [0, 0, 0]}, "ambient": 0.1,
                "objects": [{"gltf": str(box.resolve()), "transform": {"scale": 2}}],
