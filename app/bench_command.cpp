@@ -7,15 +7,15 @@
 #include <iostream>
 #include <memory>
 
-#include "app/accuracy_variants.hpp"
+#include "app/accuracy/accuracy_variants.hpp"
 #include "app/args.hpp"
-#include "app/bench_progress.hpp"
-#include "app/bench_report.hpp"
-#include "app/bench_run.hpp"
-#include "app/pair_cost_report.hpp"
+#include "app/bench/bench_progress.hpp"
+#include "app/bench/bench_report.hpp"
+#include "app/bench/bench_run.hpp"
+#include "app/accuracy/pair_cost_report.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
-#include "app/trace_writer.hpp"
+#include "app/bench/trace_writer.hpp"
 #include "core/context.hpp"
 #include "core/output_file.hpp"
 

@@ -3,9 +3,9 @@
 #include <iostream>
 
 #include "app/args.hpp"
-#include "app/chart_script.hpp"
+#include "app/bench/chart_script.hpp"
 #include "app/commands.hpp"
-#include "app/experiments.hpp"
+#include "app/experiments/experiments.hpp"
 #include "core/context.hpp"
 
 namespace pbr {

@@ -3,8 +3,8 @@
 #include <optional>
 
 #include "app/args.hpp"
-#include "app/bench_report.hpp"
-#include "app/bench_run.hpp"
+#include "app/bench/bench_report.hpp"
+#include "app/bench/bench_run.hpp"
 #include "app/commands.hpp"
 #include "renderer/renderer.hpp"
 #include "app/scene_source.hpp"

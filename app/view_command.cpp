@@ -4,7 +4,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
-#include "app/viewer.hpp"
+#include "app/viewer/viewer.hpp"
 #include "core/image.hpp"
 
 namespace pbr {

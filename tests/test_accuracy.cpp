@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/accuracy_variants.hpp"
-#include "app/brdf_slice.hpp"
+#include "app/accuracy/accuracy_variants.hpp"
+#include "app/accuracy/brdf_slice.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 

@@ -1,6 +1,6 @@
 #include <doctest/doctest.h>
 
-#include "app/experiments.hpp"
+#include "app/experiments/experiments.hpp"
 #include "tests/gl_test_context.hpp"
 
 using namespace pbr;

@@ -1,8 +1,8 @@
 #include <doctest/doctest.h>
 
 #include "renderer/display_image.hpp"
-#include "app/accuracy_metrics.hpp"
-#include "app/accuracy_variants.hpp"
+#include "app/accuracy/accuracy_metrics.hpp"
+#include "app/accuracy/accuracy_variants.hpp"
 #include "renderer/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"

@@ -1,7 +1,7 @@
 // The cost-per-pair fixture measures what it claims: every light-pixel pair of its frame runs the whole BRDF.
 #include <doctest/doctest.h>
 
-#include "app/pair_cost.hpp"
+#include "app/accuracy/pair_cost.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 

@@ -11,8 +11,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/display_image.hpp"
-#include "app/accuracy_metrics.hpp"
-#include "app/accuracy_variants.hpp"
+#include "app/accuracy/accuracy_metrics.hpp"
+#include "app/accuracy/accuracy_variants.hpp"
 #include "renderer/offscreen.hpp"
 #include "core/gltf_loader.hpp"
 #include "reference/reference_renderer.hpp"

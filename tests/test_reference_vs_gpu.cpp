@@ -4,8 +4,8 @@
 #include <string>
 
 #include "renderer/display_image.hpp"
-#include "app/accuracy_metrics.hpp"
-#include "app/accuracy_variants.hpp"
+#include "app/accuracy/accuracy_metrics.hpp"
+#include "app/accuracy/accuracy_variants.hpp"
 #include "renderer/offscreen.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/gl_test_context.hpp"

@@ -1,6 +1,6 @@
 // The interactive viewer, driven as a user would through its key handler, in a real GLFW window: these cases need
 // a display and run under Xvfb (tests/under_xvfb.sh), in their own executable.
-#include "app/viewer.hpp"
+#include "app/viewer/viewer.hpp"
 
 #include <GLFW/glfw3.h>
 #include <doctest/doctest.h>

@@ -1,0 +1,100 @@
+#include "app/accuracy/accuracy_variants.hpp"
+
+#include <cctype>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/scene_source.hpp"
+
+namespace pbr {
+
+namespace {
+
+AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, HdrFormat hdr = HdrFormat::Rgba16f,
+                           GBufferPrecision gbuffer = GBufferPrecision::Lean) {
+  return {name, ShadingModel::Pbr, parseShadingVariant(terms), hdr, gbuffer};
+}
+
+}  // namespace
+
+PairCostVariant pairCostVariant(const AccuracyVariant& v) {
+  PairCostVariant out;
+  out.name = v.name;
+  out.options.model = v.model;
+  out.options.variant = v.shading;
+  out.config.hdrFormat = v.hdr;
+  out.config.gbuffer = v.gbuffer;
+  return out;
+}
+
+const std::vector<AccuracyVariant>& accuracyLadder() {
+  static const std::vector<AccuracyVariant> ladder = {
+      // The reference model's terms: only float precision and the ambient integral differ.
+      pbrVariant("exact", "fresnel=exact"),
+      pbrVariant("exact-rgba32f", "fresnel=exact", HdrFormat::Rgba32f),
+      pbrVariant("exact-float", "fresnel=exact", HdrFormat::Rgba32f, GBufferPrecision::Float),
+      pbrVariant("default", ""),
+      pbrVariant("hammon", "visibility=hammon"),
+      pbrVariant("separable", "visibility=separable"),
+      pbrVariant("beckmann", "ndf=beckmann"),
+      pbrVariant("lambert", "diffuse=lambert"),
+      pbrVariant("burley", "diffuse=burley"),
+      pbrVariant("schlick-sg", "fresnel=schlick-sg"),
+      pbrVariant("lambert-1-f-vh", "diffuse=lambert-1-f-vh"),
+      pbrVariant("study", "study"),
+      pbrVariant("r11g11b10f", "", HdrFormat::R11g11b10f),
+      pbrVariant("gbuffer-float", "", HdrFormat::Rgba16f, GBufferPrecision::Float),
+      pbrVariant("fast", "visibility=hammon,diffuse=lambert", HdrFormat::R11g11b10f),
+      {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f, GBufferPrecision::Lean},
+      {"blinn-phong-sg", ShadingModel::BlinnPhong, parseShadingVariant("lobe=sg"), HdrFormat::Rgba16f,
+       GBufferPrecision::Lean},
+  };
+  return ladder;
+}
+
+std::vector<AccuracyVariant> selectVariants(const std::string& names) {
+  if (names == "all") return accuracyLadder();
+  std::vector<AccuracyVariant> out;
+  std::stringstream list(names);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    bool found = false;
+    for (const AccuracyVariant& v : accuracyLadder()) {
+      if (v.name == name) {
+        out.push_back(v);
+        found = true;
+      }
+    }
+    if (!found) {
+      std::string known;
+      for (const AccuracyVariant& v : accuracyLadder()) known += (known.empty() ? "" : ", ") + v.name;
+      throw std::invalid_argument("unknown variant '" + name + "' (expected all or some of: " + known + ")");
+    }
+  }
+  return out;
+}
+
+bool hasOnlyAnalyticShapes(const Scene& scene) {
+  for (const SceneObject& o : scene.objects)
+    if (o.shape == Shape::Mesh) return false;
+  return true;
+}
+
+AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris) {
+  SceneParams params;
+  params.uris = uris;
+  std::string name = spec, label = spec;
+  const size_t colon = spec.find(':');
+  if (colon != std::string::npos) {
+    name = spec.substr(0, colon);
+    params.viewAngleDeg = std::stof(spec.substr(colon + 1));
+    label = name + "-" + spec.substr(colon + 1);
+  }
+  for (char& c : label)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  Scene scene = resolveScene(name, params);
+  for (auto& object : scene.objects) object.material.baseColorTexture = -1;
+  return {label, std::move(scene)};
+}
+
+}  // namespace pbr

@@ -1,0 +1,42 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "app/accuracy/pair_cost.hpp"
+#include "core/scene.hpp"
+#include "core/uri_policy.hpp"
+#include "gbuffer/gbuffer.hpp"
+#include "lighting/shading_model.hpp"
+
+namespace pbr {
+
+// One rung of the speed/accuracy ladder: a shading model, its PBR terms and the precision of the HDR target and
+// the G-buffer.
+struct AccuracyVariant {
+  std::string name;
+  ShadingModel model = ShadingModel::Pbr;
+  ShadingVariant shading;
+  HdrFormat hdr = HdrFormat::Rgba16f;
+  GBufferPrecision gbuffer = GBufferPrecision::Lean;
+};
+
+// The variant as the per-pair cost measurement takes it.
+PairCostVariant pairCostVariant(const AccuracyVariant& v);
+
+// Every variant `pbr accuracy` knows, the reference-equivalent one ("exact") first.
+const std::vector<AccuracyVariant>& accuracyLadder();
+// A comma-separated list of ladder names, or "all"; throws std::invalid_argument for an unknown name.
+std::vector<AccuracyVariant> selectVariants(const std::string& names);
+
+struct AccuracyScene {
+  std::string label;  // file-name safe: fresnel-floor:40 becomes fresnel-floor-40
+  Scene scene;
+};
+// True when every object is a plane, sphere or box: the reference can then also ray-cast the exact shapes.
+bool hasOnlyAnalyticShapes(const Scene& scene);
+
+// A built-in scene name or file, or "fresnel-floor:DEG" for that view angle. The reference ignores textures,
+// so base colour textures are removed.
+AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris = {});
+
+}  // namespace pbr

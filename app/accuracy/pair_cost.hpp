@@ -1,0 +1,51 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "app/bench/bench_sweep.hpp"
+#include "renderer/renderer.hpp"
+
+namespace pbr {
+
+// The cost of one evaluated light-pixel pair of a shading variant's lighting pass, measured where that cost
+// dominates: brute force (every light for every pixel), a floor filling the whole frame, and lights whose
+// spheres reach every pixel from above, so that every pair runs the whole BRDF (no early-out is taken).
+struct PairCostSettings {
+  glm::ivec2 size{1280, 720};
+  std::string sizeOption = "--size";  // named when the size is too large: bench's --size, accuracy's --pair-size
+  int lights = 64;
+  int rounds = 7;  // each round times every variant once, in turn
+  TimingMode timing = TimingMode::Serializing;
+};
+
+struct PairCostVariant {
+  std::string name;
+  FrameOptions options;  // model and variant; culling is forced to none
+  RendererConfig config;
+};
+
+struct PairCost {
+  std::string name;
+  TimeSummary nsPerPair;  // ns per evaluated light-pixel pair (the summary's fields, in ns, not ms)
+  // Median lighting pass with no lights over the median with `lights`: the share of per-pixel work that is not
+  // per pair (reading the G-buffer, ambient, the store), which the ratio includes.
+  double fixedShare = 0.0;
+  uint64_t pairs = 0;  // per frame
+};
+
+// The fixture: a matte-to-glossy dielectric floor seen from above, filling a 16:9 frame, and `lights` seeded
+// lights in a layer above it with radii far larger than the scene.
+Scene pairCostScene(int lights);
+
+// Times every variant's lighting pass `rounds` times, visiting the variants in turn (A B C A B C ...) so that a
+// drift of a shared machine hits all alike; each round also times the pass with no lights for fixedShare.
+// `progress` is called with (timed frames done, total).
+std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::vector<PairCostVariant>& variants,
+                                      const PairCostSettings& settings,
+                                      const std::function<void(int, int)>& progress = {});
+
+}  // namespace pbr

@@ -1,0 +1,83 @@
+#include "app/accuracy/pair_cost_report.hpp"
+
+#include "app/bench/bench_report.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace pbr {
+
+namespace {
+
+std::string terms(const AccuracyVariant& v) { return describeTerms(v.model, v.shading); }
+
+}  // namespace
+
+void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
+  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << value << "\n";
+  const PairCostSettings& s = report.settings;
+  out << "# pair_cost_frame: " << s.size.x << "x" << s.size.y << ", " << s.lights
+      << " lights reaching every pixel, brute force\n# rounds: " << s.rounds << "\n";
+  out << "variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,ns_per_pair_p10,"
+         "ns_per_pair_p90,ns_per_pair_min,ns_per_pair_max,fixed_share,pairs_per_frame\n";
+  for (size_t i = 0; i < report.costs.size(); ++i) {
+    const AccuracyVariant& v = report.variants[i];
+    const PairCost& c = report.costs[i];
+    out << v.name << ',' << toString(v.model) << ",\"" << terms(v) << "\"," << toString(v.hdr) << ','
+        << toString(v.gbuffer) << ',' << s.size.x << ',' << s.size.y << ',' << s.lights << ',' << s.rounds << ','
+        << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ',' << fixedDecimals(c.nsPerPair.p90, 4) << ','
+        << fixedDecimals(c.nsPerPair.min, 4) << ',' << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
+        << c.pairs << '\n';
+  }
+}
+
+void writePairCostJson(std::ostream& out, const PairCostReport& report) {
+  using Json = nlohmann::ordered_json;
+  Json provenance = Json::object();
+  for (const auto& [key, value] : report.provenance.entries) provenance[key] = value;
+  const PairCostSettings& s = report.settings;
+  Json variants = Json::array();
+  for (size_t i = 0; i < report.costs.size(); ++i) {
+    const AccuracyVariant& v = report.variants[i];
+    const PairCost& c = report.costs[i];
+    variants.push_back({{"variant", v.name},
+                        {"model", toString(v.model)},
+                        {"terms", terms(v)},
+                        {"hdr_format", toString(v.hdr)},
+                        {"gbuffer", toString(v.gbuffer)},
+                        {"ns_per_pair", {{"median", c.nsPerPair.median},
+                                         {"p10", c.nsPerPair.p10},
+                                         {"p90", c.nsPerPair.p90},
+                                         {"min", c.nsPerPair.min},
+                                         {"max", c.nsPerPair.max}}},
+                        {"fixed_share", c.fixedShare},
+                        {"pairs_per_frame", c.pairs}});
+  }
+  const Json doc = {{"schema", "pbr-pair-cost/1"},
+                    {"provenance", provenance},
+                    {"settings", {{"width", s.size.x}, {"height", s.size.y}, {"lights", s.lights}, {"rounds", s.rounds},
+                                  {"culling", "none"}, {"scene", "pair-cost"}}},
+                    {"variants", variants}};
+  out << doc.dump(2) << "\n";
+}
+
+void printPairCostTable(std::ostream& out, const PairCostReport& report) {
+  const PairCostSettings& s = report.settings;
+  out << "cost per light-pixel pair: " << s.size.x << "x" << s.size.y << ", " << s.lights
+      << " lights reaching every pixel, brute force, " << s.rounds << " rounds taken in turn, "
+      << report.provenance.get("timing_mode") << "\n"
+      << report.provenance.get("gl_renderer") << ": " << report.provenance.get("timing_note") << "\n";
+  char line[160];
+  std::snprintf(line, sizeof line, "%-16s %10s %17s %12s\n", "variant", "ns/pair", "p10-p90", "fixed share");
+  out << line;
+  for (size_t i = 0; i < report.costs.size(); ++i) {
+    const PairCost& c = report.costs[i];
+    std::snprintf(line, sizeof line, "%-16s %10.3f %8.3f-%-8.3f %11.1f%%\n", report.variants[i].name.c_str(),
+                  c.nsPerPair.median, c.nsPerPair.p10, c.nsPerPair.p90, c.fixedShare * 100.0);
+    out << line;
+  }
+}
+
+}  // namespace pbr

@@ -1,0 +1,294 @@
+#include "app/bench/bench_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace pbr {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Record = std::vector<std::pair<std::string, std::string>>;
+
+const std::string kSkipped = "skipped";
+const std::string kNotApplicable = "n/a";
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+// Provenance values are single-line by construction, but a command line may hold anything.
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  std::replace(s.begin(), s.end(), '\r', ' ');
+  return s;
+}
+
+const char* const kStatNames[] = {"median", "p10", "p90", "min", "max"};
+
+double statValue(const TimeSummary& t, int i) {
+  const double values[] = {t.median, t.p10, t.p90, t.min, t.max};
+  return values[i];
+}
+
+void addTimes(Record& record, const std::string& prefix, const TimeSummary* times, const std::string& missing) {
+  for (int i = 0; i < 5; ++i) {
+    record.emplace_back(prefix + "_" + kStatNames[i] + "_ms", times ? fixedDecimals(statValue(*times, i), 4) : missing);
+  }
+}
+
+template <typename Enum>
+std::string joined(const std::vector<Enum>& items) {
+  std::string out;
+  for (Enum item : items) out += (out.empty() ? "" : ",") + std::string(toString(item));
+  return out;
+}
+
+std::string joinedInts(const std::vector<int>& values) {
+  std::string out;
+  for (int v : values) out += (out.empty() ? "" : ",") + std::to_string(v);
+  return out;
+}
+
+Record settingsRecord(const BenchSettings& s) {
+  const std::string density = "yes (light radii x sqrt(" + std::to_string(kDensityReferenceLights) + "/lights))";
+  return {{"scene", s.scene},
+          {"size", std::to_string(s.size.x) + "x" + std::to_string(s.size.y)},
+          {"lights", joinedInts(s.lights)},
+          {"culling", joined(s.culling)},
+          {"models", joined(s.models)},
+          {"warmup_frames", std::to_string(s.warmup)},
+          {"timed_frames", std::to_string(s.frames)},
+          {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
+          {"constant_density", s.constantDensity ? density : "no"},
+          {"timing_requested", s.timing}};
+}
+
+// One CSV row; the column names are the same for every result, skipped or not.
+Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
+  const bool ok = !r.skipped;
+  const bool clustered = r.config.culling == Culling::Clustered;
+  Record rec = {{"scene", r.config.scene},
+                {"width", std::to_string(r.config.size.x)},
+                {"height", std::to_string(r.config.size.y)},
+                {"lights", std::to_string(r.config.lights)},
+                {"culling", toString(r.config.culling)},
+                {"model", toString(r.config.model)},
+                {"light_radius_scale", fixedDecimals(r.config.radiusScale, 4)},
+                {"status", ok ? "ok" : kSkipped},
+                {"skip_reason", ok ? "none" : r.skipReason},
+                {"estimated_s", fixedDecimals(r.estimatedSeconds, 3)},
+                {"elapsed_s", fixedDecimals(r.elapsedSeconds, 3)},
+                {"timed_frames", std::to_string(r.frames.size())}};
+  for (const std::string& name : passes) {
+    const PassSummary* p = r.pass(name);
+    addTimes(rec, name, p ? &p->ms : nullptr, ok ? kNotApplicable : kSkipped);
+  }
+  addTimes(rec, "frame", ok ? &r.frameTime : nullptr, kSkipped);
+  addTimes(rec, "cpu_frame", ok ? &r.cpuTime : nullptr, kSkipped);
+
+  const LightStats& s = r.stats;
+  const auto cluster = [&](const std::string& v) { return !ok ? kSkipped : clustered ? v : kNotApplicable; };
+  const auto measured = [&](const std::string& v) { return ok ? v : kSkipped; };
+  const Record stats = {
+      {"surviving_lights", cluster(std::to_string(s.visibleLights))},
+      {"clusters", cluster(std::to_string(s.clusters))},
+      {"non_empty_clusters", cluster(std::to_string(s.nonEmptyClusters))},
+      {"avg_lights_per_cluster", cluster(fixedDecimals(s.averagePerNonEmpty(), 3))},
+      {"max_lights_per_cluster", cluster(std::to_string(s.maxPerCluster))},
+      {"index_entries", cluster(std::to_string(s.indexEntries))},
+      {"overflowed_clusters", cluster(std::to_string(s.overflowedClusters))},
+      {"pairs_evaluated", measured(std::to_string(s.pairs.evaluated))},
+      {"pairs_contributing", measured(std::to_string(s.pairs.contributing))},
+      {"culling_efficiency", measured(fixedDecimals(s.cullingEfficiency(), 5))},
+      {"gbuffer_bytes", measured(std::to_string(r.memory.gbuffer))},
+      {"cluster_bytes", measured(std::to_string(r.memory.clusters))},
+      {"light_bytes", measured(std::to_string(r.memory.lights))},
+      {"gpu_bytes", measured(std::to_string(r.memory.total()))},
+      {"process_cpu_share", measured(fixedDecimals(r.processCpuShare, 3))}};
+  rec.insert(rec.end(), stats.begin(), stats.end());
+  return rec;
+}
+
+Json timesJson(const TimeSummary& t) {
+  Json j = Json::object();
+  for (int i = 0; i < 5; ++i) j[std::string(kStatNames[i]) + "_ms"] = statValue(t, i);
+  return j;
+}
+
+Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
+  const bool ok = !r.skipped;
+  const bool clustered = r.config.culling == Culling::Clustered;
+  Json j = Json::object();
+  j["label"] = r.config.label();
+  j["scene"] = r.config.scene;
+  j["width"] = r.config.size.x;
+  j["height"] = r.config.size.y;
+  j["lights"] = r.config.lights;
+  j["culling"] = toString(r.config.culling);
+  j["model"] = toString(r.config.model);
+  j["light_radius_scale"] = r.config.radiusScale;
+  j["status"] = ok ? "ok" : kSkipped;
+  j["skip_reason"] = ok ? Json(nullptr) : Json(r.skipReason);
+  j["estimated_seconds"] = r.estimatedSeconds;
+  j["elapsed_seconds"] = r.elapsedSeconds;
+  j["timed_frames"] = r.frames.size();
+
+  Json passTimes = Json::object();
+  for (const std::string& name : passes) {
+    const PassSummary* p = r.pass(name);
+    passTimes[name] = p ? timesJson(p->ms) : Json(nullptr);
+  }
+  j["passes"] = ok ? passTimes : Json(nullptr);
+  j["frame"] = ok ? timesJson(r.frameTime) : Json(nullptr);
+  j["cpu_frame"] = ok ? timesJson(r.cpuTime) : Json(nullptr);
+
+  Json frames = Json::array();
+  for (const FrameTiming& f : r.frames) {
+    Json frame = {{"frame", f.frame}, {"start_ms", f.startMs - r.frames.front().startMs}, {"gpu_ms", f.gpuMs},
+                  {"cpu_ms", f.cpuMs}};
+    Json ms = Json::object();
+    for (const PassTiming& p : f.passes) ms[p.name] = p.ms;
+    frame["passes_ms"] = ms;
+    frames.push_back(frame);
+  }
+  j["frames"] = frames;
+
+  const LightStats& s = r.stats;
+  const auto cluster = [&](const Json& v) { return clustered ? v : Json(nullptr); };
+  j["light_stats"] = ok ? Json{{"lights", s.lights},
+                               {"surviving_lights", cluster(s.visibleLights)},
+                               {"clusters", cluster(s.clusters)},
+                               {"non_empty_clusters", cluster(s.nonEmptyClusters)},
+                               {"avg_lights_per_cluster", cluster(s.averagePerNonEmpty())},
+                               {"max_lights_per_cluster", cluster(s.maxPerCluster)},
+                               {"index_entries", cluster(s.indexEntries)},
+                               {"overflowed_clusters", cluster(s.overflowedClusters)},
+                               {"pairs_evaluated", s.pairs.evaluated},
+                               {"pairs_contributing", s.pairs.contributing},
+                               {"culling_efficiency", s.cullingEfficiency()}}
+                        : Json(nullptr);
+  j["memory_bytes"] = ok ? Json{{"gbuffer", r.memory.gbuffer},
+                                {"clusters", r.memory.clusters},
+                                {"lights", r.memory.lights},
+                                {"total", r.memory.total()}}
+                         : Json(nullptr);
+  j["process_cpu_share"] = ok ? Json(r.processCpuShare) : Json(nullptr);
+  return j;
+}
+
+}  // namespace
+
+std::string fixedDecimals(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, v);
+  return text;
+}
+
+void writeBenchCsv(std::ostream& out, const BenchReport& report) {
+  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << oneLine(value) << "\n";
+  for (const auto& [key, value] : settingsRecord(report.settings)) out << "# " << key << ": " << value << "\n";
+  const std::vector<std::string> passes = reportedPasses(report.results);
+  const Record header = csvRecord(BenchResult{}, passes);
+  for (size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i].first;
+  out << "\n";
+  for (const BenchResult& r : report.results) {
+    const Record rec = csvRecord(r, passes);
+    for (size_t i = 0; i < rec.size(); ++i) out << (i ? "," : "") << csvField(rec[i].second);
+    out << "\n";
+  }
+}
+
+void writeBenchJson(std::ostream& out, const BenchReport& report) {
+  Json provenance = Json::object();
+  for (const auto& [key, value] : report.provenance.entries) provenance[key] = value;
+  const BenchSettings& s = report.settings;
+  Json settings = {{"scene", s.scene},
+                   {"width", s.size.x},
+                   {"height", s.size.y},
+                   {"lights", s.lights},
+                   {"culling", Json::array()},
+                   {"models", Json::array()},
+                   {"warmup_frames", s.warmup},
+                   {"timed_frames", s.frames},
+                   {"max_seconds", s.maxSeconds},
+                   {"constant_density", s.constantDensity},
+                   {"density_reference_lights", kDensityReferenceLights},
+                   {"timing_requested", s.timing}};
+  for (Culling c : s.culling) settings["culling"].push_back(toString(c));
+  for (ShadingModel m : s.models) settings["models"].push_back(toString(m));
+  const std::vector<std::string> passes = reportedPasses(report.results);
+  Json configurations = Json::array();
+  for (const BenchResult& r : report.results) configurations.push_back(configJson(r, passes));
+  const Json doc = {{"schema", "pbr-bench/1"},
+                    {"provenance", provenance},
+                    {"settings", settings},
+                    {"configurations", configurations}};
+  out << doc.dump(2) << "\n";
+}
+
+void printBenchTable(std::ostream& out, const BenchReport& report) {
+  const BenchSettings& s = report.settings;
+  const std::vector<std::string> passes = reportedPasses(report.results);
+  std::vector<std::string> header = {"lights", "culling", "model"};
+  header.insert(header.end(), passes.begin(), passes.end());
+  for (const char* h : {"frame", "p10-p90", "cpu", "lights/cluster", "efficiency", "GPU MiB", "CPU use"}) {
+    header.push_back(h);
+  }
+
+  std::vector<std::vector<std::string>> rows;
+  for (const BenchResult& r : report.results) {
+    std::vector<std::string> row = {std::to_string(r.config.lights), toString(r.config.culling),
+                                    toString(r.config.model)};
+    if (!r.skipped) {
+      for (const std::string& name : passes) {
+        const PassSummary* p = r.pass(name);
+        row.push_back(p ? fixedDecimals(p->ms.median, 2) : "-");
+      }
+      const bool clustered = r.config.culling == Culling::Clustered;
+      row.push_back(fixedDecimals(r.frameTime.median, 2));
+      row.push_back(fixedDecimals(r.frameTime.p10, 1) + "-" + fixedDecimals(r.frameTime.p90, 1));
+      row.push_back(fixedDecimals(r.cpuTime.median, 2));
+      row.push_back(clustered ? fixedDecimals(r.stats.averagePerNonEmpty(), 1) + " (max " +
+                                    std::to_string(r.stats.maxPerCluster) + ")"
+                              : "-");
+      row.push_back(fixedDecimals(r.stats.cullingEfficiency(), 3));
+      row.push_back(fixedDecimals(static_cast<double>(r.memory.total()) / (1 << 20), 1));
+      row.push_back(fixedDecimals(r.processCpuShare * 100.0, 0) + "%");
+    }
+    rows.push_back(row);
+  }
+  std::vector<size_t> width(header.size());
+  for (size_t c = 0; c < header.size(); ++c) width[c] = header[c].size();
+  for (const auto& row : rows) {
+    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  const auto printRow = [&](const std::vector<std::string>& row) {
+    std::string line;
+    for (size_t c = 0; c < row.size(); ++c) {
+      const std::string pad(width[c] - row[c].size(), ' ');
+      line += (c ? "  " : "") + (c == 1 || c == 2 ? row[c] + pad : pad + row[c]);
+    }
+    out << line;
+  };
+
+  out << s.scene << " " << s.size.x << "x" << s.size.y << ": median ms of " << s.frames << " timed frames after "
+      << s.warmup << " warm-up, " << report.provenance.get("timing_mode") << "\n"
+      << report.provenance.get("gl_renderer") << ": " << report.provenance.get("timing_note") << "\n\n";
+  printRow(header);
+  out << "\n";
+  for (size_t i = 0; i < rows.size(); ++i) {
+    printRow(rows[i]);
+    if (report.results[i].skipped) out << "  skipped: " << report.results[i].skipReason;
+    out << "\n";
+  }
+}
+
+}  // namespace pbr

@@ -1,0 +1,34 @@
+#pragma once
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "app/bench/bench_sweep.hpp"
+#include "core/provenance.hpp"
+
+namespace pbr {
+
+// `v` with `decimals` digits after the point, as report cells print numbers.
+std::string fixedDecimals(double v, int decimals);
+
+// Everything `pbr bench` measured, and under which circumstances.
+struct BenchReport {
+  Provenance provenance;
+  BenchSettings settings;
+  std::vector<BenchResult> results;  // in sweep order, skipped configurations included
+};
+
+// CSV: the provenance and settings as leading "# key: value" lines, a header row, then one row per
+// configuration with five order statistics per pass. Every cell holds a value: "skipped" for measurements of a
+// skipped configuration, "n/a" where a quantity does not exist (the cluster pass and cluster statistics of
+// brute-force rows).
+void writeBenchCsv(std::ostream& out, const BenchReport& report);
+
+// JSON (schema "pbr-bench/1"): provenance, settings and one object per configuration with summaries, every timed
+// frame, light statistics and memory; keys are always present, null where the CSV says skipped or n/a.
+void writeBenchJson(std::ostream& out, const BenchReport& report);
+
+// A fixed-width table of the median times, light statistics and memory per configuration.
+void printBenchTable(std::ostream& out, const BenchReport& report);
+
+}  // namespace pbr

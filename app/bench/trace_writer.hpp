@@ -1,0 +1,13 @@
+#pragma once
+#include <ostream>
+
+#include "app/bench/bench_report.hpp"
+
+namespace pbr {
+
+// Chrome trace-event JSON (opens in Perfetto and chrome://tracing): one thread per configuration, named after
+// it, on which every timed frame is a "frame" slice holding one slice per pass. Configurations follow each
+// other as they ran; times are microseconds on the timing clock of the report's provenance.
+void writeTrace(std::ostream& out, const BenchReport& report);
+
+}  // namespace pbr
