@@ -37,7 +37,9 @@ for t in "${targets[@]}"; do
   dict=()
   [[ $t == scene_json_fuzzer || $t == gltf_fuzzer ]] && dict=(-dict=fuzz/json.dict)
   echo "fuzz: $t for ${seconds}s"
-  if ! "$build/fuzz/$t" "$build/corpus/$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  # Every input runs in well under a second on an idle machine; 30 s leaves room for a busy one (an input counted
+  # as a hang at 10 s ran in 0.4 s alone) while a real endless loop is still caught.
+  if ! "$build/fuzz/$t" "$build/corpus/$t" "${dict[@]}" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
       -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$build/crashes/$t/" >"$build/logs/$t.log" 2>&1; then
     echo "fuzz: $t CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after|out-of-memory' \
       "$build/logs/$t.log")"
