@@ -15,11 +15,11 @@ void appendPrefix(const nlohmann::json& value, std::size_t limit, std::string& o
   if (value.is_string()) {
     const std::string& s = value.get_ref<const std::string&>();
     // Quote no more of the string than can show; dump() escapes it as the file would spell it.
-    out += nlohmann::json(s.substr(0, limit - out.size() + 1)).dump();
+    out += jsonText(nlohmann::json(s.substr(0, limit - out.size() + 1)));
     return;
   }
   if (!value.is_structured()) {
-    out += value.dump();
+    out += jsonText(value);
     return;
   }
   const bool object = value.is_object();
@@ -28,13 +28,17 @@ void appendPrefix(const nlohmann::json& value, std::size_t limit, std::string& o
   for (auto it = value.begin(); it != value.end() && out.size() < limit; ++it) {
     if (!first) out += ',';
     first = false;
-    if (object) out += nlohmann::json(it.key()).dump() + ":";
+    if (object) out += jsonText(nlohmann::json(it.key())) + ":";
     appendPrefix(it.value(), limit, out);
   }
   out += object ? '}' : ']';
 }
 
 }  // namespace
+
+std::string jsonText(const nlohmann::json& value, int indent) {
+  return value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 std::string lineColumn(const std::string& text, std::size_t offset) {
   const std::size_t end = std::min(offset, text.size());

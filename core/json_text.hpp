@@ -18,6 +18,10 @@ void checkJsonNesting(const std::string& text, const std::string& file);
 // "LINE:COLUMN" (both from 1) of the byte at `offset`.
 std::string lineColumn(const std::string& text, std::size_t offset);
 
+// The value as JSON text, `indent` as nlohmann's dump. Bytes that are not UTF-8 (a path on a Linux file system, a
+// string cut inside a multi-byte character) become U+FFFD instead of throwing, as nlohmann's dump would.
+std::string jsonText(const nlohmann::json& value, int indent = -1);
+
 // The value as JSON text, cut to at most about `maxChars` characters ("..." marks a cut) without serialising more
 // of it than that: a message quotes a value, never a whole subtree or a megabyte string.
 std::string quoteJson(const nlohmann::json& value, std::size_t maxChars = 60);

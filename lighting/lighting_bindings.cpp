@@ -7,10 +7,12 @@ namespace pbr {
 
 ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
-  return bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
+  // Built and checked once: the lighting pass asks for its program every frame.
+  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
                          kLightVisibleSsbo, kClusterBoundsSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterViewLightsSsbo, kClusterTileMasksSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
                          kDepthUnit, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
+  return defines;
 }
 
 }  // namespace pbr

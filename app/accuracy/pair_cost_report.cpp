@@ -1,6 +1,7 @@
 #include "app/accuracy/pair_cost_report.hpp"
 
 #include "app/bench/bench_report.hpp"
+#include "core/json_text.hpp"
 
 #include <cstdio>
 #include <string>
@@ -60,7 +61,7 @@ void writePairCostJson(std::ostream& out, const PairCostReport& report) {
                     {"settings", {{"width", s.size.x}, {"height", s.size.y}, {"lights", s.lights}, {"rounds", s.rounds},
                                   {"culling", "none"}, {"scene", "pair-cost"}}},
                     {"variants", variants}};
-  out << doc.dump(2) << "\n";
+  out << jsonText(doc, 2) << "\n";
 }
 
 void printPairCostTable(std::ostream& out, const PairCostReport& report) {

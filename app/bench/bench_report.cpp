@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_text.hpp"
+
 namespace pbr {
 
 namespace {
@@ -231,7 +233,7 @@ void writeBenchJson(std::ostream& out, const BenchReport& report) {
                     {"provenance", provenance},
                     {"settings", settings},
                     {"configurations", configurations}};
-  out << doc.dump(2) << "\n";
+  out << jsonText(doc, 2) << "\n";
 }
 
 void printBenchTable(std::ostream& out, const BenchReport& report) {

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_text.hpp"
+
 namespace pbr {
 
 namespace {
@@ -53,7 +55,7 @@ void writeTrace(std::ostream& out, const BenchReport& report) {
   Json other = Json::object();
   for (const auto& [key, value] : report.provenance.entries) other[key] = value;
   const Json doc = {{"traceEvents", events}, {"displayTimeUnit", "ms"}, {"otherData", other}};
-  out << doc.dump() << "\n";
+  out << jsonText(doc) << "\n";
 }
 
 }  // namespace pbr
