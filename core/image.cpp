@@ -7,9 +7,12 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "core/input_file.hpp"
 #include "core/output_file.hpp"
@@ -99,6 +102,28 @@ std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
   return "";
 }
 
+// An empty IDAT chunk is legal PNG, but stb_image copies it (memcpy of 0 bytes) into a data buffer it has not
+// allocated yet when it comes first, which is undefined behaviour. Returns the file without its empty IDAT chunks,
+// or nothing when it has none (or is no PNG); a chunk that runs past the end stops the walk, for stb to report.
+std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned char* b, size_t size) {
+  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (size < 8 || std::memcmp(b, signature, 8) != 0) return std::nullopt;
+  std::vector<unsigned char> kept(b, b + 8);
+  bool dropped = false;
+  size_t pos = 8;
+  while (pos + 12 <= size) {
+    const size_t length = size_t(b[pos]) << 24 | size_t(b[pos + 1]) << 16 | size_t(b[pos + 2]) << 8 | b[pos + 3];
+    if (length > size - pos - 12) break;
+    const bool emptyData = length == 0 && std::memcmp(b + pos + 4, "IDAT", 4) == 0;
+    if (!emptyData) kept.insert(kept.end(), b + pos, b + pos + 12 + length);
+    dropped = dropped || emptyData;
+    pos += 12 + length;
+  }
+  if (!dropped) return std::nullopt;
+  kept.insert(kept.end(), b + pos, b + size);
+  return kept;
+}
+
 }  // namespace
 
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
@@ -106,6 +131,11 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
   const std::string jpegProblem = jpegHuffmanProblem(bytes, size);
   if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
+  const std::optional<std::vector<unsigned char>> png = withoutEmptyPngData(bytes, size);
+  if (png) {
+    bytes = png->data();
+    size = png->size();
+  }
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &n, 4), stbi_image_free);

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -46,4 +47,22 @@ TEST_CASE("image decode: the shared models' JPEG and PNG textures decode") {
     CHECK(image.width > 0);
     CHECK(image.pixels.size() == size_t(image.width) * image.height * 4);
   }
+}
+
+TEST_CASE("image decode: a PNG whose first data chunk is empty decodes like the same PNG without it") {
+  const pbr::ImageRgba8 image{3, 2, {10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255,
+                                     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}};
+  std::ostringstream encoded;
+  pbr::writePng(encoded, image);
+  const std::string png = encoded.str();
+  // An empty IDAT (length 0, its CRC) before the first real one: legal, and what made stb_image copy into a
+  // buffer it had not allocated (undefined behaviour that UBSan reports).
+  const size_t idat = png.find("IDAT") - 4;
+  const std::string empty("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12);
+  const std::string withEmpty = png.substr(0, idat) + empty + png.substr(idat);
+  const std::vector<unsigned char> bytes(withEmpty.begin(), withEmpty.end());
+  const pbr::ImageRgba8 decoded = pbr::decodeImage(bytes.data(), bytes.size(), "empty-idat.png");
+  CHECK(decoded.width == 3);
+  CHECK(decoded.height == 2);
+  CHECK(decoded.pixels == image.pixels);
 }
