@@ -136,6 +136,17 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
     bytes = png->data();
     size = png->size();
   }
+  // The header alone sets what the decoder allocates: a few hundred bytes may declare gigapixels. A texture
+  // larger than this could not be uploaded anyway (GL_MAX_TEXTURE_SIZE is 16384 on llvmpipe).
+  int declaredW = 0, declaredH = 0, declaredN = 0;
+  if (stbi_info_from_memory(bytes, static_cast<int>(size), &declaredW, &declaredH, &declaredN) &&
+      (declaredW > kMaxImageSide || declaredH > kMaxImageSide ||
+       int64_t(declaredW) * declaredH > kMaxImagePixels)) {
+    throw std::runtime_error(name + ": cannot decode image: " + std::to_string(declaredW) + "x" +
+                             std::to_string(declaredH) + " pixels, over the image limit (" +
+                             std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) +
+                             " pixels in all)");
+  }
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &n, 4), stbi_image_free);

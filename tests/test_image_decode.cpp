@@ -1,6 +1,7 @@
 // The image decoder refuses corrupt files with a reason, including those that would make stb_image write out of
 // bounds, and still decodes the real textures of the shared models.
 #include <doctest/doctest.h>
+#include <stb_image_write.h>
 
 #include <filesystem>
 #include <sstream>
@@ -65,4 +66,22 @@ TEST_CASE("image decode: a PNG whose first data chunk is empty decodes like the 
   CHECK(decoded.width == 3);
   CHECK(decoded.height == 2);
   CHECK(decoded.pixels == image.pixels);
+}
+
+TEST_CASE("image decode: a header declaring more pixels than the image limit is refused before decoding") {
+  // A 2x2 JPEG whose frame header is rewritten to 6432 x 65280: stb_image would allocate 2.5 GB for its component
+  // buffers from the header alone (a texture fuzzing find; stb refuses PNGs over 1 GiB by itself).
+  std::string jpeg;
+  const std::vector<unsigned char> pixels(2 * 2 * 3, 128);
+  stbi_write_jpg_to_func([](void* out, void* data, int size) { static_cast<std::string*>(out)->append(
+                             static_cast<const char*>(data), size_t(size)); },
+                         &jpeg, 2, 2, 3, pixels.data(), 90);
+  const size_t sof = jpeg.find("\xff\xc0");
+  REQUIRE(sof != std::string::npos);
+  const unsigned char size[4] = {0xFF, 0x00, 0x19, 0x20};  // height 65280, width 6432
+  jpeg.replace(sof + 5, 4, reinterpret_cast<const char*>(size), 4);
+  const std::vector<unsigned char> bytes(jpeg.begin(), jpeg.end());
+  CHECK_THROWS_WITH(pbr::decodeImage(bytes.data(), bytes.size(), "bomb.jpg"),
+                    "bomb.jpg: cannot decode image: 6432x65280 pixels, over the image limit (16384 a side, "
+                    "67108864 pixels in all)");
 }
