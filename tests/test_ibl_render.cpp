@@ -103,7 +103,7 @@ std::string loadError(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("ibl render: a white sphere in a uniform environment of radiance 1 reflects 1; the background is 1") {
+TEST_CASE("ibl render: a white sphere in a uniform environment of radiance 1 reflects 1, the background is 1") {
   PBR_REQUIRE_GL();
   const Scene scene = furnaceScene();
   const ShaderLibrary shaders;
@@ -179,7 +179,7 @@ TEST_CASE("ibl render: background pixels follow the sky gradient from the horizo
   CHECK(maxRelative(pixel(zenith.hdr, size / 2, size / 2), sky.zenith) < 0.01f);
 }
 
-TEST_CASE("ibl render: environment and point lights add up; clustered equals brute force with an environment") {
+TEST_CASE("ibl render: environment and point lights add up, clustered equals brute force with an environment") {
   PBR_REQUIRE_GL();
   const glm::ivec2 size{96, 54};
   const Scene both = mixedScene(64);
