@@ -138,6 +138,12 @@ int addQuad(GltfBuilder& builder, const QuadSpec& spec) {
   return builder.addMesh(primitive);
 }
 
+GltfBuilder quadModel() {
+  GltfBuilder b;
+  b.addRootNode({{"mesh", addQuad(b, {})}});
+  return b;
+}
+
 ImageRgba8 solidImage(int w, int h, glm::u8vec4 rgba) {
   ImageRgba8 image{w, h, {}};
   for (int i = 0; i < w * h; ++i) image.pixels.insert(image.pixels.end(), {rgba.x, rgba.y, rgba.z, rgba.w});

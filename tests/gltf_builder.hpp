@@ -52,6 +52,9 @@ struct QuadSpec {
 };
 int addQuad(GltfBuilder& builder, const QuadSpec& spec);
 
+// A model of one default quad, the default scene's only node.
+GltfBuilder quadModel();
+
 // A w x h image of one RGBA colour.
 ImageRgba8 solidImage(int w, int h, glm::u8vec4 rgba);
 

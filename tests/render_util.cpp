@@ -1,7 +1,10 @@
 #include "tests/render_util.hpp"
 
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace pbr::test {
 
@@ -25,6 +28,22 @@ int countDifferentBytes(const ImageRgba8& a, const ImageRgba8& b) {
   int n = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i];
   return n;
+}
+
+int maxByteDifference(const ImageRgba8& a, const ImageRgba8& b) {
+  REQUIRE(a.pixels.size() == b.pixels.size());
+  int worst = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) worst = std::max(worst, std::abs(a.pixels[i] - b.pixels[i]));
+  return worst;
+}
+
+double meanAbsDifference(const ImageRgba8& a, const ImageRgba8& b) {
+  REQUIRE(a.pixels.size() == b.pixels.size());
+  double sum = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (i % 4 != 3) sum += std::abs(a.pixels[i] - b.pixels[i]);
+  }
+  return sum / (a.pixels.size() / 4 * 3);
 }
 
 }  // namespace pbr::test

@@ -15,5 +15,9 @@ RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOption
 // Largest |a - b| / max(|b|, floor) over all colour channels.
 double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor = 1e-3);
 int countDifferentBytes(const ImageRgba8& a, const ImageRgba8& b);
+// Largest |a - b| over every byte, alpha included.
+int maxByteDifference(const ImageRgba8& a, const ImageRgba8& b);
+// Mean |a - b| over the colour channels, alpha left out.
+double meanAbsDifference(const ImageRgba8& a, const ImageRgba8& b);
 
 }  // namespace pbr::test

@@ -94,7 +94,7 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
   CHECK(test::readFile(dir.path() / "acc" / "slices.csv").find("hammon,dielectric,") != std::string::npos);
 }
 
-TEST_CASE("pbr render --variant and --hdr-format select a permutation; unknown values are usage errors") {
+TEST_CASE("pbr render --variant and --hdr-format select a permutation, unknown values are usage errors") {
   PBR_REQUIRE_GL();
   const test::TempDir dir;
   const test::PbrRun ok = test::runPbr(dir, {"render", "--size", "32x18", "--scene", "sphere-grid", "--variant",

@@ -25,6 +25,8 @@
 
 using nlohmann::json;
 using pbr::test::GltfBuilder;
+using pbr::test::maxByteDifference;
+using pbr::test::meanAbsDifference;
 using pbr::test::QuadSpec;
 using pbr::test::TempDir;
 
@@ -110,19 +112,6 @@ PixelStats stats(const pbr::test::RenderedFrame& f) {
   }
   s.distinctColors = colors.size();
   return s;
-}
-
-int maxByteDifference(const pbr::ImageRgba8& a, const pbr::ImageRgba8& b) {
-  REQUIRE(a.pixels.size() == b.pixels.size());
-  int worst = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) worst = std::max(worst, std::abs(a.pixels[i] - b.pixels[i]));
-  return worst;
-}
-
-double meanAbsDifference(const pbr::ImageRgba8& a, const pbr::ImageRgba8& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) sum += i % 4 == 3 ? 0 : std::abs(a.pixels[i] - b.pixels[i]);
-  return sum / (a.pixels.size() / 4 * 3);
 }
 
 // The scene with every material map removed: what the model would look like untextured.

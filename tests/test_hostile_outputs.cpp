@@ -1,5 +1,5 @@
-// Outputs that cannot be written, frames too large to allocate and command lines that name the wrong argument: each
-// fails with exit code 1 or 2, one short line on stderr naming the file or option, and no file left behind.
+// Outputs that cannot be written and frames too large to allocate: each fails with exit code 1 or 2, one short line
+// on stderr naming the file or option, and no file left behind.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
@@ -12,23 +12,17 @@
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
+#include "tests/refusal_checks.hpp"
 
 namespace fs = std::filesystem;
-using pbr::test::isOneLine;
+using pbr::test::checkOneLineNaming;
 using pbr::test::readFile;
 using pbr::test::runPbr;
 using pbr::test::TempDir;
+using pbr::test::tinyRender;
 using Run = pbr::test::PbrRun;
 
 namespace {
-
-// `pbr render` of one tiny frame, 32x18 unless `extra` gives a --size.
-std::vector<std::string> tinyRender(const std::vector<std::string>& extra) {
-  std::vector<std::string> args = {"render", "--frames", "1", "--warmup", "0", "--lights", "8"};
-  if (std::find(extra.begin(), extra.end(), "--size") == extra.end()) args.insert(args.end(), {"--size", "32x18"});
-  args.insert(args.end(), extra.begin(), extra.end());
-  return args;
-}
 
 // Every entry of `folder`, temporaries (".NAME.PID.N.tmp") included.
 std::vector<std::string> entries(const fs::path& folder) {
@@ -36,12 +30,6 @@ std::vector<std::string> entries(const fs::path& folder) {
   if (!fs::exists(folder)) return names;
   for (const fs::directory_entry& e : fs::directory_iterator(folder)) names.push_back(e.path().filename().string());
   return names;
-}
-
-void checkOneLineNaming(const Run& run, const std::string& name) {
-  CHECK(isOneLine(run.err));
-  CHECK(run.err.size() < 300);
-  CHECK(run.err.find(name) != std::string::npos);
 }
 
 // Nothing was rendered: the failure came before the first frame.
@@ -139,50 +127,6 @@ TEST_CASE("hostile outputs: a read-only folder fails with exit 1 naming the file
   CHECK(entries(folder).empty());
 }
 
-TEST_CASE("hostile outputs: an unknown capture extension fails before rendering with exit 2 naming the file") {
-  const TempDir dir;
-  const std::vector<std::vector<std::string>> cases = {
-      tinyRender({"--out", dir.file("f.jpg")}),
-      tinyRender({"--hdr", dir.file("f.hdr")}),
-      tinyRender({"--hdr", "/dev/full"}),  // a device says nothing of the format
-      {"reference", "--size", "32x18", "--hdr", dir.file("f.png")},
-      {"view", "--frames", "1", "--screenshot", dir.file("f.jpg")},
-  };
-  for (const auto& args : cases) {
-    const std::string& path = args[args.size() - 1];
-    CAPTURE(path);
-    const Run run = runPbr(dir, args);
-    CHECK(run.exitCode == 2);
-    checkOneLineNaming(run, path);
-    CHECK(run.out.empty());
-    if (path != "/dev/full") CHECK_FALSE(fs::exists(path));
-  }
-}
-
-TEST_CASE("hostile outputs: an option missing its value is named, not the option after it") {
-  const TempDir dir;
-  struct Case {
-    std::vector<std::string> args;
-    std::string message;
-  };
-  const std::vector<Case> cases = {
-      {{"render", "--lights", "--size", "160x90"}, "--lights expects a value (N)"},
-      {{"render", "--size", "160x90", "--out"}, "--out expects a value (F.png)"},
-      {{"render", "--out=", "--size", "160x90"}, "--out expects a value (F.png), got an empty one"},
-      {{"render", "--scene", ""}, "--scene expects a value (NAME|FILE), got an empty one"},
-      {{"render", "--lights", "8", "--lights=16"}, "--lights is given more than once"},
-      {{"render", "--stats", "--stats"}, "--stats is given more than once"},
-      {{"bench", "--csv", "--json", "b.json"}, "--csv expects a value (F)"},
-  };
-  for (const Case& c : cases) {
-    CAPTURE(c.message);
-    const Run run = runPbr(dir, c.args);
-    CHECK(run.exitCode == 2);
-    checkOneLineNaming(run, c.message);
-    CHECK(run.out.empty());
-  }
-}
-
 TEST_CASE("hostile outputs: a frame larger than the limits fails before rendering, naming --size") {
   PBR_REQUIRE_GL();
   const TempDir dir;
@@ -231,27 +175,6 @@ TEST_CASE("hostile outputs: the driver is asked about each target's format befor
     checkOneLineNaming(huge, "--size 16384x16384: ");
     checkNotRendered(huge);
   }
-}
-
-TEST_CASE("hostile outputs: the frame-size check names the option and the limit it is over") {
-  pbr::RendererConfig lean;
-  CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 8 + 32);
-  pbr::RendererConfig wide;
-  wide.gbuffer = pbr::GBufferPrecision::Float;
-  wide.hdrFormat = pbr::HdrFormat::Rgba32f;
-  CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 8 + 32);
-
-  const pbr::FrameLimits limits{8192, 1'000'000'000};
-  CHECK_NOTHROW(pbr::checkFrameSize(8192, 16, "--size", 68, limits));
-  CHECK_THROWS_WITH(pbr::checkFrameSize(8193, 16, "--size", 68, limits),
-                    "--size 8193x16: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
-  CHECK_THROWS_WITH(pbr::checkFrameSize(16, 8193, "--pair-size", 68, limits),
-                    "--pair-size 16x8193: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
-  // 4000 x 4000 x 68 = 1.088 GB against 1 GB.
-  CHECK_THROWS_WITH(pbr::checkFrameSize(4000, 4000, "--size", 68, limits),
-                    "--size 4000x4000: the frame needs about 1.1 GB (68 bytes per pixel), over the 1.0 GB of memory "
-                    "available");
-  CHECK_NOTHROW(pbr::checkFrameSize(3800, 3800, "--size", 68, limits));
 }
 
 TEST_CASE("hostile outputs: a directory as an environment fails with exit 1 naming it") {

@@ -10,38 +10,16 @@
 
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
+#include "tests/refusal_checks.hpp"
 
+using pbr::test::checkRefused;
 using pbr::test::GltfBuilder;
-using pbr::test::PbrRun;
+using pbr::test::quadModel;
 using pbr::test::TempDir;
 
 namespace {
 
 const std::string kCamera = R"("camera": {"position": [0, 2, 6], "target": [0, 0, 0]})";
-
-// Renders `scene` and checks the refusal: exit 1, one line under 300 characters holding every part, no frame.
-void checkRefused(const TempDir& dir, const std::string& scene, const std::vector<std::string>& parts,
-                  const std::vector<std::string>& extra = {}) {
-  const std::string out = dir.file("frame.png");
-  std::vector<std::string> args = {"render", "--scene", scene, "--size", "32x18", "--frames", "1", "--warmup", "0",
-                                   "--out", out};
-  args.insert(args.end(), extra.begin(), extra.end());
-  const PbrRun run = pbr::test::runPbr(dir, args);
-  CAPTURE(scene);
-  CAPTURE(run.err);
-  CHECK(run.exitCode == 1);
-  CHECK(pbr::test::isOneLine(run.err));
-  CHECK(run.err.size() < 300);
-  CHECK(run.err.find(std::filesystem::path(scene).filename().string()) != std::string::npos);
-  for (const std::string& part : parts) CHECK(run.err.find(part) != std::string::npos);
-  CHECK(!std::filesystem::exists(out));
-}
-
-GltfBuilder quad() {
-  GltfBuilder b;
-  b.addRootNode({{"mesh", pbr::test::addQuad(b, {})}});
-  return b;
-}
 
 std::string nested(int depth) { return std::string(static_cast<size_t>(depth), '[') + std::string(static_cast<size_t>(depth), ']'); }
 
@@ -78,7 +56,7 @@ TEST_CASE("hostile scenes: a huge value is quoted by a short prefix") {
 
 TEST_CASE("hostile scenes: glTF extras nested far past the limit are refused before tinygltf reads them") {
   const TempDir dir;
-  const std::string path = quad().writeGltf(dir.path(), "deep");
+  const std::string path = quadModel().writeGltf(dir.path(), "deep");
   std::string text = pbr::test::readFile(path);
   text.insert(1, R"("extras": )" + nested(50000) + ",");
   std::ofstream(path, std::ios::binary) << text;
@@ -115,11 +93,11 @@ TEST_CASE("hostile scenes: every invalid accessor byteOffset names accessors[0].
   };
   int n = 0;
   for (const auto& [offset, message] : cases) {
-    GltfBuilder b = quad();
+    GltfBuilder b = quadModel();
     b.doc["accessors"][0]["byteOffset"] = offset;
     checkRefused(dir, b.writeGltf(dir.path(), "offset" + std::to_string(n++)), {"accessors[0].byteOffset: " + message});
   }
-  GltfBuilder b = quad();
+  GltfBuilder b = quadModel();
   b.doc["accessors"][0]["count"] = 1000;
   checkRefused(dir, b.writeGltf(dir.path(), "count"), {"accessors[0].count: 1000 elements", "past the end of bufferViews[0]"});
 }
@@ -129,7 +107,7 @@ TEST_CASE("hostile scenes: buffer and image URIs that are directories, badly enc
   int n = 0;
   for (const std::string uri : {".", "%ZZ.bin", "%00.bin", "sub", ""}) {
     std::filesystem::create_directories(dir.path() / "sub");
-    GltfBuilder b = quad();
+    GltfBuilder b = quadModel();
     const std::string path = b.writeGltf(dir.path(), "uri" + std::to_string(n++));
     std::string text = pbr::test::readFile(path);
     nlohmann::json doc = nlohmann::json::parse(text);
@@ -138,11 +116,11 @@ TEST_CASE("hostile scenes: buffer and image URIs that are directories, badly enc
     CAPTURE(uri);
     checkRefused(dir, path, {"buffers[0].uri: "});
   }
-  GltfBuilder image = quad();
+  GltfBuilder image = quadModel();
   image.doc["images"] = {{{"uri", "."}}};
   checkRefused(dir, image.writeGltf(dir.path(), "image_dir"), {"images[0].uri: '.': not a regular file (a directory)"});
 
-  GltfBuilder longer = quad();
+  GltfBuilder longer = quadModel();
   const std::string path = longer.writeGltf(dir.path(), "length");
   nlohmann::json doc = nlohmann::json::parse(pbr::test::readFile(path));
   const size_t size = doc["buffers"][0]["byteLength"].get<size_t>();
@@ -157,32 +135,9 @@ TEST_CASE("hostile scenes: buffer and image URIs that are directories, badly enc
   checkRefused(dir, path, {"buffers[0].byteLength: 30003, but 'data:application/octet-stream;base64,...' holds 30000"});
 }
 
-TEST_CASE("hostile scenes: URIs that leave the model's folder are refused unless --allow-outside-uris") {
-  const TempDir dir;
-  GltfBuilder b = quad();
-  std::filesystem::create_directories(dir.path() / "model");
-  const std::string path = b.writeGltf(dir.path() / "model", "outside");
-  std::filesystem::rename(dir.path() / "model" / "outside.bin", dir.path() / "outside.bin");
-  nlohmann::json doc = nlohmann::json::parse(pbr::test::readFile(path));
-  doc["buffers"][0]["uri"] = "../outside.bin";
-  std::ofstream(path) << doc.dump();
-  checkRefused(dir, path, {"buffers[0].uri: '../outside.bin' leaves the model's folder (--allow-outside-uris"});
-
-  const std::string out = dir.file("allowed.png");
-  const PbrRun run = pbr::test::runPbr(dir, {"render", "--scene", path, "--size", "32x18", "--frames", "1",
-                                             "--warmup", "0", "--out", out, "--allow-outside-uris"});
-  CAPTURE(run.err);
-  CHECK(run.exitCode == 0);
-  CHECK(std::filesystem::exists(out));
-
-  doc["buffers"][0]["uri"] = "../../../../../../../../etc/passwd";
-  std::ofstream(path) << doc.dump();
-  checkRefused(dir, path, {"buffers[0].uri: '../../../../../../../../etc/passwd' leaves the model's folder"});
-}
-
 TEST_CASE("hostile scenes: a GLB with a damaged header says which part is wrong") {
   const TempDir dir;
-  const std::string path = quad().writeGlb(dir.path(), "model");
+  const std::string path = quadModel().writeGlb(dir.path(), "model");
   const std::string good = pbr::test::readFile(path);
   const auto damaged = [&](size_t at, const std::string& bytes, const std::string& name) {
     std::string text = good;
@@ -209,18 +164,18 @@ TEST_CASE("hostile scenes: degenerate and overflowing node transforms are report
   };
   int n = 0;
   for (const auto& [transform, message] : cases) {
-    GltfBuilder b = quad();
+    GltfBuilder b = quadModel();
     for (const auto& [key, value] : transform.items()) b.doc["nodes"][0][key] = value;
     checkRefused(dir, b.writeGltf(dir.path(), "node" + std::to_string(n++)), {message});
   }
   // Each finite, together past the limit: the child that goes over is named.
-  GltfBuilder b = quad();
+  GltfBuilder b = quadModel();
   b.doc["nodes"][0]["translation"] = {9e11, 0, 0};
   b.doc["nodes"].push_back({{"translation", {9e11, 0, 0}}, {"mesh", 0}});
   b.doc["nodes"][0]["children"] = {1};
   checkRefused(dir, b.writeGltf(dir.path(), "sum"), {"nodes[1].translation: with its parents' transforms, places the node at 1.8e+12"});
   // A light brighter than float range names its intensity, not the luminous_power it becomes.
-  GltfBuilder light = quad();
+  GltfBuilder light = quadModel();
   light.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 1e38}}};
   light.doc["extensionsUsed"] = {"KHR_lights_punctual"};
   light.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;

@@ -15,10 +15,12 @@
 #include "reference/display_transform.hpp"
 #include "reference/plane_reference.hpp"
 #include "tests/gl_test_context.hpp"
+#include "tests/render_util.hpp"
 
 namespace ref = pbr::reference;
 namespace plane = pbr::reference::plane;
 using glm::dvec3;
+using pbr::test::meanAbsDifference;
 
 namespace {
 
@@ -190,15 +192,6 @@ LdrComparison compareLdr(const Frame& f, Post post) {
     }
   }
   return c;
-}
-
-double meanAbsDifference(const pbr::ImageRgba8& a, const pbr::ImageRgba8& b) {
-  REQUIRE(a.pixels.size() == b.pixels.size());
-  double sum = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    if (i % 4 != 3) sum += std::abs(a.pixels[i] - b.pixels[i]);
-  }
-  return sum / (a.pixels.size() / 4 * 3);
 }
 
 // Errors left by earlier test cases in this process must not be blamed on this one.

@@ -63,11 +63,3 @@ TEST_CASE("warm timing: default render output reports the first frame apart from
   CHECK(lighting["median_ms"].get<double>() > 0.0);
   CHECK(doc["provenance"]["git_commit"].get<std::string>().size() > 0);
 }
-
-TEST_CASE("cli: --version names the version and the commit") {
-  const TempDir dir;
-  const pbr::test::PbrRun run = runPbr(dir, {"--version"});
-  CHECK(run.exitCode == 0);
-  CHECK(std::regex_search(run.out, std::regex("^pbr [0-9]+\\.[0-9]+\\.[0-9]+ \\(commit ([0-9a-f]{40}|unknown), ")));
-  CHECK(pbr::test::isOneLine(run.out));
-}

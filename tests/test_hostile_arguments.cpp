@@ -1,0 +1,81 @@
+// Command lines that name the wrong argument and frames over the limits: each is refused before any context is
+// made, with exit code 2 and one short line on stderr naming the file or option.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "renderer/frame_limits.hpp"
+#include "renderer/renderer_config.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/refusal_checks.hpp"
+
+namespace fs = std::filesystem;
+using namespace pbr::test;
+using Run = PbrRun;
+
+TEST_CASE("hostile outputs: an unknown capture extension fails before rendering with exit 2 naming the file") {
+  const TempDir dir;
+  const std::vector<std::vector<std::string>> cases = {
+      tinyRender({"--out", dir.file("f.jpg")}),
+      tinyRender({"--hdr", dir.file("f.hdr")}),
+      tinyRender({"--hdr", "/dev/full"}),  // a device says nothing of the format
+      {"reference", "--size", "32x18", "--hdr", dir.file("f.png")},
+      {"view", "--frames", "1", "--screenshot", dir.file("f.jpg")},
+  };
+  for (const auto& args : cases) {
+    const std::string& path = args[args.size() - 1];
+    CAPTURE(path);
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, path);
+    CHECK(run.out.empty());
+    if (path != "/dev/full") CHECK_FALSE(fs::exists(path));
+  }
+}
+
+TEST_CASE("hostile outputs: an option missing its value is named, not the option after it") {
+  const TempDir dir;
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"render", "--lights", "--size", "160x90"}, "--lights expects a value (N)"},
+      {{"render", "--size", "160x90", "--out"}, "--out expects a value (F.png)"},
+      {{"render", "--out=", "--size", "160x90"}, "--out expects a value (F.png), got an empty one"},
+      {{"render", "--scene", ""}, "--scene expects a value (NAME|FILE), got an empty one"},
+      {{"render", "--lights", "8", "--lights=16"}, "--lights is given more than once"},
+      {{"render", "--stats", "--stats"}, "--stats is given more than once"},
+      {{"bench", "--csv", "--json", "b.json"}, "--csv expects a value (F)"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.message);
+    const Run run = runPbr(dir, c.args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, c.message);
+    CHECK(run.out.empty());
+  }
+}
+
+TEST_CASE("hostile outputs: the frame-size check names the option and the limit it is over") {
+  pbr::RendererConfig lean;
+  CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 8 + 32);
+  pbr::RendererConfig wide;
+  wide.gbuffer = pbr::GBufferPrecision::Float;
+  wide.hdrFormat = pbr::HdrFormat::Rgba32f;
+  CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 8 + 32);
+
+  const pbr::FrameLimits limits{8192, 1'000'000'000};
+  CHECK_NOTHROW(pbr::checkFrameSize(8192, 16, "--size", 68, limits));
+  CHECK_THROWS_WITH(pbr::checkFrameSize(8193, 16, "--size", 68, limits),
+                    "--size 8193x16: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
+  CHECK_THROWS_WITH(pbr::checkFrameSize(16, 8193, "--pair-size", 68, limits),
+                    "--pair-size 16x8193: over the OpenGL limit of 8192 pixels a side (GL_MAX_TEXTURE_SIZE)");
+  // 4000 x 4000 x 68 = 1.088 GB against 1 GB.
+  CHECK_THROWS_WITH(pbr::checkFrameSize(4000, 4000, "--size", 68, limits),
+                    "--size 4000x4000: the frame needs about 1.1 GB (68 bytes per pixel), over the 1.0 GB of memory "
+                    "available");
+  CHECK_NOTHROW(pbr::checkFrameSize(3800, 3800, "--size", 68, limits));
+}
