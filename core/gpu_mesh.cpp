@@ -1,13 +1,21 @@
 #include "core/gpu_mesh.hpp"
 
+#include <atomic>
 #include <cstddef>
 
 namespace pbr {
+
+namespace {
+std::atomic<size_t> meshUploads{0};
+}  // namespace
+
+size_t gpuMeshUploads() { return meshUploads.load(); }
 
 GpuMesh::GpuMesh(const MeshData& data)
     : vertices_(data.vertices.size() * sizeof(Vertex), data.vertices.data(), 0),
       indices_(data.indices.size() * sizeof(uint32_t), data.indices.data(), 0),
       indexCount_(static_cast<GLsizei>(data.indices.size())) {
+  ++meshUploads;
   const GLuint vao = vao_.id();
   glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao, indices_.id());

@@ -1,10 +1,15 @@
 #pragma once
+#include <cstddef>
+
 #include "core/gl_objects.hpp"
 #include "core/mesh.hpp"
 
 namespace pbr {
 
 // A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv, 3 tangent) and 32-bit indices.
+// Meshes uploaded by this process so far: how tests check that a resize uploads no scene data again.
+size_t gpuMeshUploads();
+
 class GpuMesh {
  public:
   explicit GpuMesh(const MeshData& data);

@@ -1,12 +1,15 @@
 #include "core/gpu_texture.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
 namespace pbr {
 
 namespace {
+
+std::atomic<size_t> textureUploads{0};
 
 const TextureData& checked(const TextureData& data) {
   GLint maxSize = 0;
@@ -30,10 +33,13 @@ int mipLevelCount(int width, int height) {
   return levels;
 }
 
+size_t gpuTextureUploads() { return textureUploads.load(); }
+
 GpuTexture::GpuTexture(const TextureData& data)
     : texture_(data.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, checked(data).width, data.height,
                mipLevelCount(data.width, data.height)),
       sampler_(data.wrapS, data.wrapT, data.minFilter, data.magFilter) {
+  ++textureUploads;
   // Rows go up from the top of the image, so glTF's uv (0,0), the image's top-left corner, is texel (0,0).
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(texture_.id(), 0, 0, 0, data.width, data.height, GL_RGBA, GL_UNSIGNED_BYTE, data.rgba.data());

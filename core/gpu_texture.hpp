@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+
 #include "core/gl_objects.hpp"
 #include "core/scene.hpp"
 
@@ -9,6 +11,9 @@ int mipLevelCount(int width, int height);
 
 // A decoded material image uploaded once, as SRGB8_ALPHA8 or RGBA8 with its full mip chain, and a sampler
 // holding its glTF wrap modes and filters.
+// Textures uploaded by this process so far: how tests check that a resize uploads no scene data again.
+size_t gpuTextureUploads();
+
 class GpuTexture {
  public:
   // Throws std::runtime_error naming the image if its pixels do not match its size or exceed the GL limit.

@@ -1,5 +1,7 @@
 #include "renderer/renderer.hpp"
 
+#include "core/gpu_mesh.hpp"
+#include "core/gpu_texture.hpp"
 #include "core/readback.hpp"
 
 namespace pbr {
@@ -8,20 +10,16 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
                    const RendererConfig& config)
     : sceneData_(scene),
       config_(config),
-      counters_{1, 1, 0},
       scene_(shaders, scene, config.precomputeProfiler),
       targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config)),
       camera_(scene.camera),
       frameData_(makeFrameBlock(camera_, width, height)),
-      frame_(frameData_) {
-  counters_.programsCompiled = scene_.programs.compiled();
-}
+      frame_(frameData_) {}
 
 void Renderer::resize(int width, int height) {
   targets_.reset();  // free the old targets before allocating the new ones
   targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_);
-  ++counters_.targetBuilds;
-  counters_.programsCompiled = scene_.programs.compiled();
+  ++targetBuilds_;
   setCamera(camera_);
 }
 
@@ -88,7 +86,10 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
   runPassList(passes, profiler);
   profiler.endFrame();
   lastOptions_ = options;
-  counters_.programsCompiled = scene_.programs.compiled();
+}
+
+RendererCounters Renderer::counters() const {
+  return {targetBuilds_, scene_.programs.compiled(), gpuMeshUploads(), gpuTextureUploads()};
 }
 
 WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, int frames) {

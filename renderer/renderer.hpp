@@ -55,11 +55,12 @@ struct WarmUpReport {
   uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list at its limit)
 };
 
-// How often each lifetime's objects were built, for checking that a resize rebuilds only what the size owns.
+// What has been built so far, for checking that a resize rebuilds only what the size owns.
 struct RendererCounters {
-  int sceneBuilds = 0;          // SceneResources: uploads, IBL precomputation
-  int targetBuilds = 0;         // FrameTargets
+  int targetBuilds = 0;         // FrameTargets of this renderer
   size_t programsCompiled = 0;  // programs in the scene's cache
+  size_t meshUploads = 0;       // meshes and textures uploaded by the whole process (gpuMeshUploads)
+  size_t textureUploads = 0;
 };
 
 // The frame: scene resources (built once), frame targets (rebuilt on resize) and the pass list that runs over them
@@ -98,7 +99,7 @@ class Renderer {
   const IblMaps* ibl() const { return scene_.ibl.get(); }  // null without an environment
   const UniformBuffer<FrameBlock>& frameUniforms() const { return frame_; }
   const Texture& ldr() const { return targets_->ldr; }  // the final RGBA8 frame, rows bottom-up as GL stores them
-  const RendererCounters& counters() const { return counters_; }
+  RendererCounters counters() const;
 
   int width() const { return targets_->width; }
   int height() const { return targets_->height; }
@@ -106,7 +107,7 @@ class Renderer {
  private:
   const Scene& sceneData_;
   RendererConfig config_;
-  RendererCounters counters_;
+  int targetBuilds_ = 1;
   SceneResources scene_;
   std::unique_ptr<FrameTargets> targets_;
   Camera camera_;
