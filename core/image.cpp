@@ -66,9 +66,12 @@ namespace {
 // stb_image builds each JPEG Huffman table into fixed arrays of 257 entries without checking that the 16 code
 // counts sum to at most 256 (ITU T.81 B.2.4.2), so a corrupt DHT segment writes past them. Walks the marker
 // segments (skipping entropy-coded data, stuffed bytes and restart markers) and returns what is wrong, or "".
+// stb takes any run of 0xFF fill bytes before a marker, the start-of-image marker included.
 std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
-  if (size < 2 || b[0] != 0xFF || b[1] != 0xD8) return "";  // not a JPEG
-  for (size_t pos = 2; pos + 1 < size;) {
+  size_t start = 0;
+  while (start < size && b[start] == 0xFF) ++start;
+  if (start == 0 || start == size || b[start] != 0xD8) return "";  // not a JPEG
+  for (size_t pos = start + 1; pos + 1 < size;) {
     if (b[pos] != 0xFF) {
       ++pos;
       continue;

@@ -36,6 +36,15 @@ TEST_CASE("image decode: a JPEG Huffman table with more than 256 codes is refuse
   CHECK(decodeError({0xFF, 0xD8, 0xFF, 0xD9}).rfind("t.jpg: cannot decode image", 0) == 0);
 }
 
+TEST_CASE("image decode: fill bytes before the JPEG start-of-image marker do not hide a bad Huffman table") {
+  // stb_image reads any run of 0xFF before a marker, SOI too, so this is a JPEG to it (a fuzzer's find in CI).
+  std::vector<unsigned char> jpeg = {0xFF, 0xFF, 0xFF, 0xD8, 0xFF, 0xC4, 0x00, 0x13, 0x00, 0xA2, 0x80};
+  jpeg.resize(jpeg.size() + 14, 0);
+  CHECK(decodeError(jpeg) == "t.jpg: cannot decode image: a JPEG Huffman table with 290 codes (at most 256)");
+  CHECK(decodeError({0xFF, 0xFF, 0xD8, 0xFF, 0xC4, 0x00, 0x12, 0x00, 0xA2, 0x80}) ==
+        "t.jpg: cannot decode image: truncated JPEG marker segment");
+}
+
 TEST_CASE("image decode: the shared models' JPEG and PNG textures decode") {
   const std::filesystem::path assets(pbr::assetDir());
   if (!std::filesystem::exists(assets / "DamagedHelmet")) {
