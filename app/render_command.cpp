@@ -93,8 +93,10 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   if (options.culling == Culling::Clustered) {
     const glm::uvec3 d = renderer.clusters().dims();
     if (options.stats) std::printf(", %u survive frustum culling", s.visibleLights);
-    std::printf("\nclusters: %ux%ux%u, %u non-empty, %.1f lights per non-empty cluster (max %u), %llu index entries\n",
-                d.x, d.y, d.z, s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
+    std::printf("\nclusters: %ux%ux%u, %u holding a surface (%.1f %%), %u non-empty, %.1f lights per non-empty "
+                "cluster (max %u), %llu index entries\n",
+                d.x, d.y, d.z, s.activeClusters, s.clusters ? 100.0 * s.activeClusters / s.clusters : 0.0,
+                s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
                 static_cast<unsigned long long>(s.indexEntries));
     if (s.overflowedClusters) {
       std::printf("clusters: %u clusters did not fit the light index list and were shaded by brute force\n",

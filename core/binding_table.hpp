@@ -5,8 +5,8 @@
 
 namespace pbr {
 
-// The binding spaces of GL: a uniform buffer, a storage buffer and a texture unit may share an index.
-enum class BindingKind { UniformBuffer, StorageBuffer, TextureUnit };
+// The binding spaces of GL: a uniform buffer, a storage buffer, a texture unit and an image unit may share an index.
+enum class BindingKind { UniformBuffer, StorageBuffer, TextureUnit, ImageUnit };
 
 // One binding point, named once for both languages: C++ binds at `index`, GLSL reads the `define` its program is
 // compiled with (`layout(binding = FRAME_UBO)`). Each module declares the points it owns next to what it binds.

@@ -19,11 +19,8 @@ struct ClusterHeader {
   uint32_t count;
 };
 static_assert(sizeof(ClusterHeader) == 8, "ClusterHeader must match its std430 layout");
-struct ClusterBounds {
-  glm::vec4 minView;  // view-space AABB of the froxel, padded
-  glm::vec4 maxView;
-};
-static_assert(sizeof(ClusterBounds) == 32, "ClusterBounds must match its std430 layout");
+// Words per occupancy box in shaders/lighting/clusters.glsl (clusterBoxBase): a view-space AABB as ordered bits.
+constexpr uint32_t kOccupancyWords = 6;
 // One light of cluster_lights.comp's output: its view-space bounding sphere (xyz centre, w radius).
 using ClusterViewLight = glm::vec4;
 
@@ -35,7 +32,8 @@ struct ClusterStatus {
   uint32_t visibleLights;
   uint32_t overflowed;
   uint32_t capacity;
-  uint32_t unused[2];
+  uint32_t activeClusters;  // clusters holding a surface
+  uint32_t unused;
 };
 static_assert(sizeof(ClusterStatus) == 32, "ClusterStatus must match its std430 layout");
 

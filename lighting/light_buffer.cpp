@@ -2,11 +2,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include <stdexcept>
-#include <string>
-
 #include "lighting/lighting_bindings.hpp"
-#include "core/context.hpp"
 
 namespace pbr {
 
@@ -15,13 +11,6 @@ GpuLight toGpuLight(const PointLight& l) {
 }
 
 void LightBuffer::upload(const std::vector<PointLight>& lights) {
-  if (lights.size() > kSoftwareRendererMaxLights) {
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (renderer && isSoftwareRenderer(renderer)) {
-      throw std::runtime_error(std::to_string(lights.size()) + " lights are more than " + renderer + " can shade (at most " +
-                               std::to_string(kSoftwareRendererMaxLights) + ": it stops shader loops after 65535 iterations)");
-    }
-  }
   std::vector<GpuLight> packed;
   packed.reserve(lights.size());
   for (const PointLight& l : lights) packed.push_back(toGpuLight(l));

@@ -18,15 +18,9 @@ static_assert(sizeof(GpuLight) == 32, "GpuLight must match its std430 layout");
 
 GpuLight toGpuLight(const PointLight& light);
 
-// llvmpipe ends a shader invocation after 65535 loop iterations (its guard against endless loops). The light
-// loops are unrolled to stay below that up to this many lights; past it lights would be dropped without a word.
-constexpr size_t kSoftwareRendererMaxLights = 400000;
-
 // The frame's point lights in a shader storage buffer, reallocated only when it must grow.
 class LightBuffer {
  public:
-  // Throws std::runtime_error when the current context is a software renderer and there are more lights than
-  // it can shade (kSoftwareRendererMaxLights).
   void upload(const std::vector<PointLight>& lights);
   void bind() const;
   unsigned count() const { return count_; }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "lighting/lighting_bindings.hpp"
 
@@ -14,7 +16,21 @@ ShaderDefines assignDefines(bool fill, bool stats) {
   return concat({{"ASSIGN_FILL", fill ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}}, lightingBindingDefines());
 }
 
-GLuint groupsFor(uint32_t items, uint32_t groupSize) { return (items + groupSize - 1) / groupSize; }
+GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
+
+// A storage buffer of `bytes` (at least one word, so that it can be bound), all zero.
+std::unique_ptr<Buffer> zeroedBuffer(uint64_t bytes) {
+  auto buffer = std::make_unique<Buffer>(std::max<uint64_t>(bytes, 4), nullptr, 0);
+  const uint32_t zero = 0;
+  glClearNamedBufferData(buffer->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  return buffer;
+}
+
+std::string mebibytes(uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MiB", bytes / double(1 << 20));
+  return text;
+}
 
 }  // namespace
 
@@ -24,18 +40,19 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) 
 
 LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config)
     : config_(config),
-      boundsProgram_(programs.compute("lighting/cluster_bounds.comp", lightingBindingDefines())),
-      viewLightsProgram_(programs.compute("lighting/cluster_lights.comp", lightingBindingDefines())),
-      tilesProgram_(programs.compute("lighting/cluster_tiles.comp", lightingBindingDefines())),
+      occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
+      lightsProgram_(programs.compute("lighting/cluster_lights.comp", lightingBindingDefines())),
       countProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
       countStatsProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       fillProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
+      clearProgram_(programs.compute("lighting/cluster_clear.comp", lightingBindingDefines())),
       status_(sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  const uint64_t limitBytes = std::min<uint64_t>(config_.maxIndexBytes, static_cast<uint64_t>(std::max<GLint64>(maxBlock, 4)));
+  maxBlockBytes_ = static_cast<uint64_t>(std::max<GLint64>(maxBlock, 4));
+  const uint64_t limitBytes = std::min<uint64_t>(config_.maxIndexBytes, maxBlockBytes_);
   maxCapacity_ = static_cast<uint32_t>(std::min<uint64_t>(limitBytes / 4, 0xFFFFFFFFull));
 }
 
@@ -47,13 +64,14 @@ LightClusters::~LightClusters() {
 
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
-  for (const auto* b : {&bounds_, &headers_, &indices_, &visible_, &viewLights_, &tileMasks_}) {
+  for (const auto* b : {&headers_, &cursors_, &occupancy_, &indices_, &visible_, &viewLights_, &tileMasks_,
+                        &tileWords_}) {
     total += *b ? (*b)->size() : 0;
   }
   return total;
 }
 
-void LightClusters::rebuildGrid(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame) {
+void LightClusters::rebuildGrid(const FrameBlock& f) {
   const uint32_t w = static_cast<uint32_t>(f.viewport.x), h = static_cast<uint32_t>(f.viewport.y);
   const uint32_t tile = static_cast<uint32_t>(std::max(config_.tileSize, 1));
   dims_ = glm::uvec3((w + tile - 1) / tile, (h + tile - 1) / tile, static_cast<uint32_t>(std::max(config_.slices, 1)));
@@ -63,17 +81,14 @@ void LightClusters::rebuildGrid(const FrameBlock& f, const UniformBuffer<FrameBl
   blockData_.dims = glm::uvec4(dims_, tile);
   blockData_.slicing = glm::vec4(nearPlane, farPlane, scale, -scale * std::log(nearPlane));
   blockData_.counts = glm::uvec4(0, clusters, 0, 0);
-  bounds_ = std::make_unique<Buffer>(clusters * sizeof(ClusterBounds), nullptr, 0);
   headers_ = std::make_unique<Buffer>(clusters * sizeof(ClusterHeader), nullptr, 0);
+  cursors_ = std::make_unique<Buffer>(clusters * sizeof(uint32_t), nullptr, 0);
+  const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
+  occupancy_ = std::make_unique<Buffer>((clusters + tiles) * kOccupancyWords * sizeof(uint32_t), nullptr, 0);
+  // The masks' layout depends on the tile count: new ones start empty.
+  tileMasks_.reset();
+  tileWords_.reset();
   block_.update(blockData_);
-
-  boundsProgram_.use();
-  frame.bind(kFrameUbo.index);
-  block_.bind(lighting_binding::kClusterUbo.index);
-  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterBoundsSsbo.index);
-  glDispatchCompute(groupsFor(clusters, 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
   gridKey_ = f.viewport;
   gridKey2_ = f.projParams;
   // A first guess of 32 lights per cluster; the measured demand corrects it from the next frame on.
@@ -107,13 +122,21 @@ void LightClusters::ensureCapacity(uint64_t entries) {
   capacity_ = static_cast<uint32_t>(entries);
 }
 
-// Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound.
+// Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound. The masks are
+// all zero between frames (cluster_clear.comp), whatever light count set them.
 void LightClusters::ensureLightBuffers(uint32_t lights) {
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y, words = (std::max(lights, 1u) + 31u) / 32u;
-  // View lights are written in whole 32-light words, so a mask word never reads past the buffer.
-  const uint64_t viewBytes = words * 32 * sizeof(ClusterViewLight), maskBytes = tiles * words * sizeof(uint32_t);
+  const uint64_t viewBytes = uint64_t(std::max(lights, 1u)) * sizeof(ClusterViewLight);
+  const uint64_t maskBytes = tiles * words * sizeof(uint32_t), summaryBytes = tiles * ((words + 31) / 32) * sizeof(uint32_t);
+  if (maskBytes > maxBlockBytes_) {
+    throw std::runtime_error(std::to_string(lights) + " lights over " + std::to_string(tiles) + " screen tiles need " +
+                             mebibytes(maskBytes) + " of tile masks, more than the OpenGL driver's largest storage "
+                             "buffer (" + mebibytes(maxBlockBytes_) + "): use fewer lights, a smaller frame or a "
+                             "larger --tile");
+  }
   if (!viewLights_ || viewLights_->size() < viewBytes) viewLights_ = std::make_unique<Buffer>(viewBytes, nullptr, 0);
-  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = std::make_unique<Buffer>(maskBytes, nullptr, 0);
+  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = zeroedBuffer(maskBytes);
+  if (!tileWords_ || tileWords_->size() < summaryBytes) tileWords_ = zeroedBuffer(summaryBytes);
 }
 
 void LightClusters::growFromPastDemand() {
@@ -134,47 +157,47 @@ void LightClusters::growTo(uint32_t demand) {
 }
 
 void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
-                           bool stats) {
-  if (!bounds_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f, frame);
+                           const Texture& depth, bool stats) {
+  if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
   growFromPastDemand();
   ensureLightBuffers(lights.count());
   const uint32_t clusters = blockData_.counts.y;
-  const uint32_t tiles = dims_.x * dims_.y, words = (lights.count() + 31u) / 32u;
+  const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
+  const uint64_t summaryWords = ((lights.count() + 31u) / 32u + 31u) / 32u;
   blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
-  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) {
-    visible_ = std::make_unique<Buffer>(lights.count() * 4ull, nullptr, 0);
-    const uint32_t zero = 0;
-    glClearNamedBufferData(visible_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  }
+  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) visible_ = zeroedBuffer(lights.count() * 4ull);
+  const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
+  glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
 
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kClusterUbo.index);
   lights.bind();
-  bounds_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterBoundsSsbo.index);
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
+  cursors_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterCursorSsbo.index);
+  occupancy_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterOccupancySsbo.index);
   indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
   status_.bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterStatusSsbo.index);
   viewLights_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewLightsSsbo.index);
   tileMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterTileMasksSsbo.index);
+  tileWords_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterTileWordsSsbo.index);
   if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightVisibleSsbo.index);
+  glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
 
-  viewLightsProgram_.use();
+  occupancyProgram_.use();
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8), groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  lightsProgram_.use();
   glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  tilesProgram_.use();
-  glDispatchCompute(groupsFor(tiles * words, 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  // One workgroup per tile and 8 slices (cluster_assign.comp).
-  const GLuint sliceGroups = groupsFor(dims_.z, 8);
-  (stats ? countStatsProgram_ : countProgram_).use();
-  glDispatchCompute(tiles, sliceGroups, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatchAssign(stats ? countStatsProgram_ : countProgram_, lights.count());
   (stats ? scanStatsProgram_ : scanProgram_).use();
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  fillProgram_.use();
-  glDispatchCompute(tiles, sliceGroups, 1);
+  dispatchAssign(fillProgram_, lights.count());
+  clearProgram_.use();
+  glDispatchCompute(groupsFor(tiles * summaryWords, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   PendingStatus& slot = pending_[pendingNext_];
@@ -183,6 +206,20 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   if (!slot.buffer) slot.buffer = std::make_unique<Buffer>(sizeof(ClusterStatus), nullptr, 0);
   glCopyNamedBufferSubData(status_.id(), slot.buffer->id(), 0, 0, sizeof(ClusterStatus));
   slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+// The count or fill pass over the lights in chunks of kAssignChunkLights, in ascending order; one workgroup per
+// tile and 8 slices (cluster_assign.comp). At least one chunk, so that a frame without lights still writes its
+// (empty) headers.
+void LightClusters::dispatchAssign(const Program& program, uint32_t lights) {
+  program.use();
+  const uint32_t chunks = std::max(1u, (lights + kAssignChunkLights - 1) / kAssignChunkLights);
+  for (uint32_t c = 0; c < chunks; ++c) {
+    const uint32_t begin = c * kAssignChunkLights, end = std::min(lights, begin + kAssignChunkLights);
+    glProgramUniform4ui(program.id(), 0, begin, end, c == 0 ? 1u : 0u, c + 1 == chunks ? 1u : 0u);
+    glDispatchCompute(dims_.x * dims_.y, groupsFor(dims_.z, 8), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
 }
 
 void LightClusters::bindForLighting() const {

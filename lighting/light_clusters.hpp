@@ -27,12 +27,17 @@ struct ClusterConfig {
 // slice k covers [near (far/near)^(k/S), near (far/near)^((k+1)/S)].
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices);
 
-// Clustered light culling: froxel bounds (rebuilt when the projection or resolution changes), then per frame
-// the lights in view space, a bit mask per screen tile of the lights reaching its frustum column, a count pass
-// testing each cluster against its tile's lights only, a prefix sum into list offsets and a fill pass writing
-// one global, sorted light-index list. The list is sized from the measured demand: a frame whose demand exceeds
-// the list's capacity shades the clusters that do not fit by brute force (exact, just slower) and the list
-// grows for the next frame.
+// Lights per dispatch of the count and fill passes: their loops stay under llvmpipe's 65535 iterations per
+// invocation (cluster_assign.comp) at any light count.
+constexpr uint32_t kAssignChunkLights = 131072;
+
+// Clustered light culling, per frame: the view-space boxes of the surfaces each cluster and each screen tile
+// hold (from the depth buffer), each light in view space setting its bit in the masks of the tiles its projected
+// sphere reaches and whose box it touches (cost: lights x tiles touched), a count pass testing each cluster that
+// holds a surface against its tile's lights only, a prefix sum into list offsets and a fill pass writing one
+// global, sorted light-index list, and a pass clearing the mask words set. The list is sized from the measured
+// demand: a frame whose demand exceeds the list's capacity shades the clusters that do not fit by brute force
+// (exact, just slower) and the list grows for the next frame.
 class LightClusters {
  public:
   LightClusters(ProgramCache& programs, const ClusterConfig& config);
@@ -40,9 +45,11 @@ class LightClusters {
   LightClusters(const LightClusters&) = delete;
   LightClusters& operator=(const LightClusters&) = delete;
 
-  // Culls `lights` into clusters for this frame; `frameData` is what `frame` holds.
+  // Culls `lights` into the clusters holding the surfaces of `depth` (the G-buffer's reversed-Z depth) for this
+  // frame; `frameData` is what `frame` holds. Throws std::runtime_error when the tile masks for this many lights
+  // would exceed the driver's largest storage buffer.
   void assign(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
-              bool stats);
+              const Texture& depth, bool stats);
   // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
   void bindForLighting() const;
 
@@ -53,7 +60,8 @@ class LightClusters {
   bool growToDemand();
 
   // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
-  // a cluster that did not fit the index list reads as empty. Waits for the GPU: for tests and tools.
+  // a cluster that did not fit the index list, or holds no surface, reads as empty. Waits for the GPU: for tests
+  // and tools.
   std::vector<std::vector<uint32_t>> readLists() const;
 
   glm::uvec3 dims() const { return dims_; }
@@ -61,21 +69,24 @@ class LightClusters {
   size_t bytes() const;
 
  private:
-  void rebuildGrid(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame);
+  void rebuildGrid(const FrameBlock& frameData);
   void growFromPastDemand();
   void growTo(uint32_t demand);
   void ensureCapacity(uint64_t entries);
   void ensureLightBuffers(uint32_t lights);
 
   ClusterConfig config_;
-  const Program &boundsProgram_, &viewLightsProgram_, &tilesProgram_, &countProgram_, &countStatsProgram_,
-      &scanProgram_, &scanStatsProgram_, &fillProgram_;
+  void dispatchAssign(const Program& program, uint32_t lights);
+
+  const Program &occupancyProgram_, &lightsProgram_, &countProgram_, &countStatsProgram_,
+      &scanProgram_, &scanStatsProgram_, &fillProgram_, &clearProgram_;
   UniformBuffer<ClusterBlock> block_;
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for
   glm::vec4 gridKey2_{0.0f};
-  std::unique_ptr<Buffer> bounds_, headers_, indices_, visible_, viewLights_, tileMasks_;
+  std::unique_ptr<Buffer> headers_, cursors_, occupancy_, indices_, visible_, viewLights_, tileMasks_, tileWords_;
+  uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   Buffer status_;
   uint32_t capacity_ = 0;
   uint32_t maxCapacity_ = 0;

@@ -9,9 +9,10 @@ ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
   // Built and checked once: the lighting pass asks for its program every frame.
   static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
-                         kLightVisibleSsbo, kClusterBoundsSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
-                         kClusterViewLightsSsbo, kClusterTileMasksSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
-                         kDepthUnit, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
+                         kLightVisibleSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
+                         kClusterViewLightsSsbo, kClusterTileMasksSsbo, kClusterTileWordsSsbo, kClusterOccupancySsbo,
+                         kClusterCursorSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
+                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
   return defines;
 }
 

@@ -12,16 +12,21 @@ constexpr BindingPoint kLightSsbo{"LIGHT_SSBO", BindingKind::StorageBuffer, 0};
 constexpr BindingPoint kClusterSsbo{"CLUSTER_SSBO", BindingKind::StorageBuffer, 1};
 constexpr BindingPoint kLightIndexSsbo{"LIGHT_INDEX_SSBO", BindingKind::StorageBuffer, 2};
 constexpr BindingPoint kLightVisibleSsbo{"LIGHT_VISIBLE_SSBO", BindingKind::StorageBuffer, 3};
-constexpr BindingPoint kClusterBoundsSsbo{"CLUSTER_BOUNDS_SSBO", BindingKind::StorageBuffer, 4};
 constexpr BindingPoint kClusterStatusSsbo{"CLUSTER_STATUS_SSBO", BindingKind::StorageBuffer, 5};
 constexpr BindingPoint kLightingStatsSsbo{"LIGHTING_STATS_SSBO", BindingKind::StorageBuffer, 6};
 constexpr BindingPoint kClusterViewLightsSsbo{"CLUSTER_VIEW_LIGHTS_SSBO", BindingKind::StorageBuffer, 7};
 constexpr BindingPoint kClusterTileMasksSsbo{"CLUSTER_TILE_MASKS_SSBO", BindingKind::StorageBuffer, 8};
+constexpr BindingPoint kClusterTileWordsSsbo{"CLUSTER_TILE_WORDS_SSBO", BindingKind::StorageBuffer, 9};
+constexpr BindingPoint kClusterOccupancySsbo{"CLUSTER_OCCUPANCY_SSBO", BindingKind::StorageBuffer, 10};
+constexpr BindingPoint kClusterCursorSsbo{"CLUSTER_CURSOR_SSBO", BindingKind::StorageBuffer, 11};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.
 constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};
 constexpr BindingPoint kMaterialUnit{"SURFACE_MATERIAL_UNIT", BindingKind::TextureUnit, 2};
 constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit, 3};
+// The lighting pass's radiance target, and its running sum over light chunks (LightingPass::render).
+constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 0};
+constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding

@@ -1,5 +1,6 @@
 #include "lighting/lighting_pass.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,7 +22,8 @@ std::pair<const char*, const char*> imageFormat(unsigned radianceFormat) {
 
 }  // namespace
 
-ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
+ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat,
+                                        bool chunked) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   const auto [qualifier, maximum] = imageFormat(radianceFormat);
@@ -34,17 +36,18 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"CLUSTERED", flag(clustered)});
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
+  defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   return defines;
 }
 
-const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat) {
+const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked) {
   return programs_.compute("lighting/deferred.comp",
-                           concat(permutation(o, clustered, radianceFormat), lightingBindingDefines()));
+                           concat(permutation(o, clustered, radianceFormat, chunked), lightingBindingDefines()));
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
                           const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
-                          const LightClusters* clusters) {
+                          const LightClusters* clusters, const Texture* partialRadiance) {
   // Made (on first use) before anything is bound for this pass: making a table dispatches a pass of its own.
   const bool ibl = options.model == ShadingModel::Pbr && options.environment;
   const Texture* ambient = options.model == ShadingModel::Pbr && !ibl
@@ -53,7 +56,15 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
-  program(options, clusters != nullptr, radiance.format()).use();
+  const uint32_t chunks = (lights.count() + kLightsPerDispatch - 1) / kLightsPerDispatch;
+  const bool chunked = chunks > 1;
+  if (chunked && (!partialRadiance || partialRadiance->format() != GL_RGBA32F ||
+                  partialRadiance->width() != radiance.width() || partialRadiance->height() != radiance.height())) {
+    throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
+                           std::to_string(kLightsPerDispatch) + " lights");
+  }
+  const Program& shader = program(options, clusters != nullptr, radiance.format(), chunked);
+  shader.use();
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);
   lights.bind();
@@ -74,9 +85,21 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   glBindTextureUnit(lighting_binding::kNormalUnit.index, surface.normal.id());
   glBindTextureUnit(lighting_binding::kMaterialUnit.index, surface.material.id());
   glBindTextureUnit(lighting_binding::kDepthUnit.index, surface.depth.id());
-  glBindImageTexture(0, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE, radiance.format());
+  glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                     radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  glDispatchCompute(groupsX, groupsY, 1);
+  if (!chunked) {
+    glDispatchCompute(groupsX, groupsY, 1);
+  } else {
+    glBindImageTexture(lighting_binding::kPartialRadianceImage.index, partialRadiance->id(), 0, GL_FALSE, 0,
+                       GL_READ_WRITE, GL_RGBA32F);
+    for (uint32_t c = 0; c < chunks; ++c) {
+      glProgramUniform4ui(shader.id(), 0, c * kLightsPerDispatch, (c + 1) * kLightsPerDispatch, c == 0 ? 1u : 0u,
+                          c + 1 == chunks ? 1u : 0u);
+      glDispatchCompute(groupsX, groupsY, 1);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+  }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
 }

@@ -42,6 +42,10 @@ struct LightingOptions {
   const EnvironmentMaps* environment = nullptr;
 };
 
+// Lights (or list entries) one dispatch of the lighting pass loops over at most: the loop, unrolled by 8, stays
+// under llvmpipe's 65535 iterations per invocation. More lights take several dispatches (LIGHT_CHUNKS).
+constexpr uint32_t kLightsPerDispatch = 262144;
+
 struct PairCounts {
   uint64_t evaluated = 0;
   uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
@@ -58,18 +62,21 @@ class LightingPass {
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
   // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
-  // surfaces' emitted radiance and leaves with the shaded frame: emission plus reflected light.
+  // surfaces' emitted radiance and leaves with the shaded frame: emission plus reflected light. Over
+  // kLightsPerDispatch lights, the running sums go through `partialRadiance` (RGBA32F, the frame's size).
   void render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
-              const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters);
+              const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
+              const Texture* partialRadiance);
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
 
   // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
-  static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat);
+  static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
+                                   bool chunked = false);
 
  private:
-  const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat);
+  const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked);
 
   ProgramCache& programs_;  // permutations compiled on first use
   UniformBuffer<LightingBlock> block_;

@@ -23,4 +23,9 @@ FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererC
       ldr(GL_RGBA8, w, h),
       clusters(programs, config.clusters) {}
 
+const Texture& FrameTargets::partialRadiance() {
+  if (!partialRadiance_) partialRadiance_ = std::make_unique<Texture>(GL_RGBA32F, width, height);
+  return *partialRadiance_;
+}
+
 }  // namespace pbr

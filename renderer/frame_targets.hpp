@@ -1,4 +1,6 @@
 #pragma once
+#include <memory>
+
 #include "core/gl_objects.hpp"
 #include "core/program_cache.hpp"
 #include "gbuffer/gbuffer.hpp"
@@ -20,6 +22,13 @@ struct FrameTargets {
   GBuffer gbuffer;
   Texture ldr;  // the final RGBA8 frame, rows bottom-up as GL stores them
   LightClusters clusters;
+
+  // RGBA32F running sums of the lighting pass when it needs several dispatches (over kLightsPerDispatch lights):
+  // made on first use, as only such frames need its 16 bytes per pixel.
+  const Texture& partialRadiance();
+
+ private:
+  std::unique_ptr<Texture> partialRadiance_;
 };
 
 }  // namespace pbr

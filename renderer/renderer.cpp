@@ -38,8 +38,9 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
   if (clustered) {
-    passes.push_back({"cluster", {R::Lights, R::Camera}, {R::ClusterLists},
-                      [this, &t, stats = options.stats] { t.clusters.assign(frameData_, frame_, scene_.lights, stats); }});
+    passes.push_back({"cluster", {R::Lights, R::Camera, R::GBuffer}, {R::ClusterLists}, [this, &t, stats = options.stats] {
+                        t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth, stats);
+                      }});
   }
   std::vector<R> lightingReads = {R::GBuffer, R::Radiance, R::Lights, R::Camera};
   if (clustered) lightingReads.push_back(R::ClusterLists);
@@ -50,8 +51,9 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                       const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
                       const LightingOptions lighting{options.model, options.variant, sceneData_.ambient, options.stats,
                                                      ibl ? &maps : nullptr};
+                      const Texture* partial = scene_.lights.count() > kLightsPerDispatch ? &t.partialRadiance() : nullptr;
                       scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
-                                             clustered ? &t.clusters : nullptr);
+                                             clustered ? &t.clusters : nullptr, partial);
                     }});
   passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options] {
                       scene_.post.render(t.hdr, t.ldr, {options.exposure, options.model == ShadingModel::Pbr});
@@ -115,6 +117,7 @@ LightStats Renderer::lightStats() const {
     const ClusterStatus status = clusters.readStatus();
     const glm::uvec3 d = clusters.dims();
     s.clusters = d.x * d.y * d.z;
+    s.activeClusters = status.activeClusters;
     s.nonEmptyClusters = status.nonEmpty;
     s.maxPerCluster = status.maxPerCluster;
     s.indexEntries = status.demand;

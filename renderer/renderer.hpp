@@ -32,6 +32,7 @@ struct LightStats {
   uint32_t lights = 0;
   uint32_t visibleLights = 0;       // lights touching at least one cluster (frustum-culled survivors)
   uint32_t clusters = 0;
+  uint32_t activeClusters = 0;     // clusters holding a surface: the only ones given lights
   uint32_t nonEmptyClusters = 0;
   uint32_t maxPerCluster = 0;
   uint64_t indexEntries = 0;        // entries of the light-index list the frame needed

@@ -1,11 +1,13 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/builtin_scenes.hpp"
 #include "lighting/light_clusters.hpp"
+#include "lighting/lighting_pass.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 
@@ -129,7 +131,7 @@ TEST_CASE("clusters: 65536 lights with one cluster touched by every light render
 TEST_CASE("clusters: an index list over its memory limit falls back to brute force for the clusters that do not fit") {
   PBR_REQUIRE_GL();
   Scene scene = clusterScene();
-  scene.lights = randomLights(512, 5);
+  scene.lights = randomLights(2048, 5);
   ClusterConfig tiny;
   tiny.maxIndexBytes = 4096;
   FrameOptions options;
@@ -161,4 +163,79 @@ TEST_CASE("clusters: statistics count contributing pairs identically on both pat
   CHECK(clustered.stats.visibleLights < 1024);
   CHECK(clustered.stats.nonEmptyClusters > 0);
   CHECK(clustered.stats.indexEntries >= clustered.stats.maxPerCluster);
+}
+
+TEST_CASE("clusters: 300000 lights on a small frame equal brute force") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  scene.lights = randomLights(300000, 17);
+  for (PointLight& l : scene.lights) l.luminousPower *= 0.002f;  // keep the sum of 300,000 lights in range
+  const std::vector<PointLight> edges = edgeCaseLights(scene, ClusterConfig{});
+  scene.lights.insert(scene.lights.begin() + 1000, edges.begin(), edges.end());
+  FrameOptions options;
+  options.culling = Culling::None;
+  const glm::ivec2 size{48, 27};
+  const test::RenderedFrame reference = test::renderScene(scene, size, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, size, options, 2);
+  CHECK(clustered.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
+}
+
+// Over kLightsPerDispatch lights the lighting pass loops in several dispatches, and over kAssignChunkLights the
+// count and fill passes do; a third of these lights reach one point, so its cluster lists more than either.
+TEST_CASE("clusters: 1048576 lights, one cluster listing a third of them, equal chunked brute force") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  std::vector<PointLight> lights = randomLights(1 << 20, 29);
+  RandomLightSpec near;
+  near.count = static_cast<int>(lights.size() / 3);
+  near.seed = 31;
+  // Every sphere contains the point (0, 0.5, 0) in front of the camera.
+  near.boundsMin = {-0.4f, 0.2f, -0.4f};
+  near.boundsMax = {0.4f, 0.8f, 0.4f};
+  near.radiusMin = 0.7f;
+  near.radiusMax = 2.0f;
+  const std::vector<PointLight> reaching = makeRandomLights(near);
+  for (size_t i = 0; i < reaching.size(); ++i) lights[3 * i + 1] = reaching[i];
+  const std::vector<PointLight> edges = edgeCaseLights(scene, ClusterConfig{});
+  std::copy(edges.begin(), edges.end(), lights.begin() + 500000);
+  for (PointLight& l : lights) l.luminousPower *= 1e-4f;
+  scene.lights = std::move(lights);
+  REQUIRE(scene.lights.size() == 1048576);
+  REQUIRE(scene.lights.size() > 3 * kLightsPerDispatch);
+  REQUIRE(scene.lights.size() / 3 > kLightsPerDispatch);
+  FrameOptions options;
+  options.culling = Culling::None;
+  const glm::ivec2 size{24, 14};
+  const test::RenderedFrame reference = test::renderScene(scene, size, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, size, options, 2);
+  CHECK(clustered.stats.maxPerCluster > scene.lights.size() / 3);
+  CHECK(clustered.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
+}
+
+TEST_CASE("clusters: a frame seeing only sky holds no active cluster and renders the background alone") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  scene.camera.target = scene.camera.position + glm::vec3(0.0f, 1.0f, -0.2f);  // up, away from every surface
+  scene.lights = randomLights(4096, 7);
+  FrameOptions options;
+  options.stats = true;
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, kSize, options, 2);
+  CHECK(clustered.stats.activeClusters == 0);
+  CHECK(clustered.stats.indexEntries == 0);
+  CHECK(clustered.stats.pairs.evaluated == 0);
+  size_t nonBlack = 0;
+  for (size_t i = 0; i < clustered.hdr.pixels.size(); i += 4) {
+    nonBlack += clustered.hdr.pixels[i] != 0.0f || clustered.hdr.pixels[i + 1] != 0.0f || clustered.hdr.pixels[i + 2] != 0.0f;
+  }
+  CHECK(nonBlack == 0);
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, kSize, options, 1);
+  CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
 }

@@ -171,7 +171,8 @@ void checkComputeCompiles(const std::string& file, const DefineSets& permutation
 
 TEST_CASE("shader library: every program the renderer builds from the project's shaders compiles") {
   PBR_REQUIRE_GL();
-  // Every model x culling x stats with the standard PBR terms, then every form of every PBR term once.
+  // Every model x culling x stats x light chunking with the standard PBR terms, then every form of every PBR term
+  // once.
   DefineSets lighting, ibl;
   for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
     for (const bool clustered : {false, true}) {
@@ -180,10 +181,14 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         options.model = model;
         options.stats = stats;
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
         // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
         const pbr::EnvironmentMaps maps;
         options.environment = &maps;
-        if (model == pbr::ShadingModel::Pbr) ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        if (model == pbr::ShadingModel::Pbr) {
+          ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+          ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        }
       }
     }
   }
@@ -197,9 +202,9 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/deferred.comp", ibl);
   checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS"}));
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
-  checkComputeCompiles("lighting/cluster_bounds.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_lights.comp", DefineSets{ShaderDefines{}});
-  checkComputeCompiles("lighting/cluster_tiles.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_clear.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   for (const char* channel : {"GBUFFER_CHANNEL_BASE_COLOR", "GBUFFER_CHANNEL_NORMAL", "GBUFFER_CHANNEL_ROUGHNESS",
                               "GBUFFER_CHANNEL_METALNESS", "GBUFFER_CHANNEL_DEPTH"}) {

@@ -112,7 +112,7 @@ void Viewer::handleKey(int key) {
 }
 
 // New random lights of the scene's own generator, as `--lights count` would have made them; a scene that cannot
-// (a file without random_lights, too many lights for llvmpipe) keeps its lights and says why on stderr.
+// (a file without random_lights) keeps its lights and says why on stderr.
 void Viewer::setLightCount(size_t count) {
   try {
     SceneParams params = options_.sceneParams;

@@ -1,6 +1,10 @@
 #version 450 core
-// First pass of light assignment: every light's bounding sphere in view space, computed once per frame instead
-// of once per tile and per cluster that tests it.
+// Second pass of light assignment, one invocation per light: the light's view-space sphere (kept for the
+// cluster passes), then the screen tiles it can reach, found from its projected bounds so that the cost is the
+// tiles a light touches, not all of them. A tile gets the light's bit in its mask (and the word's bit in its
+// summary) when the sphere touches the box of the surfaces the tile's pixels see (cluster_occupancy.comp); the
+// cluster passes then test only a tile's lights against its clusters' boxes. Masks are left all zero by
+// cluster_clear.comp after each frame.
 layout(local_size_x = 64) in;
 
 #include "../common/frame.glsl"
@@ -8,10 +12,67 @@ layout(local_size_x = 64) in;
 #include "lights.glsl"
 
 layout(std430, binding = CLUSTER_VIEW_LIGHTS_SSBO) writeonly buffer ViewLights { vec4 viewLights[]; };
+layout(std430, binding = CLUSTER_OCCUPANCY_SSBO) readonly buffer Occupancy { uint occupancy[]; };
+layout(std430, binding = CLUSTER_TILE_MASKS_SSBO) buffer TileMasks { uint tileMasks[]; };
+layout(std430, binding = CLUSTER_TILE_WORDS_SSBO) buffer TileWords { uint tileWords[]; };
+
+// The tiles the sphere's projection may cover: the screen rectangle of its view-space bounding box, widened by
+// a pixel; every tile when the box reaches the eye plane. False when the rectangle misses the screen.
+bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
+  float nearDepth = -sphere.z - sphere.w, farDepth = -sphere.z + sphere.w;
+  vec2 ndcLo = vec2(-1.0), ndcHi = vec2(1.0);
+  if (nearDepth > 1e-6) {
+    vec2 lo = sphere.xy - sphere.w, hi = sphere.xy + sphere.w;
+    ndcLo = min(lo / nearDepth, lo / farDepth) * frame.projParams.xy;
+    ndcHi = max(hi / nearDepth, hi / farDepth) * frame.projParams.xy;
+  }
+  vec2 pixelLo = (ndcLo * 0.5 + 0.5) * frame.viewport.xy - 1.0;
+  vec2 pixelHi = (ndcHi * 0.5 + 0.5) * frame.viewport.xy + 1.0;
+  if (farDepth <= 0.0 || any(lessThan(pixelHi, vec2(0.0))) || any(greaterThanEqual(pixelLo, frame.viewport.xy))) {
+    return false;
+  }
+  vec2 lastTile = vec2(clusterGrid.dims.xy - 1u);
+  first = uvec2(clamp(floor(pixelLo / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
+  last = uvec2(clamp(floor(pixelHi / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
+  return true;
+}
+
+uint gLight;
+vec4 gSphere;
+uvec2 gFirst;
+uint gColumns, gTiles;
+
+void visitTile(uint t) {
+  if (t >= gTiles) return;
+  uint tile = (gFirst.y + t / gColumns) * clusterGrid.dims.x + gFirst.x + t % gColumns;
+  uint base = tileBoxBase(tile);
+  vec3 lo, hi;
+  if (!occupiedBox(uvec3(occupancy[base], occupancy[base + 1u], occupancy[base + 2u]),
+                   uvec3(occupancy[base + 3u], occupancy[base + 4u], occupancy[base + 5u]), lo, hi) ||
+      !sphereIntersectsAabb(gSphere.xyz, gSphere.w, lo, hi)) {
+    return;
+  }
+  uint word = gLight / 32u;
+  uint previous = atomicOr(tileMasks[tile * clusterMaskWords() + word], 1u << (gLight % 32u));
+  if (previous == 0u) atomicOr(tileWords[tile * clusterSummaryWords() + word / 32u], 1u << (word % 32u));
+}
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= clusterGrid.counts.x) return;
-  vec4 pr = lights[i].positionRadius;
-  viewLights[i] = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w);
+  gLight = gl_GlobalInvocationID.x;
+  if (gLight >= clusterGrid.counts.x) return;
+  vec4 pr = lights[gLight].positionRadius;
+  gSphere = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w);
+  viewLights[gLight] = gSphere;
+  uvec2 last;
+  // A light of radius 0 reaches nothing (distanceAttenuation).
+  if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, last)) return;
+  gColumns = last.x - gFirst.x + 1u;
+  gTiles = gColumns * (last.y - gFirst.y + 1u);
+  // Four tiles per iteration for llvmpipe's limit of 65535 loop iterations per invocation (see deferred.comp).
+  for (uint t = 0u; t < gTiles; t += 4u) {
+    visitTile(t);
+    visitTile(t + 1u);
+    visitTile(t + 2u);
+    visitTile(t + 3u);
+  }
 }

@@ -1,7 +1,8 @@
 #version 450 core
 // Exclusive prefix sum of the per-cluster light counts into list offsets, in one workgroup: each invocation
 // scans a contiguous chunk serially, the chunk totals are scanned in shared memory (Hillis-Steele), then each
-// chunk adds its base. Also totals the demand for the index list and the cluster statistics.
+// chunk adds its base. Also totals the demand for the index list and the cluster statistics. Clusters without
+// surface keep their CLUSTER_INACTIVE offset and count nothing.
 layout(local_size_x = 1024) in;
 
 #include "clusters.glsl"
@@ -16,7 +17,8 @@ layout(std430, binding = CLUSTER_STATUS_SSBO) writeonly buffer Status {
   uint visibleLights;  // lights touching at least one cluster (stats mode only)
   uint overflowed;     // clusters whose list does not fit the index list
   uint capacity;       // the index list's capacity this frame
-  uvec2 unused;
+  uint activeClusters; // clusters holding a surface
+  uint unused;
 } status;
 
 #if ASSIGN_STATS
@@ -28,6 +30,7 @@ shared uint nonEmptyCount;
 shared uint maxCount;
 shared uint visibleCount;
 shared uint overflowCount;
+shared uint activeCount;
 
 void main() {
   uint t = gl_LocalInvocationIndex;
@@ -39,18 +42,21 @@ void main() {
     maxCount = 0u;
     visibleCount = 0u;
     overflowCount = 0u;
+    activeCount = 0u;
   }
-  uint sum = 0u, localNonEmpty = 0u, localMax = 0u;
+  uint sum = 0u, localNonEmpty = 0u, localMax = 0u, localActive = 0u;
   for (uint i = begin; i < end; ++i) {
     uint c = headers[i].count;
     sum = addSaturated(sum, c);
     localNonEmpty += c > 0u ? 1u : 0u;
     localMax = max(localMax, c);
+    localActive += headers[i].offset == CLUSTER_INACTIVE ? 0u : 1u;
   }
   partial[t] = sum;
   barrier();
   atomicAdd(nonEmptyCount, localNonEmpty);
   atomicMax(maxCount, localMax);
+  atomicAdd(activeCount, localActive);
   for (uint stride = 1u; stride < 1024u; stride <<= 1u) {
     uint add = t >= stride ? partial[t - stride] : 0u;
     barrier();
@@ -61,6 +67,7 @@ void main() {
   uint offset = t > 0u ? partial[t - 1u] : 0u;
   uint localOverflow = 0u;
   for (uint i = begin; i < end; ++i) {
+    if (headers[i].offset == CLUSTER_INACTIVE) continue;
     ClusterHeader h = ClusterHeader(offset, headers[i].count);
     headers[i].offset = offset;
     localOverflow += listFits(h) ? 0u : 1u;
@@ -85,5 +92,6 @@ void main() {
     status.visibleLights = visibleCount;
     status.overflowed = overflowCount;
     status.capacity = clusterGrid.counts.z;
+    status.activeClusters = activeCount;
   }
 }

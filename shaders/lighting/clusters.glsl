@@ -11,15 +11,46 @@ struct ClusterHeader {
   uint count;
 };
 
-struct ClusterBounds {
-  vec4 minView;  // view-space AABB of the froxel, padded
-  vec4 maxView;
-};
+
+// The header offset of a cluster that holds no surface (cluster_occupancy.comp): it gets no list, and would be
+// shaded by brute force if a pixel ever landed in it.
+const uint CLUSTER_INACTIVE = 0xFFFFFFFFu;
 
 uint clusterCount() { return clusterGrid.counts.y; }
+uint tileCount() { return clusterGrid.dims.x * clusterGrid.dims.y; }
 
-// 32-bit words of one tile's light mask (cluster_tiles.comp).
+// One tile's light mask (cluster_lights.comp): word w, bit b for light 32 w + b; and its summary, one bit per
+// mask word that has any bit set, so that a tile's lights are found without reading its empty words.
 uint clusterMaskWords() { return (clusterGrid.counts.x + 31u) / 32u; }
+uint clusterSummaryWords() { return (clusterMaskWords() + 31u) / 32u; }
+
+// The occupancy boxes (cluster_occupancy.comp): per cluster, then per tile, the view-space AABB of the surface
+// points its pixels see, as six words: the minimum corner as orderedBits, the maximum corner as ~orderedBits,
+// so that atomicMin keeps both; all ones where no pixel is.
+uint clusterBoxBase(uint cluster) { return 6u * cluster; }
+uint tileBoxBase(uint tile) { return 6u * (clusterCount() + tile); }
+
+// A float as an unsigned integer of the same order (negative below positive), so that integer atomics can keep a
+// float minimum; orderedFloat inverts it.
+uint orderedBits(float x) {
+  uint u = floatBitsToUint(x);
+  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
+
+// An occupancy box from its six words, widened by 1e-4 of its largest coordinate magnitude plus 1e-6: far above
+// the rounding between the points found here and those the lighting pass reconstructs and compares in world
+// space, so a light missing the box reaches none of its pixels. False for a box no pixel grew.
+bool occupiedBox(uvec3 minBits, uvec3 notMaxBits, out vec3 lo, out vec3 hi) {
+  if (minBits.x == 0xFFFFFFFFu) return false;
+  lo = vec3(orderedFloat(minBits.x), orderedFloat(minBits.y), orderedFloat(minBits.z));
+  hi = vec3(orderedFloat(~notMaxBits.x), orderedFloat(~notMaxBits.y), orderedFloat(~notMaxBits.z));
+  vec3 extent = max(abs(lo), abs(hi));
+  float pad = 1e-4 * max(extent.x, max(extent.y, extent.z)) + 1e-6;
+  lo -= pad;
+  hi += pad;
+  return true;
+}
 
 // Whether a cluster's list was written; one that did not fit the index list is shaded by brute force.
 // Written so that offset + count cannot wrap.
@@ -31,10 +62,12 @@ bool listFits(ClusterHeader h) {
 // Demand can exceed 32 bits (many clusters x many lights): sums saturate instead of wrapping.
 uint addSaturated(uint a, uint b) { return a > 0xFFFFFFFFu - b ? 0xFFFFFFFFu : a + b; }
 
-uint depthSlice(float viewDepth) {
-  float s = floor(log(viewDepth) * clusterGrid.slicing.z + clusterGrid.slicing.w);
-  return uint(clamp(s, 0.0, float(clusterGrid.dims.z - 1u)));
-}
+// The slice coordinate of a view depth: its integer part is the slice.
+float sliceCoordinate(float viewDepth) { return log(viewDepth) * clusterGrid.slicing.z + clusterGrid.slicing.w; }
+
+uint clampSlice(float s) { return uint(clamp(s, 0.0, float(clusterGrid.dims.z - 1u))); }
+
+uint depthSlice(float viewDepth) { return clampSlice(floor(sliceCoordinate(viewDepth))); }
 
 uint clusterIndex(uvec2 pixel, float viewDepth) {
   uvec2 tile = min(pixel / clusterGrid.dims.w, clusterGrid.dims.xy - 1u);

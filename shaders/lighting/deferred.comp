@@ -3,7 +3,8 @@
 // reference path); CLUSTERED 1 shades only the lights listed for the pixel's cluster, in the same ascending
 // order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup. IBL (PBR
 // only) lights with the environment maps of pbr::IblMaps instead of the uniform ambient radiance. The radiance
-// image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it.
+// image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it. LIGHT_CHUNKS splits
+// the light loop over several dispatches, for more lights than one invocation may loop over.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "surface.glsl"
@@ -37,7 +38,15 @@ layout(std430, binding = LIGHTING_STATS_SSBO) buffer PairStats { uvec2 groupPair
 #define HDR_IMAGE_FORMAT rgba16f
 #define HDR_MAX FP16_MAX
 #endif
-layout(HDR_IMAGE_FORMAT, binding = 0) uniform image2D radiance;
+layout(HDR_IMAGE_FORMAT, binding = RADIANCE_IMAGE) uniform image2D radiance;
+
+#if LIGHT_CHUNKS
+// This dispatch visits the pixel's list positions (or, shading every light, the lights) [x, y), in order; the
+// running sum stays in float in partialRadiance between dispatches, so the result is that of one loop over all.
+// z: 1 for the first dispatch, w: 1 for the last (LightingPass::render).
+layout(location = 0) uniform uvec4 lightChunk;
+layout(rgba32f, binding = PARTIAL_RADIANCE_IMAGE) uniform image2D partialRadiance;
+#endif
 
 #if LIGHTING_STATS
 bool contributes(Surface s, PointLight light) {
@@ -90,6 +99,9 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   Surface s;
   if (!readSurface(p, s)) {
+#if LIGHT_CHUNKS
+    if (lightChunk.w == 0u) return;
+#endif
 #if IBL
     imageStore(radiance, p, vec4(finishShading(background(p)), 1.0));
 #else
@@ -97,7 +109,11 @@ void main() {
 #endif
     return;
   }
+#if LIGHT_CHUNKS
+  gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + shadeEnvironment(s) : imageLoad(partialRadiance, p).rgb;
+#else
   gColor = imageLoad(radiance, p).rgb + shadeEnvironment(s);
+#endif
   gContributing = 0u;
   beginShading(s);
 #if CLUSTERED
@@ -107,10 +123,15 @@ void main() {
 #else
   uint count = lighting.counts.x;
 #endif
+#if LIGHT_CHUNKS
+  uint begin = min(lightChunk.x, count), end = min(lightChunk.y, count);
+#else
+  uint begin = 0u, end = count;
+#endif
   // llvmpipe ends an invocation after 65535 loop iterations in all (its guard against endless loops), so the
   // light loop is unrolled by 8; the lights are still added one after another, in order.
-  uint k = 0u;
-  for (; k + 8u <= count; k += 8u) {
+  uint k = begin;
+  for (; k + 8u <= end; k += 8u) {
     visitLight(s, k);
     visitLight(s, k + 1u);
     visitLight(s, k + 2u);
@@ -120,11 +141,17 @@ void main() {
     visitLight(s, k + 6u);
     visitLight(s, k + 7u);
   }
-  for (; k < count; ++k) visitLight(s, k);
+  for (; k < end; ++k) visitLight(s, k);
 #if LIGHTING_STATS
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  atomicAdd(groupPairs[group].x, count);
+  atomicAdd(groupPairs[group].x, end - begin);
   atomicAdd(groupPairs[group].y, gContributing);
+#endif
+#if LIGHT_CHUNKS
+  if (lightChunk.w == 0u) {
+    imageStore(partialRadiance, p, vec4(gColor, 1.0));
+    return;
+  }
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
