@@ -112,7 +112,8 @@ const Builtin kBuiltins[] = {{"default", nullptr, nullptr},
                              {"fresnel-floor", singleLight, viewFloorAt},
                              {"stress", nullptr, nullptr},
                              {"helmet", lightRing, nullptr},
-                             {"helmet-grid", nullptr, nullptr}};
+                             {"helmet-grid", nullptr, nullptr},
+                             {"many-lights", nullptr, nullptr}};
 
 const Builtin* findBuiltin(const std::string& name) {
   const auto it =

@@ -108,7 +108,7 @@ TEST_CASE("built-in scenes: each name is a file of scenes/ that loads as that sc
   CHECK_THROWS_WITH_AS(
       pbr::makeBuiltinScene("nope"),
       "unknown scene 'nope' (built-in scenes: default, sphere-grid, light-wall, fresnel-floor, stress, helmet, "
-      "helmet-grid)",
+      "helmet-grid, many-lights)",
       pbr::SceneError);
   CHECK_THROWS_WITH_AS(pbr::makeBuiltinScene("default", withLights(-1)), "default: light count must be >= 0",
                        pbr::SceneError);
@@ -177,6 +177,16 @@ TEST_CASE("built-in scenes: helmet-grid is nine DamagedHelmets sharing one mesh 
   // --lights N sets random_lights.count.
   checkSameLights(pbr::makeBuiltinScene("helmet-grid", withLights(7)).lights,
                   {scene.lights.begin(), scene.lights.begin() + 7});
+}
+
+TEST_CASE("built-in scenes: many-lights spreads 65536 lights over its floor, and --lights takes up to 2^20") {
+  const pbr::Scene scene = pbr::makeBuiltinScene("many-lights");
+  REQUIRE(scene.lights.size() == 65536);
+  CHECK(lightsOutside(scene.lights, {-100.0f, 0.3f, -100.0f}, {100.0f, 2.0f, 100.0f}, 3.0f) == 0);
+  // The command line's largest count, 1,048,576, draws the same lights first.
+  const pbr::Scene most = pbr::makeBuiltinScene("many-lights", withLights(1 << 20));
+  REQUIRE(most.lights.size() == size_t(1) << 20);
+  checkSameLights({most.lights.begin(), most.lights.begin() + 100}, {scene.lights.begin(), scene.lights.begin() + 100});
 }
 
 TEST_CASE("built-in scenes: --view-angle puts fresnel-floor's camera and mirrored light at that angle") {
