@@ -19,7 +19,8 @@ namespace {
 const std::vector<OptionSpec>& renderOptions() {
   static const std::vector<OptionSpec> specs = {
       {"--scene", "NAME|FILE",
-       "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet) or scene file (.json, .gltf, .glb)"},
+       "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet, helmet-grid, many-lights) "
+       "or scene file (.json, .gltf, .glb)"},
       {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
       {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated), hammon or separable"},
       {"--variant", "K=V,...|study", "shading variant, PBR: visibility=exact|hammon|separable, ndf=ggx|beckmann, "

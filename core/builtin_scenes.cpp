@@ -111,7 +111,9 @@ const Builtin kBuiltins[] = {{"default", nullptr, nullptr},
                              {"light-wall", colocatedLights, nullptr},
                              {"fresnel-floor", singleLight, viewFloorAt},
                              {"stress", nullptr, nullptr},
-                             {"helmet", lightRing, nullptr}};
+                             {"helmet", lightRing, nullptr},
+                             {"helmet-grid", nullptr, nullptr},
+                             {"many-lights", nullptr, nullptr}};
 
 const Builtin* findBuiltin(const std::string& name) {
   const auto it =

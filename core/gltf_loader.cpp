@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <filesystem>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -134,9 +134,13 @@ std::vector<uint32_t> triangleList(const GltfFile& file, int mode, std::vector<u
   return list;
 }
 
+// Walks the node tree once per load, so that every placement is checked, every object and light added and the
+// bounds measured with this load's transform; meshes and materials come from `loaded` where an earlier load of
+// the file converted them.
 class Loader {
  public:
-  Loader(const GltfFile& file, Scene& scene) : file_(file), scene_(scene), materials_(file, scene) {}
+  Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded)
+      : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded) {}
 
   Bounds load(const glm::mat4& transform) {
     // Depth first, children in order; glTF node hierarchies are trees, so a node met twice is malformed.
@@ -235,10 +239,11 @@ class Loader {
     }
   }
 
-  // Index into Scene::meshes of a primitive, converted once however many nodes use it; -1 for what is not drawn.
+  // Index into Scene::meshes of a primitive, converted once however many nodes and loads use it; -1 for what is
+  // not drawn.
   int primitiveMesh(int meshIndex, int primitiveIndex) {
-    const auto cached = meshes_.find({meshIndex, primitiveIndex});
-    if (cached != meshes_.end()) return cached->second;
+    const auto cached = loaded_.meshes.find({meshIndex, primitiveIndex});
+    if (cached != loaded_.meshes.end()) return cached->second;
     const tinygltf::Primitive& prim =
         file_.model.meshes[static_cast<size_t>(meshIndex)].primitives[static_cast<size_t>(primitiveIndex)];
     const std::string field = gltfElement("meshes", meshIndex) + "." + gltfElement("primitives", primitiveIndex);
@@ -253,7 +258,7 @@ class Loader {
     } else {
       file_.warn(field + ": mode " + std::to_string(prim.mode) + " (points or lines) is not drawn");
     }
-    meshes_.emplace(std::make_pair(meshIndex, primitiveIndex), result);
+    loaded_.meshes.emplace(std::make_pair(meshIndex, primitiveIndex), result);
     return result;
   }
 
@@ -366,20 +371,34 @@ class Loader {
 
   const GltfFile& file_;
   Scene& scene_;
+  LoadedGltf& loaded_;
   GltfMaterials materials_;
-  std::map<std::pair<int, int>, int> meshes_;
   Bounds bounds_;
   bool empty_ = true;
 };
 
+// Two names of one file (relative, absolute, through a link) share one record.
+std::string fileKey(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::canonical(path, error);
+  return error ? path : canonical.string();
+}
+
 }  // namespace
 
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy) {
+  // Read and checked again on every load: the policy may differ, and the checks blame this load's fields.
   const GltfFile file = readGltfFile(path, policy);
+  const std::string key = fileKey(path);
+  const auto known = scene.gltfFiles.find(key);
+  // Worked on as a copy: a load that fails leaves the record as it was, with the rest of the scene.
+  LoadedGltf loaded = known == scene.gltfFiles.end() ? LoadedGltf{} : known->second;
   const size_t meshes = scene.meshes.size(), textures = scene.textures.size(), objects = scene.objects.size(),
                lights = scene.lights.size();
   try {
-    return Loader(file, scene).load(transform);
+    const Bounds bounds = Loader(file, scene, loaded).load(transform);
+    scene.gltfFiles[key] = std::move(loaded);
+    return bounds;
   } catch (...) {
     // A file found malformed half-way leaves the scene as it was.
     scene.meshes.resize(meshes);

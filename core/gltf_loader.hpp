@@ -26,6 +26,8 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // the geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
 // other than KHR_lights_punctual and KHR_materials_emissive_strength, leaving `scene` as it was.
 // `policy` says where the file's buffers and images may be (readGltfFile).
+// A file loaded again into the same scene (by canonical path) adds its objects, placed by the new transform, and
+// its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
                   const UriPolicy& policy = {});
 

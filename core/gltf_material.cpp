@@ -36,8 +36,8 @@ bool oneOf(int v, std::initializer_list<int> allowed) {
 }  // namespace
 
 const Material& GltfMaterials::get(int index, const std::string& field) {
-  auto it = materials_.find(index);
-  if (it == materials_.end()) it = materials_.emplace(index, convert(index, field)).first;
+  auto it = loaded_.materials.find(index);
+  if (it == loaded_.materials.end()) it = loaded_.materials.emplace(index, convert(index, field)).first;
   return it->second;
 }
 
@@ -96,8 +96,8 @@ Material GltfMaterials::convert(int index, const std::string& field) {
 
 int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string& field) {
   if (index < 0) return -1;
-  const auto cached = textures_.find({index, srgb});
-  if (cached != textures_.end()) return cached->second;
+  const auto cached = loaded_.textures.find({index, srgb});
+  if (cached != loaded_.textures.end()) return cached->second;
   const tinygltf::Model& model = file_.model;
   if (static_cast<size_t>(index) >= model.textures.size()) {
     file_.fail(field + ": no texture " + std::to_string(index) + " (the file has " +
@@ -140,7 +140,7 @@ int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string
   }
   scene_.textures.push_back(std::move(data));
   const int added = static_cast<int>(scene_.textures.size()) - 1;
-  textures_.emplace(std::make_pair(index, srgb), added);
+  loaded_.textures.emplace(std::make_pair(index, srgb), added);
   return added;
 }
 

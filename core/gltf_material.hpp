@@ -1,7 +1,5 @@
 #pragma once
-#include <map>
 #include <string>
-#include <utility>
 
 #include "core/gltf_file.hpp"
 #include "core/scene.hpp"
@@ -10,9 +8,11 @@ namespace pbr {
 
 // Converts a file's materials, and the textures they use, into pbr::Material and Scene::textures. Each glTF
 // texture is decoded once per colour space it is used in (base colour and emissive are sRGB, the others linear).
+// What `loaded` already holds, from an earlier load of the file into the scene, is reused; what is converted
+// is added to it.
 class GltfMaterials {
  public:
-  GltfMaterials(const GltfFile& file, Scene& scene) : file_(file), scene_(scene) {}
+  GltfMaterials(const GltfFile& file, Scene& scene, LoadedGltf& loaded) : file_(file), scene_(scene), loaded_(loaded) {}
 
   // Material `index` (-1: glTF's default material), converted and its images decoded on first use; `field`
   // names the reference for messages.
@@ -27,8 +27,7 @@ class GltfMaterials {
 
   const GltfFile& file_;
   Scene& scene_;
-  std::map<int, Material> materials_;
-  std::map<std::pair<int, bool>, int> textures_;
+  LoadedGltf& loaded_;
 };
 
 }  // namespace pbr

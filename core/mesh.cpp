@@ -46,7 +46,7 @@ MeshData makeBoxMesh() {
   MeshData m;
   const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (const glm::vec3& n : normals) {
-    // Two tangents whose cross product is n, so the quad winds counter-clockwise seen from outside.
+    // Two tangents with t x b = n.
     const glm::vec3 t = std::abs(n.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
     const glm::vec3 b = glm::cross(n, t);
     const uint32_t base = static_cast<uint32_t>(m.vertices.size());
@@ -55,7 +55,9 @@ MeshData makeBoxMesh() {
     for (const glm::vec2& c : corners) {
       m.vertices.push_back({0.5f * (n + c.x * b + c.y * t), n, (c + 1.0f) * 0.5f, glm::vec4(b, -1.0f)});
     }
-    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    // The corners run clockwise seen from outside (b x t = -n): the triangles take them in reverse, so that
+    // front faces are the outer ones.
+    m.indices.insert(m.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
   }
   return m;
 }

@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -77,6 +79,15 @@ struct EnvironmentDesc {
   float rotationDeg = 0.0f;  // about +Y, right-handed
 };
 
+// What appendGltf added to a scene for one file, by the file's own indices: a file placed N times then costs one
+// conversion of each mesh and one decode (and GPU upload) of each image, not N. The indices are valid while the
+// scene's meshes and textures only grow.
+struct LoadedGltf {
+  std::map<std::pair<int, int>, int> meshes;     // (mesh, primitive) -> Scene::meshes; -1: not drawn
+  std::map<int, Material> materials;             // material (-1: glTF's default) -> as converted
+  std::map<std::pair<int, bool>, int> textures;  // (texture, sRGB) -> Scene::textures
+};
+
 struct Scene {
   std::string name;
   Camera camera;
@@ -87,6 +98,7 @@ struct Scene {
   std::vector<TextureData> textures;
   std::vector<SceneObject> objects;
   std::vector<PointLight> lights;
+  std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
 
   // Adds the mesh of an analytic shape once and an object that uses it.
   SceneObject& addShape(Shape shape, const glm::mat4& transform, const Material& material);

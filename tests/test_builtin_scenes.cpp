@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "core/builtin_scenes.hpp"
 #include "core/scene_json.hpp"
@@ -51,6 +52,17 @@ void checkSameLights(const std::vector<pbr::PointLight>& got, const std::vector<
 
 void checkNear(const glm::vec3& got, const glm::dvec3& want) {
   for (int i = 0; i < 3; ++i) CHECK(got[i] == doctest::Approx(want[i]).epsilon(1e-6));
+}
+
+// How many lights lie outside the box [lo, hi] or have another radius than `radius`.
+size_t lightsOutside(const std::vector<pbr::PointLight>& lights, const glm::vec3& lo, const glm::vec3& hi,
+                     float radius) {
+  size_t n = 0;
+  for (const pbr::PointLight& l : lights) {
+    const bool inside = glm::all(glm::greaterThanEqual(l.position, lo)) && glm::all(glm::lessThanEqual(l.position, hi));
+    n += inside && l.radius == radius ? 0 : 1;
+  }
+  return n;
 }
 
 // Sets an environment variable for one scope, then restores it.
@@ -95,7 +107,8 @@ TEST_CASE("built-in scenes: each name is a file of scenes/ that loads as that sc
   }
   CHECK_THROWS_WITH_AS(
       pbr::makeBuiltinScene("nope"),
-      "unknown scene 'nope' (built-in scenes: default, sphere-grid, light-wall, fresnel-floor, stress, helmet)",
+      "unknown scene 'nope' (built-in scenes: default, sphere-grid, light-wall, fresnel-floor, stress, helmet, "
+      "helmet-grid, many-lights)",
       pbr::SceneError);
   CHECK_THROWS_WITH_AS(pbr::makeBuiltinScene("default", withLights(-1)), "default: light count must be >= 0",
                        pbr::SceneError);
@@ -143,6 +156,37 @@ TEST_CASE("built-in scenes: --lights N on the scenes that list their lights") {
     REQUIRE(three.lights.size() == 3);
     for (const pbr::PointLight& l : three.lights) CHECK(l.luminousPower == doctest::Approx(1500.0f / 3));
   }
+}
+
+TEST_CASE("built-in scenes: helmet-grid is nine DamagedHelmets sharing one mesh and its textures, 8192 lights") {
+  const pbr::Scene scene = pbr::makeBuiltinScene("helmet-grid");
+  CHECK(scene.meshes.size() == 1);
+  CHECK(scene.textures.size() == 5);
+  REQUIRE(scene.objects.size() == 9);
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    CAPTURE(i);
+    // Listed x-major, x and z in {-3, 0, 3}, at y = -0.5 and half size.
+    const glm::mat4& m = scene.objects[i].transform;
+    const glm::vec3 origin(m * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    checkNear(origin, {-3.0 + 3.0 * double(i / 3), -0.5, -3.0 + 3.0 * double(i % 3)});
+    CHECK(glm::length(glm::vec3(m[0])) == doctest::Approx(0.5));
+    CHECK(scene.objects[i].mesh == 0);
+  }
+  REQUIRE(scene.lights.size() == 8192);
+  CHECK(lightsOutside(scene.lights, {-3.0f, -4.0f, -3.0f}, {3.0f, 2.0f, 3.0f}, 4.7f) == 0);
+  // --lights N sets random_lights.count.
+  checkSameLights(pbr::makeBuiltinScene("helmet-grid", withLights(7)).lights,
+                  {scene.lights.begin(), scene.lights.begin() + 7});
+}
+
+TEST_CASE("built-in scenes: many-lights spreads 65536 lights over its floor, and --lights takes up to 2^20") {
+  const pbr::Scene scene = pbr::makeBuiltinScene("many-lights");
+  REQUIRE(scene.lights.size() == 65536);
+  CHECK(lightsOutside(scene.lights, {-100.0f, 0.3f, -100.0f}, {100.0f, 2.0f, 100.0f}, 3.0f) == 0);
+  // The command line's largest count, 1,048,576, draws the same lights first.
+  const pbr::Scene most = pbr::makeBuiltinScene("many-lights", withLights(1 << 20));
+  REQUIRE(most.lights.size() == size_t(1) << 20);
+  checkSameLights({most.lights.begin(), most.lights.begin() + 100}, {scene.lights.begin(), scene.lights.begin() + 100});
 }
 
 TEST_CASE("built-in scenes: --view-angle puts fresnel-floor's camera and mirrored light at that angle") {
