@@ -89,9 +89,10 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   tileMasks_.reset();
   tileWords_.reset();
   block_.update(blockData_);
+  sizedFor_ = kNotSized;
   gridKey_ = f.viewport;
   gridKey2_ = f.projParams;
-  // A first guess of 32 lights per cluster; the measured demand corrects it from the next frame on.
+  // A first guess of 32 lights per cluster; the first frame measures the demand and grows the list to it.
   if (capacity_ < clusters * 32ull) ensureCapacity(clusters * 32ull);
 }
 
@@ -192,9 +193,25 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   dispatchAssign(stats ? countStatsProgram_ : countProgram_, lights.count());
-  (stats ? scanStatsProgram_ : scanProgram_).use();
+  const Program& scan = stats ? scanStatsProgram_ : scanProgram_;
+  scan.use();
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // Without a past frame of this grid and light count to size the list from, a list too small would shade its
+  // clusters by brute force: with a million lights, minutes. Such a frame waits for its own demand instead.
+  if (lights.count() != sizedFor_) {
+    sizedFor_ = lights.count();
+    const uint32_t before = capacity_;
+    growTo(readStatus().demand);
+    if (capacity_ != before) {
+      blockData_.counts.z = capacity_;
+      block_.update(blockData_);
+      indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
+      scan.use();
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+  }
   dispatchAssign(fillProgram_, lights.count());
   clearProgram_.use();
   glDispatchCompute(groupsFor(tiles * summaryWords, 64), 1, 1);

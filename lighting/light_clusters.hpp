@@ -36,8 +36,9 @@ constexpr uint32_t kAssignChunkLights = 131072;
 // sphere reaches and whose box it touches (cost: lights x tiles touched), a count pass testing each cluster that
 // holds a surface against its tile's lights only, a prefix sum into list offsets and a fill pass writing one
 // global, sorted light-index list, and a pass clearing the mask words set. The list is sized from the measured
-// demand: a frame whose demand exceeds the list's capacity shades the clusters that do not fit by brute force
-// (exact, just slower) and the list grows for the next frame.
+// demand: the first frame of a grid and light count waits for its own; later frames read it a few frames late,
+// so as never to wait, and one whose demand exceeds the list's capacity shades the clusters that do not fit by
+// brute force (exact, just slower) while the list grows for the next frame.
 class LightClusters {
  public:
   LightClusters(ProgramCache& programs, const ClusterConfig& config);
@@ -89,6 +90,9 @@ class LightClusters {
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   Buffer status_;
   uint32_t capacity_ = 0;
+  // The light count whose demand sized the list on this grid; another count sizes it within its first frame.
+  static constexpr uint64_t kNotSized = ~0ull;
+  uint64_t sizedFor_ = kNotSized;
   uint32_t maxCapacity_ = 0;
   bool warnedLimit_ = false;
 

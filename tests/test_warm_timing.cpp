@@ -21,13 +21,19 @@ TEST_CASE("warm timing: after warm-up no timed frame shades a cluster by fallbac
   PBR_REQUIRE_GL();
   SceneParams params;
   params.lights = 4096;
-  const Scene scene = makeBuiltinScene("default", params);
+  Scene scene = makeBuiltinScene("default", params);
   const ShaderLibrary shaders;
   Renderer renderer(shaders, scene, 160, 90);
   Profiler profiler(TimingMode::Serializing);
   const FrameOptions options;
+  // The first frame of a light count sizes the list to its own demand.
   renderer.renderFrame(options, profiler);
-  // The first frame's list is a guess that this many lights overflow: the check below is not vacuous.
+  CHECK(renderer.lightStats().overflowedClusters == 0);
+  // The same count, each light reaching twice as far: the demand outgrows the list, whose size later frames
+  // read a few frames late, so this frame overflows and the check below is not vacuous.
+  for (PointLight& l : scene.lights) l.radius *= 2.0f;
+  renderer.setLights(scene.lights);
+  renderer.renderFrame(options, profiler);
   CHECK(renderer.lightStats().overflowedClusters > 0);
   const WarmUpReport warm = renderer.warmUp(options, profiler, 0);
   CHECK(warm.listSizingFrames >= 1);
