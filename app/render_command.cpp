@@ -35,7 +35,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
-      {"--slices", "S", "cluster depth slices, exponential between near and far (default 60)"},
+      {"--slices", "S", "cluster depth slices, exponential between near and far (default 192)"},
       {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},

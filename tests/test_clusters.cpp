@@ -108,9 +108,10 @@ TEST_CASE("clusters: 65536 lights with one cluster touched by every light render
   RandomLightSpec spec;
   spec.count = 65536;
   spec.seed = 3;
-  // Every sphere contains the point (0, 0.5, 0) in front of the camera, so its cluster lists all of them.
-  spec.boundsMin = {-0.4f, 0.2f, -0.4f};
-  spec.boundsMax = {0.4f, 0.8f, 0.4f};
+  // Every sphere contains the point (0, 0, 0) of the floor in front of the camera, so the cluster holding it
+  // lists all of them.
+  spec.boundsMin = {-0.3f, -0.3f, -0.3f};
+  spec.boundsMax = {0.3f, 0.3f, 0.3f};
   spec.radiusMin = 0.7f;
   spec.radiusMax = 2.0f;
   spec.powerMin = 0.001f;

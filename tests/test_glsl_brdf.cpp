@@ -345,7 +345,7 @@ TEST_CASE("glsl lights: distanceAttenuation is windowed inverse-square, at most 
   PBR_REQUIRE_GL();
   const GlslProbe probe("distance attenuation", R"(
 #include "lighting/lights.glsl"
-vec4 probe(vec4 v) { return vec4(distanceAttenuation(v.x, v.y)); }
+vec4 probe(vec4 v) { return vec4(distanceAttenuation(v.x * v.x, v.y)); }  // it takes the squared distance
 )");
   // Below R = 0.01 the 0.01 distance clamp shows through the window near R; above it only the limit of 1 does.
   const std::vector<double> radii = {0.005, 0.05, 0.5, 1.0, 10.0, 100.0};

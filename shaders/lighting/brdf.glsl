@@ -140,14 +140,47 @@ vec3 diffuseLobe(vec3 baseColor, float metalness, float roughness, float NoV, fl
   return weight * (1.0 - metalness) * baseColor / PI;
 }
 
-// Cook-Torrance specular plus the diffuse lobe; returns f_d + f_s.
+// The terms of brdfCookTorrance that depend on the surface and the view only: a pixel computes them once for
+// all its lights. `diffuse` is the whole diffuse lobe where no term of it depends on the light.
+struct BrdfSurface {
+  vec3 N, V, baseColor;
+  float NoV, roughness, metalness, a;
+#if defined(DIFFUSE_LAMBERT_1_F) || defined(DIFFUSE_LAMBERT)
+  vec3 diffuse;
+#endif
+};
+
+BrdfSurface brdfSurface(vec3 N, vec3 V, float NoV, vec3 baseColor, float roughness, float metalness) {
+  BrdfSurface b;
+  b.N = N;
+  b.V = V;
+  b.baseColor = baseColor;
+  b.NoV = NoV;
+  b.roughness = roughness;
+  b.metalness = metalness;
+  b.a = alphaFromRoughness(roughness);
+#if defined(DIFFUSE_LAMBERT_1_F) || defined(DIFFUSE_LAMBERT)
+  b.diffuse = diffuseLobe(baseColor, metalness, roughness, NoV, 0.0, 0.0);
+#endif
+  return b;
+}
+
+// Cook-Torrance specular plus the diffuse lobe for light from L; returns f_d + f_s.
+vec3 brdfCookTorrance(BrdfSurface b, vec3 L) {
+  vec3 H = normalize(b.V + L);
+  vec3 NxH = cross(b.N, H);
+  float NoL = max(dot(b.N, L), 0.0);
+  float NoH = clamp(dot(b.N, H), 0.0, 1.0);
+  float VoH = clamp(dot(b.V, H), 0.0, 1.0);
+  vec3 specular = distribution(NoH, dot(NxH, NxH), b.a) * visibility(b.NoV, NoL, b.a) *
+                  fresnel(b.baseColor, b.metalness, VoH);
+#if defined(DIFFUSE_LAMBERT_1_F) || defined(DIFFUSE_LAMBERT)
+  return b.diffuse + specular;
+#else
+  return diffuseLobe(b.baseColor, b.metalness, b.roughness, b.NoV, NoL, VoH) + specular;
+#endif
+}
+
 vec3 brdfCookTorrance(vec3 N, vec3 V, vec3 L, float NoV, vec3 baseColor, float roughness, float metalness) {
-  vec3 H = normalize(V + L);
-  vec3 NxH = cross(N, H);
-  float NoL = max(dot(N, L), 0.0);
-  float NoH = clamp(dot(N, H), 0.0, 1.0);
-  float VoH = clamp(dot(V, H), 0.0, 1.0);
-  float a = alphaFromRoughness(roughness);
-  vec3 specular = distribution(NoH, dot(NxH, NxH), a) * visibility(NoV, NoL, a) * fresnel(baseColor, metalness, VoH);
-  return diffuseLobe(baseColor, metalness, roughness, NoV, NoL, VoH) + specular;
+  return brdfCookTorrance(brdfSurface(N, V, NoV, baseColor, roughness, metalness), L);
 }

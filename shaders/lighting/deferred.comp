@@ -50,9 +50,9 @@ layout(rgba32f, binding = PARTIAL_RADIANCE_IMAGE) uniform image2D partialRadianc
 
 #if LIGHTING_STATS
 bool contributes(Surface s, PointLight light) {
-  float d;
-  vec3 L = directionToLight(s.position, s.normal, light, d);
-  return dot(s.normal, L) > 0.0 && distanceAttenuation(d, light.positionRadius.w) > 0.0;
+  float d2;
+  vec3 L = directionToLight(s.position, s.normal, light, d2);
+  return dot(s.normal, L) > 0.0 && distanceAttenuation(d2, light.positionRadius.w) > 0.0;
 }
 #endif
 

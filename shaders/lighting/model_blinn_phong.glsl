@@ -34,10 +34,10 @@ void beginShading(Surface s) {
 }
 
 vec3 shadeLight(Surface s, PointLight light) {
-  float d;
-  vec3 L = directionToLight(s.position, s.normal, light, d);
+  float d2;
+  vec3 L = directionToLight(s.position, s.normal, light, d2);
   float NoL = dot(s.normal, L);
-  float att = distanceAttenuation(d, light.positionRadius.w);
+  float att = distanceAttenuation(d2, light.positionRadius.w);
   if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
   float NoH = max(dot(s.normal, normalize(s.V + L)), 0.0);
   return (gDiffuse * NoL + gSpecularColor * lobe(NoH)) * light.colorIntensity.rgb * att;

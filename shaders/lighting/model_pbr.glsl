@@ -23,16 +23,20 @@ vec3 shadeAmbient(Surface s) {
 }
 #endif
 
-// Nothing per pixel is shared between lights yet: the BRDF takes the surface as it is.
-void beginShading(Surface s) {}
+// The pixel's BRDF terms that no light changes: computed once before the light loop, not per pair.
+BrdfSurface gBrdf;
+
+void beginShading(Surface s) {
+  gBrdf = brdfSurface(s.normal, s.V, s.NoV, s.baseColor, s.roughness, s.metalness);
+}
 
 vec3 shadeLight(Surface s, PointLight light) {
-  float d;
-  vec3 L = directionToLight(s.position, s.normal, light, d);
+  float d2;
+  vec3 L = directionToLight(s.position, s.normal, light, d2);
   float NoL = dot(s.normal, L);
-  float att = distanceAttenuation(d, light.positionRadius.w);
+  float att = distanceAttenuation(d2, light.positionRadius.w);
   if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
-  vec3 f = brdfCookTorrance(s.normal, s.V, L, s.NoV, s.baseColor, s.roughness, s.metalness);
+  vec3 f = brdfCookTorrance(gBrdf, L);
   return f * light.colorIntensity.rgb * (light.colorIntensity.w * att * NoL);
 }
 
