@@ -31,7 +31,8 @@ sanitize: deps
 # The stress-scene sweep of docs/performance.md: table on stdout; CSV, JSON, Chrome trace and charts in bench/out/.
 # Brute force at 16,384 lights would take the better part of an hour on llvmpipe: --max-seconds skips it, noted.
 # The second sweep shrinks light radii as lights are added (--constant-density) for the 16,384 vs 1,024 comparison;
-# the third measures the cost per light-pixel pair of each shading model.
+# the next two sweep many-lights from 65,536 to 1,048,576 lights, radii shrinking with the count and fixed; the
+# last measures the cost per light-pixel pair of each shading model.
 BENCH_OUT ?= bench/out
 BENCH_FRAMES ?= --warmup 2 --frames 10 --max-seconds 600
 
@@ -43,6 +44,12 @@ bench: build
 	./$(BUILD)/pbr bench --scene stress --lights 1024,16384 --culling clustered --model pbr,blinn-phong \
 	  --size 1280x720 --constant-density $(BENCH_FRAMES) \
 	  --csv $(BENCH_OUT)/density.csv --json $(BENCH_OUT)/density.json --trace $(BENCH_OUT)/density-trace.json
+	./$(BUILD)/pbr bench --scene many-lights --lights 65536,262144,1048576 --culling clustered --model pbr \
+	  --size 1280x720 --constant-density --warmup 1 --frames 3 --max-seconds 1800 \
+	  --csv $(BENCH_OUT)/million-density.csv --json $(BENCH_OUT)/million-density.json
+	./$(BUILD)/pbr bench --scene many-lights --lights 65536,262144,1048576 --culling clustered --model pbr \
+	  --size 1280x720 --warmup 1 --frames 3 --max-seconds 1800 \
+	  --csv $(BENCH_OUT)/million.csv --json $(BENCH_OUT)/million.json
 	./$(BUILD)/pbr bench --pair-cost default,blinn-phong,blinn-phong-sg --rounds 9 \
 	  --csv $(BENCH_OUT)/pair-cost.csv --json $(BENCH_OUT)/pair-cost.json
 	scripts/plot_bench.py $(BENCH_OUT)/bench.csv --out $(BENCH_OUT)

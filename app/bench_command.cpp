@@ -35,7 +35,8 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--max-seconds", "S",
        "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds (default 60)"},
       {"--constant-density", "",
-       "scale light radii by sqrt(1024/lights), holding lights x radius^2 (the light density) constant"},
+       "scale light radii by sqrt(L0/lights), L0 the smallest of --lights, holding lights x radius^2 (the light "
+       "density) constant"},
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
@@ -187,7 +188,7 @@ int runBench(const std::vector<std::string>& argv) {
     params.lights = lights;
     params.uris = uriPolicy(args);
     Scene scene = resolveScene(settings.scene, params);
-    const float scale = settings.constantDensity ? densityRadiusScale(lights) : 1.0f;
+    const float scale = settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
     for (PointLight& l : scene.lights) l.radius *= scale;
     scenes.push_back(std::move(scene));
   }
@@ -213,7 +214,7 @@ int runBench(const std::vector<std::string>& argv) {
         const size_t index = report.results.size();
         const int lights = settings.lights[li];
         const BenchConfig config{settings.scene, settings.size, lights, culling, model,
-                                 settings.constantDensity ? densityRadiusScale(lights) : 1.0f};
+                                 settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f};
         BenchResult result = runBenchConfig(shaders, scenes[li], config, settings, timing, sweepStart,
                                             [&](int done, int frames) { progress.frame(index, config, done, frames); });
         progress.finished(index, result);

@@ -246,7 +246,7 @@ TEST_CASE("bench: --max-seconds skips configurations estimated to take longer, a
   }
 }
 
-TEST_CASE("bench: --constant-density scales light radii by sqrt(1024 / lights)") {
+TEST_CASE("bench: --constant-density scales light radii by sqrt(smallest light count / lights)") {
   PBR_REQUIRE_GL();
   const TempDir dir;
   std::vector<Csv> sweeps;
@@ -266,10 +266,11 @@ TEST_CASE("bench: --constant-density scales light radii by sqrt(1024 / lights)")
   };
   CHECK(sweeps[0].provenance.at("constant_density") == "no");
   CHECK(std::stod(sweeps[0].rows[0].at("light_radius_scale")) == 1.0);
-  CHECK(std::stod(sweeps[1].rows[0].at("light_radius_scale")) == doctest::Approx(2.0));
-  CHECK(std::stod(sweeps[1].rows[1].at("light_radius_scale")) == doctest::Approx(0.5));
-  // Larger lights below the reference count and smaller ones above it: the clusters see it.
-  CHECK(avg(1, 0) > avg(0, 0));
+  CHECK(sweeps[1].provenance.at("constant_density") == "yes (light radii x sqrt(256/lights))");
+  CHECK(std::stod(sweeps[1].rows[0].at("light_radius_scale")) == doctest::Approx(1.0));
+  CHECK(std::stod(sweeps[1].rows[1].at("light_radius_scale")) == doctest::Approx(0.25));
+  // The reference count's lights keep their radii; smaller ones above it: the clusters see it.
+  CHECK(avg(1, 0) == avg(0, 0));
   CHECK(avg(1, 1) < avg(0, 1));
 }
 

@@ -60,7 +60,8 @@ std::string joinedInts(const std::vector<int>& values) {
 }
 
 Record settingsRecord(const BenchSettings& s) {
-  const std::string density = "yes (light radii x sqrt(" + std::to_string(kDensityReferenceLights) + "/lights))";
+  const std::string density =
+      "yes (light radii x sqrt(" + std::to_string(densityReferenceLights(s)) + "/lights))";
   return {{"scene", s.scene},
           {"size", std::to_string(s.size.x) + "x" + std::to_string(s.size.y)},
           {"lights", joinedInts(s.lights)},
@@ -224,7 +225,7 @@ void writeBenchJson(std::ostream& out, const BenchReport& report) {
                    {"timed_frames", s.frames},
                    {"max_seconds", s.maxSeconds},
                    {"constant_density", s.constantDensity},
-                   {"density_reference_lights", kDensityReferenceLights},
+                   {"density_reference_lights", densityReferenceLights(s)},
                    {"timing_requested", s.timing}};
   for (Culling c : s.culling) settings["culling"].push_back(toString(c));
   for (ShadingModel m : s.models) settings["models"].push_back(toString(m));

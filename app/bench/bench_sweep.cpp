@@ -19,8 +19,14 @@ double percentile(const std::vector<double>& sorted, double q) {
 
 }  // namespace
 
-float densityRadiusScale(int lights) {
-  return lights > 0 ? std::sqrt(static_cast<float>(kDensityReferenceLights) / static_cast<float>(lights)) : 1.0f;
+int densityReferenceLights(const BenchSettings& settings) {
+  return settings.lights.empty() ? 0 : *std::min_element(settings.lights.begin(), settings.lights.end());
+}
+
+float densityRadiusScale(int lights, int referenceLights) {
+  return lights > 0 && referenceLights > 0
+             ? std::sqrt(static_cast<float>(referenceLights) / static_cast<float>(lights))
+             : 1.0f;
 }
 
 std::string BenchConfig::label() const {
