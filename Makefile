@@ -53,6 +53,8 @@ bench: build
 	./$(BUILD)/pbr bench --pair-cost default,blinn-phong,blinn-phong-sg --rounds 9 \
 	  --csv $(BENCH_OUT)/pair-cost.csv --json $(BENCH_OUT)/pair-cost.json
 	scripts/plot_bench.py $(BENCH_OUT)/bench.csv --out $(BENCH_OUT)
+	scripts/plot_light_count.py "$(BENCH_OUT)/million-density.csv=radii shrinking with the count" \
+	  "$(BENCH_OUT)/million.csv=fixed radii" --out $(BENCH_OUT)/perf-light-count.png
 
 # The libFuzzer targets of fuzz/ (clang, ASan + UBSan, in build-fuzz/): each fuzzed for FUZZ_SECONDS, then every
 # regression input; fails on any crash. `make fuzz FUZZ_SECONDS=3600` for a long run.
