@@ -18,6 +18,11 @@ ShaderDefines assignDefines(bool fill, bool stats) {
 
 GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
 
+// Words of one tile's light mask (a bit per light), and of its summary (a bit per mask word): clusters.glsl's
+// clusterMaskWords and clusterSummaryWords.
+uint64_t maskWords(uint32_t lights) { return (uint64_t(lights) + 31) / 32; }
+uint64_t summaryWords(uint32_t lights) { return (maskWords(lights) + 31) / 32; }
+
 // A storage buffer of `bytes` (at least one word, so that it can be bound), all zero.
 std::unique_ptr<Buffer> zeroedBuffer(uint64_t bytes) {
   auto buffer = std::make_unique<Buffer>(std::max<uint64_t>(bytes, 4), nullptr, 0);
@@ -126,9 +131,11 @@ void LightClusters::ensureCapacity(uint64_t entries) {
 // Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound. The masks are
 // all zero between frames (cluster_clear.comp), whatever light count set them.
 void LightClusters::ensureLightBuffers(uint32_t lights) {
-  const uint64_t tiles = uint64_t(dims_.x) * dims_.y, words = (std::max(lights, 1u) + 31u) / 32u;
-  const uint64_t viewBytes = uint64_t(std::max(lights, 1u)) * sizeof(ClusterViewLight);
-  const uint64_t maskBytes = tiles * words * sizeof(uint32_t), summaryBytes = tiles * ((words + 31) / 32) * sizeof(uint32_t);
+  const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
+  lights = std::max(lights, 1u);
+  const uint64_t viewBytes = uint64_t(lights) * sizeof(ClusterViewLight);
+  const uint64_t maskBytes = tiles * maskWords(lights) * sizeof(uint32_t);
+  const uint64_t summaryBytes = tiles * summaryWords(lights) * sizeof(uint32_t);
   if (maskBytes > maxBlockBytes_) {
     throw std::runtime_error(std::to_string(lights) + " lights over " + std::to_string(tiles) + " screen tiles need " +
                              mebibytes(maskBytes) + " of tile masks, more than the OpenGL driver's largest storage "
@@ -164,7 +171,6 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   ensureLightBuffers(lights.count());
   const uint32_t clusters = blockData_.counts.y;
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
-  const uint64_t summaryWords = ((lights.count() + 31u) / 32u + 31u) / 32u;
   blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
   if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) visible_ = zeroedBuffer(lights.count() * 4ull);
@@ -214,7 +220,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   }
   dispatchAssign(fillProgram_, lights.count());
   clearProgram_.use();
-  glDispatchCompute(groupsFor(tiles * summaryWords, 64), 1, 1);
+  glDispatchCompute(groupsFor(tiles * summaryWords(lights.count()), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   PendingStatus& slot = pending_[pendingNext_];

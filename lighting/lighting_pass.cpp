@@ -57,7 +57,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
   const uint32_t chunks = (lights.count() + kLightsPerDispatch - 1) / kLightsPerDispatch;
-  const bool chunked = chunks > 1;
+  const bool chunked = needsLightChunks(lights.count());
   if (chunked && (!partialRadiance || partialRadiance->format() != GL_RGBA32F ||
                   partialRadiance->width() != radiance.width() || partialRadiance->height() != radiance.height())) {
     throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +

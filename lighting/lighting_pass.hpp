@@ -45,6 +45,8 @@ struct LightingOptions {
 // Lights (or list entries) one dispatch of the lighting pass loops over at most: the loop, unrolled by 8, stays
 // under llvmpipe's 65535 iterations per invocation. More lights take several dispatches (LIGHT_CHUNKS).
 constexpr uint32_t kLightsPerDispatch = 262144;
+// Whether the lighting pass takes several dispatches, and so a running-sum image (LightingPass::render).
+inline bool needsLightChunks(uint32_t lights) { return lights > kLightsPerDispatch; }
 
 struct PairCounts {
   uint64_t evaluated = 0;

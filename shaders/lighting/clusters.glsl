@@ -74,12 +74,6 @@ uint clusterIndex(uvec2 pixel, float viewDepth) {
   return (depthSlice(viewDepth) * clusterGrid.dims.y + tile.y) * clusterGrid.dims.x + tile.x;
 }
 
-uvec3 clusterCoords(uint index) {
-  uint tx = index % clusterGrid.dims.x;
-  uint rest = index / clusterGrid.dims.x;
-  return uvec3(tx, rest % clusterGrid.dims.y, rest / clusterGrid.dims.y);
-}
-
 // Arvo 1990, "A Simple Method for Box-Sphere Intersection Testing": squared distance from the centre to the box.
 bool sphereIntersectsAabb(vec3 center, float radius, vec3 lo, vec3 hi) {
   vec3 d = max(lo - center, 0.0) + max(center - hi, 0.0);
