@@ -32,6 +32,10 @@ void Buffer::upload(const void* data, size_t bytes, size_t offset) {
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
+void Buffer::bindRange(GLenum target, GLuint index, size_t offset, size_t bytes) const {
+  glBindBufferRange(target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
+}
+
 Texture::Texture(GLenum internalFormat, int width, int height, int levels)
     : format_(internalFormat), width_(width), height_(height) {
   glTextureStorage2D(id(), levels, internalFormat, width, height);

@@ -71,6 +71,7 @@ class Buffer {
   size_t size() const { return size_; }
   void upload(const void* data, size_t bytes, size_t offset = 0);
   void bindBase(GLenum target, GLuint index) const;
+  void bindRange(GLenum target, GLuint index, size_t offset, size_t bytes) const;
 
  private:
   GlHandle<BufferTraits> handle_;

@@ -1,5 +1,7 @@
 #include "lighting/light_buffer.hpp"
 
+#include <algorithm>
+
 #include <glm/gtc/constants.hpp>
 
 #include "lighting/lighting_bindings.hpp"
@@ -11,9 +13,10 @@ GpuLight toGpuLight(const PointLight& l) {
 }
 
 void LightBuffer::upload(const std::vector<PointLight>& lights) {
-  std::vector<GpuLight> packed;
-  packed.reserve(lights.size());
-  for (const PointLight& l : lights) packed.push_back(toGpuLight(l));
+  // Zero lights past the count: a window's tail is never read, but it is backed.
+  const size_t windows = std::max<size_t>(1, (lights.size() + kLightWindowMax - 1) / kLightWindowMax);
+  std::vector<GpuLight> packed(windows * kLightWindowMax, GpuLight{});
+  for (size_t i = 0; i < lights.size(); ++i) packed[i] = toGpuLight(lights[i]);
   const size_t bytes = packed.size() * sizeof(GpuLight);
   if (!buffer_ || buffer_->size() < bytes) buffer_ = std::make_unique<Buffer>(bytes);
   buffer_->upload(packed.data(), bytes);
@@ -22,6 +25,13 @@ void LightBuffer::upload(const std::vector<PointLight>& lights) {
 
 void LightBuffer::bind() const {
   if (buffer_) buffer_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightSsbo.index);
+}
+
+void LightBuffer::bindWindow(uint32_t first, uint32_t lights) const {
+  if (buffer_) {
+    buffer_->bindRange(GL_UNIFORM_BUFFER, lighting_binding::kLightWindowUbo.index, size_t(first) * sizeof(GpuLight),
+                       size_t(lights) * sizeof(GpuLight));
+  }
 }
 
 }  // namespace pbr

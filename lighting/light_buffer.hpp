@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -9,20 +11,29 @@
 
 namespace pbr {
 
-// std430 mirror of `PointLight` in shaders/lighting/lights.glsl.
+// std430 (and std140) mirror of `PointLight` in shaders/lighting/lights.glsl.
 struct GpuLight {
   glm::vec4 positionRadius;
   glm::vec4 colorIntensity;  // rgb, luminous intensity I = P / (4 pi)
 };
 static_assert(sizeof(GpuLight) == 32, "GpuLight must match its std430 layout");
+static_assert(offsetof(GpuLight, colorIntensity) == 16, "GpuLight must match its std430 layout");
 
 GpuLight toGpuLight(const PointLight& light);
 
-// The frame's point lights in a shader storage buffer, reallocated only when it must grow.
+// Lights in the largest uniform-buffer window the lighting pass reads (64 KiB, the most llvmpipe and most GPUs
+// allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
+constexpr uint32_t kLightWindowMax = 2048;
+
+// The frame's point lights in one buffer, read as a storage buffer (cluster assignment, clustered lighting) and,
+// a window at a time, as a uniform buffer (lighting every light). Reallocated only when it must grow.
 class LightBuffer {
  public:
   void upload(const std::vector<PointLight>& lights);
   void bind() const;
+  // Lights [first, first + lights) as the LightWindow uniform block; `first` a multiple of `lights`, a power of
+  // two no larger than kLightWindowMax.
+  void bindWindow(uint32_t first, uint32_t lights) const;
   unsigned count() const { return count_; }
   size_t bytes() const { return buffer_ ? buffer_->size() : 0; }
 

@@ -1,5 +1,6 @@
 #include "lighting/lighting_pass.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -22,8 +23,16 @@ std::pair<const char*, const char*> imageFormat(unsigned radianceFormat) {
 
 }  // namespace
 
+uint32_t lightWindowLights() {
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlock);
+  uint32_t window = kLightWindowMax;
+  while (window > 1 && uint64_t(window) * sizeof(GpuLight) > uint64_t(maxBlock)) window /= 2;
+  return window;
+}
+
 ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat,
-                                        bool chunked) {
+                                        bool chunked, uint32_t lightWindow) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   const auto [qualifier, maximum] = imageFormat(radianceFormat);
@@ -37,12 +46,13 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
+  if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
   return defines;
 }
 
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked) {
-  return programs_.compute("lighting/deferred.comp",
-                           concat(permutation(o, clustered, radianceFormat, chunked), lightingBindingDefines()));
+  return programs_.compute("lighting/deferred.comp", concat(permutation(o, clustered, radianceFormat, chunked, lightWindow_),
+                                                            lightingBindingDefines()));
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
@@ -56,14 +66,16 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
   const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
-  const uint32_t chunks = (lights.count() + kLightsPerDispatch - 1) / kLightsPerDispatch;
-  const bool chunked = needsLightChunks(lights.count());
+  const bool clustered = clusters != nullptr;
+  const uint32_t perDispatch = lightsPerDispatch(clustered);
+  const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
+  const bool chunked = needsLightChunks(lights.count(), clustered);
   if (chunked && (!partialRadiance || partialRadiance->format() != GL_RGBA32F ||
                   partialRadiance->width() != radiance.width() || partialRadiance->height() != radiance.height())) {
     throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
-                           std::to_string(kLightsPerDispatch) + " lights");
+                           std::to_string(perDispatch) + " lights");
   }
-  const Program& shader = program(options, clusters != nullptr, radiance.format(), chunked);
+  const Program& shader = program(options, clustered, radiance.format(), chunked);
   shader.use();
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);
@@ -88,17 +100,18 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  if (!chunked) {
-    glDispatchCompute(groupsX, groupsY, 1);
-  } else {
+  if (chunked) {
     glBindImageTexture(lighting_binding::kPartialRadianceImage.index, partialRadiance->id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);
-    for (uint32_t c = 0; c < chunks; ++c) {
-      glProgramUniform4ui(shader.id(), 0, c * kLightsPerDispatch, (c + 1) * kLightsPerDispatch, c == 0 ? 1u : 0u,
+  }
+  for (uint32_t c = 0; c < chunks; ++c) {
+    if (!clustered) lights.bindWindow(c * perDispatch, perDispatch);
+    if (chunked) {
+      glProgramUniform4ui(shader.id(), 0, c * perDispatch, (c + 1) * perDispatch, c == 0 ? 1u : 0u,
                           c + 1 == chunks ? 1u : 0u);
-      glDispatchCompute(groupsX, groupsY, 1);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+    glDispatchCompute(groupsX, groupsY, 1);
+    if (chunked) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);

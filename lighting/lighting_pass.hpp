@@ -42,11 +42,14 @@ struct LightingOptions {
   const EnvironmentMaps* environment = nullptr;
 };
 
-// Lights (or list entries) one dispatch of the lighting pass loops over at most: the loop, unrolled by 8, stays
-// under llvmpipe's 65535 iterations per invocation. More lights take several dispatches (LIGHT_CHUNKS).
+// List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
+// over at most: the loop, unrolled by 8, stays under llvmpipe's 65535 iterations per invocation. More take
+// several dispatches (LIGHT_CHUNKS). Shading every light, a dispatch takes one uniform-buffer window of lights.
 constexpr uint32_t kLightsPerDispatch = 262144;
-// Whether the lighting pass takes several dispatches, and so a running-sum image (LightingPass::render).
-inline bool needsLightChunks(uint32_t lights) { return lights > kLightsPerDispatch; }
+
+// The brute-force path's light window: kLightWindowMax lights, or the largest power of two of them that the
+// driver's uniform blocks hold.
+uint32_t lightWindowLights();
 
 struct PairCounts {
   uint64_t evaluated = 0;
@@ -60,7 +63,8 @@ class LightingPass {
   explicit LightingPass(ProgramCache& programs)
       : programs_(programs),
         ambientAlbedo_(programs.library()),
-        ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
+        ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR),
+        lightWindow_(lightWindowLights()) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
   // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
@@ -70,15 +74,19 @@ class LightingPass {
               const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
               const Texture* partialRadiance);
 
+  // Whether a frame of `lights` lights takes several dispatches, and so a running-sum image.
+  bool needsLightChunks(uint32_t lights, bool clustered) const { return lights > lightsPerDispatch(clustered); }
+
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
 
   // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
   static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
-                                   bool chunked = false);
+                                   bool chunked = false, uint32_t lightWindow = kLightWindowMax);
 
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked);
+  uint32_t lightsPerDispatch(bool clustered) const { return clustered ? kLightsPerDispatch : lightWindow_; }
 
   ProgramCache& programs_;  // permutations compiled on first use
   UniformBuffer<LightingBlock> block_;
@@ -86,6 +94,7 @@ class LightingPass {
   Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;
+  uint32_t lightWindow_;  // lights in the uniform-buffer window of the brute-force path
 };
 
 }  // namespace pbr

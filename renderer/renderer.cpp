@@ -51,7 +51,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                       const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
                       const LightingOptions lighting{options.model, options.variant, sceneData_.ambient, options.stats,
                                                      ibl ? &maps : nullptr};
-                      const Texture* partial = needsLightChunks(scene_.lights.count()) ? &t.partialRadiance() : nullptr;
+                      const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
+                      const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                       scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
                                              clustered ? &t.clusters : nullptr, partial);
                     }});
