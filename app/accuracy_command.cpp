@@ -38,7 +38,9 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--variants", "LIST", "comma-separated variants or all (default): " + ladderNames()},
       {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
-      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (default 128)"},
+      {"--pair-lights", "N",
+       "lights reaching every pixel in the cost-per-pair measurement (default " +
+           std::to_string(PairCostSettings{}.lights) + ")"},
       {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn (default 9)"},
       {"--no-cost", "", "skip the cost-per-pair measurement (the chart needs it)"},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go (default out/accuracy)"},
@@ -116,7 +118,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   PairCostSettings cost;
   cost.size = args.getSize("--pair-size", cost.size);
   cost.sizeOption = "--pair-size";
-  cost.lights = args.getInt("--pair-lights", 128, 1, 1 << 16);
+  cost.lights = args.getInt("--pair-lights", cost.lights, 1, 1 << 16);
   cost.rounds = args.getInt("--rounds", 9, 1, 10000);
   const bool measureCost = !args.has("--no-cost");
   const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");

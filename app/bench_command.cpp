@@ -40,7 +40,8 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
-      {"--pair-lights", "N", "lights of the --pair-cost frame (default 64)"},
+      {"--pair-lights", "N",
+       "lights of the --pair-cost frame (default " + std::to_string(PairCostSettings{}.lights) + ")"},
       {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn (default 7)"},
       {"--csv", "F", "write the results as CSV (provenance in leading # lines)"},
       {"--json", "F", "write the results, every timed frame included, as JSON"},
