@@ -92,7 +92,8 @@ uint64_t frameBytesPerPixel(const RendererConfig& config) {
       config.gbuffer == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel;
   const uint64_t ldr = 4;
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
-  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures;
+  const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
+  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums;
 }
 
 std::vector<GLenum> frameFormats(const RendererConfig& config) {
