@@ -178,12 +178,12 @@ int runAccuracy(const std::vector<std::string>& argv) {
   for (const AccuracyScene& s : scenes) {
     reference::ReferenceOptions refOptions = referenceOptions;  // meshes; the geometry row switches a copy
     const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
-    const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.exposure);
+    const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.displayExposure());
     // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.
     if (hasOnlyAnalyticShapes(s.scene)) {
       refOptions.geometry = reference::Geometry::Analytic;
       const reference::ReferenceFrame exact = reference::renderReference(s.scene, size.x, size.y, refOptions);
-      const ImageRgba8 exactLdr = displayImage(shaders, exact.radiance, s.scene.exposure);
+      const ImageRgba8 exactLdr = displayImage(shaders, exact.radiance, s.scene.displayExposure());
       writeRow("geometry", s.label, "reference", "triangle meshes against the exact shapes", "-", "-", nullptr,
                measureError(ref.radiance, refLdr, exact, exactLdr));
     }
@@ -192,7 +192,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
       FrameOptions options;
       options.model = v.model;
       options.variant = v.shading;
-      options.exposure = s.scene.exposure;
+      options.exposure = s.scene.displayExposure();
       RendererConfig config;
       config.hdrFormat = v.hdr;
       config.gbuffer = v.gbuffer;

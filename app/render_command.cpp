@@ -40,6 +40,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
+      ev100Option(),
       {"--environment", "F.hdr|sky", "image-based lighting (PBR) and background from a Radiance .hdr or the "
                                      "procedural sky, replacing the scene's environment"},
       {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"},
@@ -183,7 +184,7 @@ int runRender(const std::vector<std::string>& argv) {
 
   Scene scene = resolveScene(sceneName, sceneParams);
   applyEnvironmentOptions(args, scene);
-  const float exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  const float exposure = applyExposureOptions(args, scene);
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.
   std::optional<OutputFile> pngFile, hdrFile, jsonFile;
@@ -194,8 +195,10 @@ int runRender(const std::vector<std::string>& argv) {
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
-  std::printf("scene: %s, %dx%d, %zu lights, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
-              scene.lights.size(), toString(model),
+  const std::string directional =
+      scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
+  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
+              scene.lights.size(), directional.c_str(), toString(model),
               (" (" + describeTerms(model, variant) + ")").c_str(),
               toString(culling));
 

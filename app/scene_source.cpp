@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "app/args.hpp"
+#include "core/exposure.hpp"
 #include "core/scene_json.hpp"
 
 namespace pbr {
@@ -13,6 +14,18 @@ OptionSpec allowOutsideUrisOption() {
 }
 
 UriPolicy uriPolicy(const Args& args) { return {args.has("--allow-outside-uris")}; }
+
+OptionSpec ev100Option() {
+  return {"--ev100", "EV",
+          "physical exposure: the camera's exposure value at ISO 100 (sunny day about 15, indoors 6-8), scaling "
+          "radiance by 1 / (1.2 2^EV) before --exposure (default: the scene camera's, or none)"};
+}
+
+float applyExposureOptions(const Args& args, Scene& scene) {
+  if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", 0.0f, -kMaxEv100, kMaxEv100);
+  scene.exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  return scene.displayExposure();
+}
 
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (params.viewAngleDeg && nameOrPath != "fresnel-floor") {

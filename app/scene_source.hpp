@@ -11,6 +11,11 @@ namespace pbr {
 // fresnel-floor.
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 
+// --ev100, taken with --exposure by the commands that show frames, and the exposure the post pass applies once
+// both replace the scene's (Scene::displayExposure).
+OptionSpec ev100Option();
+float applyExposureOptions(const Args& args, Scene& scene);
+
 // --allow-outside-uris, taken by every command that loads scene files, and the policy it sets.
 OptionSpec allowOutsideUrisOption();
 UriPolicy uriPolicy(const Args& args);

@@ -339,18 +339,24 @@ class Loader {
     const int index = ref.GetNumberAsInt();
     const tinygltf::Light& l = lights[static_cast<size_t>(index)];
     const std::string name = "extensions.KHR_lights_punctual." + gltfElement("lights", index);
-    if (l.type != "point") {
+    if (l.type != "point" && l.type != "directional") {
       file_.warn(name + ": " + l.type + " lights are not supported, skipped");
+      return;
+    }
+    glm::vec3 color(1.0f);
+    if (!l.color.empty()) {
+      const std::vector<double> c = checkedArray(file_, l.color, 3, name + ".color");
+      color = glm::vec3(c[0], c[1], c[2]);
+      if (glm::any(glm::lessThan(color, glm::vec3(0.0f)))) file_.fail(name + ".color: must be >= 0");
+    }
+    if (!std::isfinite(l.intensity) || l.intensity < 0.0) file_.fail(name + ".intensity: must be a finite number >= 0");
+    if (l.type == "directional") {
+      addDirectionalLight(world, color, l.intensity, name);
       return;
     }
     PointLight light;
     light.position = glm::vec3(world[3]);
-    if (!l.color.empty()) {
-      const std::vector<double> c = checkedArray(file_, l.color, 3, name + ".color");
-      light.color = glm::vec3(c[0], c[1], c[2]);
-      if (glm::any(glm::lessThan(light.color, glm::vec3(0.0f)))) file_.fail(name + ".color: must be >= 0");
-    }
-    if (!std::isfinite(l.intensity) || l.intensity < 0.0) file_.fail(name + ".intensity: must be a finite number >= 0");
+    light.color = color;
     if (!std::isfinite(l.range) || l.range < 0.0) file_.fail(name + ".range: must be a positive finite number");
     const float intensity = static_cast<float>(l.intensity);  // candela
     // A point source of intensity I emits P = 4 pi I lumens.
@@ -367,6 +373,16 @@ class Loader {
                  number(kMaxCoordinate));
     }
     scene_.lights.push_back(light);
+  }
+
+  // KHR_lights_punctual: a directional light shines along its node's local -Z, with illuminance in lux.
+  void addDirectionalLight(const glm::mat4& world, const glm::vec3& color, double lux, const std::string& name) {
+    const glm::vec3 direction = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    const float length = glm::length(direction);
+    if (!(length > 0.0f) || !std::isfinite(length)) file_.fail(name + ": its node's transform leaves no direction");
+    const float illuminance = static_cast<float>(lux);
+    if (!std::isfinite(illuminance)) file_.fail(name + ".intensity: too large (got " + number(lux) + ")");
+    scene_.directionalLights.push_back({direction / length, color, illuminance});
   }
 
   const GltfFile& file_;
@@ -394,7 +410,7 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
   // Worked on as a copy: a load that fails leaves the record as it was, with the rest of the scene.
   LoadedGltf loaded = known == scene.gltfFiles.end() ? LoadedGltf{} : known->second;
   const size_t meshes = scene.meshes.size(), textures = scene.textures.size(), objects = scene.objects.size(),
-               lights = scene.lights.size();
+               lights = scene.lights.size(), directionalLights = scene.directionalLights.size();
   try {
     const Bounds bounds = Loader(file, scene, loaded).load(transform);
     scene.gltfFiles[key] = std::move(loaded);
@@ -405,6 +421,7 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
     scene.textures.resize(textures);
     scene.objects.resize(objects);
     scene.lights.resize(lights);
+    scene.directionalLights.resize(directionalLights);
     throw;
   }
 }

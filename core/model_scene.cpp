@@ -57,7 +57,7 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
   if (scene.objects.empty()) throw SceneError(path + ": the model has no triangles to show");
   scene.camera = frameBounds(bounds, 45.0f);
   scene.ambient = glm::vec3(0.03f);
-  if (scene.lights.empty()) scene.lights = defaultLightRig(bounds);
+  if (scene.lights.empty() && scene.directionalLights.empty()) scene.lights = defaultLightRig(bounds);
   return scene;
 }
 

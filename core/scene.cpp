@@ -6,7 +6,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/exposure.hpp"
+
 namespace pbr {
+
+float Scene::displayExposure() const {
+  return ev100 ? static_cast<float>(exposure * exposureFromEv100(*ev100)) : exposure;
+}
 
 SceneObject& Scene::addShape(Shape shape, const glm::mat4& transform, const Material& material) {
   int mesh = -1;
@@ -69,6 +75,7 @@ void validateScene(const Scene& scene, const std::string& source) {
   c.atLeast("camera.near", cam.nearPlane, 1e-6f);
   if (!(cam.farPlane > cam.nearPlane)) c.fail("camera.far", "must be greater than camera.near", cam.farPlane);
   c.atLeast("exposure", scene.exposure, 0.0f);
+  if (scene.ev100) c.inRange("camera.ev100", *scene.ev100, -kMaxEv100, kMaxEv100);
   c.color("ambient", scene.ambient);
   if (scene.environment) {
     const EnvironmentDesc& e = *scene.environment;
@@ -126,6 +133,20 @@ void validateScene(const Scene& scene, const std::string& source) {
     c.atLeast(base + ".radius", l.radius, 0.0f);
     c.color(base + ".color", l.color);
     c.atLeast(base + ".luminous_power", l.luminousPower, 0.0f);
+  }
+  if (scene.directionalLights.size() > kMaxDirectionalLights) {
+    c.fail("directional lights", "at most " + std::to_string(kMaxDirectionalLights) + " are shaded",
+           float(scene.directionalLights.size()));
+  }
+  for (size_t i = 0; i < scene.directionalLights.size(); ++i) {
+    const std::string base = "directional_lights[" + std::to_string(i) + "]";
+    const DirectionalLight& l = scene.directionalLights[i];
+    c.finite(base + ".direction", l.direction);
+    if (std::abs(glm::length(l.direction) - 1.0f) > 1e-3f) {
+      c.fail(base + ".direction", "must be a unit vector", glm::length(l.direction));
+    }
+    c.color(base + ".color", l.color);
+    c.atLeast(base + ".illuminance", l.illuminance, 0.0f);
   }
 }
 

@@ -70,6 +70,16 @@ struct PointLight {
   float luminousPower = 100.0f;  // P in lumens; intensity I = P / (4 pi)
 };
 
+// A light infinitely far away (the sun): parallel rays of illuminance E on a surface facing it, Lo = f E n.l.
+struct DirectionalLight {
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light travels, unit length
+  glm::vec3 color{1.0f};
+  float illuminance = 1.0f;  // E in lux
+};
+
+// Directional lights are shaded for every pixel from one small uniform block (lighting/light_buffer.hpp).
+constexpr size_t kMaxDirectionalLights = 16;
+
 // What lights the scene from afar (image-based lighting, PBR only) and shows behind it: a Radiance .hdr panorama,
 // or the procedural sky when `file` is empty. Loading and precomputation belong to the renderer (ibl/).
 struct EnvironmentDesc {
@@ -91,14 +101,20 @@ struct LoadedGltf {
 struct Scene {
   std::string name;
   Camera camera;
-  float exposure = 1.0f;
+  float exposure = 1.0f;        // a plain multiplier of the HDR image before tone mapping
+  std::optional<float> ev100;   // the camera's exposure value at ISO 100; with it, exposure multiplies 1 / Lmax
+
   glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model; an environment replaces it
   std::optional<EnvironmentDesc> environment;
   std::vector<MeshData> meshes;
   std::vector<TextureData> textures;
   std::vector<SceneObject> objects;
   std::vector<PointLight> lights;
+  std::vector<DirectionalLight> directionalLights;
   std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
+
+  // What the post pass multiplies radiance by: `exposure`, times exposureFromEv100(*ev100) when given.
+  float displayExposure() const;
 
   // Adds the mesh of an analytic shape once and an object that uses it.
   SceneObject& addShape(Shape shape, const glm::mat4& transform, const Material& material);

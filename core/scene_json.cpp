@@ -1,9 +1,11 @@
 #include "core/scene_json.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
@@ -15,6 +17,7 @@
 
 #include "core/assets.hpp"
 #include "core/builtin_scenes.hpp"
+#include "core/exposure.hpp"
 #include "core/gltf_loader.hpp"
 #include "core/image.hpp"
 #include "core/input_file.hpp"
@@ -80,6 +83,21 @@ Camera readCamera(const JsonField& f) {
     f["up"].fail("expected a direction not parallel to target - position (default [0, 1, 0])");
   }
   return c;
+}
+
+// The camera's exposure value at ISO 100, given as such or as the settings that make it; none when neither is given.
+std::optional<float> readEv100(const JsonField& f) {
+  const JsonField ev100 = f["ev100"], aperture = f["aperture"], shutter = f["shutter_s"], iso = f["iso"];
+  const bool settings = aperture.present() || shutter.present() || iso.present();
+  if (ev100.present() && settings) f.fail("expected ev100 or aperture, shutter_s and iso, got both");
+  if (ev100.present()) return static_cast<float>(ev100.number(R::closed(-kMaxEv100, kMaxEv100)));
+  if (!settings) return std::nullopt;
+  const double ev = ev100FromCamera(aperture.number(R::above(0.0)), shutter.number(R::above(0.0)),
+                                    iso.number(R::above(0.0)));
+  if (!(std::abs(ev) <= kMaxEv100)) {
+    f.fail("aperture, shutter_s and iso make EV100 " + std::to_string(ev) + ", outside [-64, 64]");
+  }
+  return static_cast<float>(ev);
 }
 
 // M = T * Rz * Ry * Rx * S: scale, then rotate about X, then Y, then Z, then translate.
@@ -150,7 +168,17 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
   scene.addShape(s, transform, readMaterial(f["material"], folder, scene));
 }
 
-PointLight readLight(const JsonField& f) {
+DirectionalLight readDirectionalLight(const JsonField& f) {
+  DirectionalLight l;
+  const glm::vec3 direction = f["direction"].vec3(R::any());
+  if (!(glm::length(direction) > 0.0f)) f["direction"].fail("expected a non-zero direction (the way the light travels)");
+  l.direction = glm::normalize(direction);
+  l.color = f["color"].vec3OrNumber(R::atLeast(0.0), l.color);
+  l.illuminance = f["illuminance_lux"].number(R::closed(0.0, kMaxCoordinate));
+  return l;
+}
+
+PointLight readPointLight(const JsonField& f) {
   PointLight l;
   l.position = f["position"].vec3(kCoordinate);
   l.color = f["color"].vec3OrNumber(R::atLeast(0.0), l.color);
@@ -223,11 +251,21 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   Scene scene;
   scene.name = fs::path(path).stem().string();
   scene.camera = readCamera(root["camera"]);
+  scene.ev100 = readEv100(root["camera"]);
   scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
   if (root["environment"].present()) scene.environment = readEnvironment(root["environment"], folder);
   for (const JsonField& o : root["objects"].items()) readObject(o, folder, policy, scene);
-  for (const JsonField& l : root["lights"].items()) scene.lights.push_back(readLight(l));
+  for (const JsonField& l : root["lights"].items()) {
+    const std::string type = l["type"].present() ? l["type"].string() : "point";
+    if (type == "point") {
+      scene.lights.push_back(readPointLight(l));
+    } else if (type == "directional") {
+      scene.directionalLights.push_back(readDirectionalLight(l));
+    } else {
+      l["type"].expected("\"point\" (the default) or \"directional\"");
+    }
+  }
   const JsonField random = root["random_lights"];
   if (random.present()) {
     const std::vector<PointLight> lights = readRandomLights(random, lightCount);

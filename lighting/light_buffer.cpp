@@ -1,6 +1,8 @@
 #include "lighting/light_buffer.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 
@@ -12,7 +14,20 @@ GpuLight toGpuLight(const PointLight& l) {
   return {glm::vec4(l.position, l.radius), glm::vec4(l.color, l.luminousPower / (4.0f * glm::pi<float>()))};
 }
 
-void LightBuffer::upload(const std::vector<PointLight>& lights) {
+void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional) {
+  if (directional.size() > kMaxDirectionalLights) {
+    throw std::logic_error(std::to_string(directional.size()) + " directional lights, more than the " +
+                           std::to_string(kMaxDirectionalLights) + " shaded (validateScene refuses them)");
+  }
+  DirectionalLightBlock block{};
+  block.count.x = static_cast<unsigned>(directional.size());
+  for (size_t i = 0; i < directional.size(); ++i) {
+    const DirectionalLight& d = directional[i];
+    block.lights[i] = {glm::vec4(-d.direction, 0.0f), glm::vec4(d.color, d.illuminance)};
+  }
+  directionalBlock_.update(block);
+  directionalCount_ = block.count.x;
+
   // Zero lights past the count: a window's tail is never read, but it is backed.
   const size_t windows = std::max<size_t>(1, (lights.size() + kLightWindowMax - 1) / kLightWindowMax);
   std::vector<GpuLight> packed(windows * kLightWindowMax, GpuLight{});
@@ -25,6 +40,10 @@ void LightBuffer::upload(const std::vector<PointLight>& lights) {
 
 void LightBuffer::bind() const {
   if (buffer_) buffer_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightSsbo.index);
+}
+
+void LightBuffer::bindDirectional() const {
+  directionalBlock_.bind(lighting_binding::kDirectionalLightUbo.index);
 }
 
 void LightBuffer::bindWindow(uint32_t first, uint32_t lights) const {

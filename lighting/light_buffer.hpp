@@ -8,6 +8,7 @@
 
 #include "core/gl_objects.hpp"
 #include "core/scene.hpp"
+#include "core/uniform_buffer.hpp"
 
 namespace pbr {
 
@@ -21,25 +22,43 @@ static_assert(offsetof(GpuLight, colorIntensity) == 16, "GpuLight must match its
 
 GpuLight toGpuLight(const PointLight& light);
 
+// std140 mirror of `DirectionalLightBlock` in shaders/lighting/directional_lights.glsl.
+struct GpuDirectionalLight {
+  glm::vec4 toLight;           // xyz: unit direction towards the light
+  glm::vec4 colorIlluminance;  // rgb, illuminance E in lux
+};
+struct DirectionalLightBlock {
+  glm::uvec4 count;  // x: lights in use
+  GpuDirectionalLight lights[kMaxDirectionalLights];
+};
+static_assert(sizeof(GpuDirectionalLight) == 32, "GpuDirectionalLight must match its std140 layout");
+static_assert(offsetof(DirectionalLightBlock, lights) == 16, "DirectionalLightBlock must match its std140 layout");
+static_assert(sizeof(DirectionalLightBlock) == 16 + 32 * kMaxDirectionalLights, "DirectionalLightBlock: std140");
+
 // Lights in the largest uniform-buffer window the lighting pass reads (64 KiB, the most llvmpipe and most GPUs
 // allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
 constexpr uint32_t kLightWindowMax = 2048;
 
 // The frame's point lights in one buffer, read as a storage buffer (cluster assignment, clustered lighting) and,
-// a window at a time, as a uniform buffer (lighting every light). Reallocated only when it must grow.
+// a window at a time, as a uniform buffer (lighting every light), reallocated only when it must grow; and its
+// directional lights in a uniform block of their own, which no culling touches.
 class LightBuffer {
  public:
-  void upload(const std::vector<PointLight>& lights);
+  void upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional = {});
   void bind() const;
+  void bindDirectional() const;
   // Lights [first, first + lights) as the LightWindow uniform block; `first` a multiple of `lights`, a power of
   // two no larger than kLightWindowMax.
   void bindWindow(uint32_t first, uint32_t lights) const;
   unsigned count() const { return count_; }
+  unsigned directionalCount() const { return directionalCount_; }
   size_t bytes() const { return buffer_ ? buffer_->size() : 0; }
 
  private:
   std::unique_ptr<Buffer> buffer_;
   unsigned count_ = 0;
+  unsigned directionalCount_ = 0;
+  UniformBuffer<DirectionalLightBlock> directionalBlock_{DirectionalLightBlock{}};
 };
 
 }  // namespace pbr

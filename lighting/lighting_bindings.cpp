@@ -8,7 +8,7 @@ namespace pbr {
 ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
   // Built and checked once: the lighting pass asks for its program every frame.
-  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
+  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
                          kLightVisibleSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterViewLightsSsbo, kClusterTileMasksSsbo, kClusterTileWordsSsbo, kClusterOccupancySsbo,
                          kClusterCursorSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,

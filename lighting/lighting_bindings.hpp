@@ -9,6 +9,7 @@ namespace lighting_binding {
 constexpr BindingPoint kLightingUbo{"LIGHTING_UBO", BindingKind::UniformBuffer, 2};
 constexpr BindingPoint kClusterUbo{"CLUSTER_UBO", BindingKind::UniformBuffer, 4};
 constexpr BindingPoint kLightWindowUbo{"LIGHT_WINDOW_UBO", BindingKind::UniformBuffer, 6};
+constexpr BindingPoint kDirectionalLightUbo{"DIRECTIONAL_LIGHT_UBO", BindingKind::UniformBuffer, 7};
 constexpr BindingPoint kLightSsbo{"LIGHT_SSBO", BindingKind::StorageBuffer, 0};
 constexpr BindingPoint kClusterSsbo{"CLUSTER_SSBO", BindingKind::StorageBuffer, 1};
 constexpr BindingPoint kLightIndexSsbo{"LIGHT_INDEX_SSBO", BindingKind::StorageBuffer, 2};

@@ -47,6 +47,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
+  defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
   return defines;
 }
 
@@ -80,6 +81,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);
   lights.bind();
+  lights.bindDirectional();
   if (clusters) clusters->bindForLighting();
   if (ibl) bindEnvironmentMaps(*options.environment);
   if (ambient) {

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "reference/directional_albedo.hpp"
+#include "reference/directional_light.hpp"
 #include "reference/mesh_scene.hpp"
 #include "reference/point_light.hpp"
 #include "reference/raycast.hpp"
@@ -72,8 +73,8 @@ bool ReferenceFrame::interior(int x, int y) const {
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {
   const int threads = options.threads;
   if (scene.environment) {
-    throw SceneError(scene.name + ": environment: the reference renderer has no image-based lighting (point lights "
-                                  "and uniform ambient only)");
+    throw SceneError(scene.name + ": environment: the reference renderer has no image-based lighting (point and "
+                                  "directional lights and uniform ambient only)");
   }
   const std::unique_ptr<const RayCaster> geometry =
       options.geometry == Geometry::Meshes ? std::unique_ptr<const RayCaster>(std::make_unique<MeshScene>(scene))
@@ -96,6 +97,9 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
         const dvec3 V = -ray.direction;
         const double NoV = std::max(glm::dot(hit->normal, V), 1e-4);
         if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * albedo[hit->object](NoV);
+        for (const DirectionalLight& light : scene.directionalLights) {
+          color += reflectedRadiance(light, hit->normal, V, m, options.forms);
+        }
         for (const PointLight& light : scene.lights) {
           color += reflectedRadiance(light, hit->position, hit->normal, V, m, options.forms);
         }

@@ -8,7 +8,7 @@
 
 namespace pbr::reference {
 
-// Renders a scene lit by point lights and uniform ambient light by ray-casting each pixel centre in double
+// Renders a scene lit by point and directional lights and uniform ambient light by ray-casting each pixel centre in double
 // precision and evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and
 // attenuation. The uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated
 // numerically. By default it ray-casts the triangles the GPU rasterizes (mesh_scene.hpp), so that a comparison

@@ -22,7 +22,7 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       post(programs),
       clusterDebug(programs),
       gbufferDebug(programs) {
-  lights.upload(scene.lights);
+  lights.upload(scene.lights, scene.directionalLights);
 }
 
 }  // namespace pbr

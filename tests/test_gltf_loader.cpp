@@ -293,24 +293,39 @@ TEST_CASE("gltf materials: factors, alpha modes, double-sided, emissive strength
   CHECK_FALSE(d.doubleSided);
 }
 
-TEST_CASE("gltf lights: KHR_lights_punctual point lights, intensity to luminous power, range to radius") {
+TEST_CASE("gltf lights: KHR_lights_punctual point and directional lights, intensity to luminous power or lux") {
   const TempDir dir;
   GltfBuilder builder;
   builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
   builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
       {{"type", "point"}, {"intensity", 10.0}, {"range", 5.0}, {"color", {1.0, 0.5, 0.25}}},
       {{"type", "point"}, {"intensity", 2.5}, {"color", {0.5, 0.8, 0.2}}},
-      {{"type", "directional"}, {"intensity", 3.0}}};
+      {{"type", "directional"}, {"intensity", 3.0}},
+      {{"type", "directional"}, {"intensity", 100000.0}, {"color", {1.0, 0.9, 0.8}}}};
+  // The second sun's node turns -Z by -90 degrees about X (quaternion x = -sin 45, w = cos 45): it shines down -Y.
+  const double h = std::sqrt(0.5);
   builder.doc["nodes"] =
       json::array({{{"translation", {1, 2, 3}}, {"children", {1, 2}}},
                    {{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
                    {{"translation", {0, 0, -4}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
-                   {{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}});
-  builder.doc["scenes"][0]["nodes"] = {0, 3};
+                   {{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}},
+                   {{"rotation", {-h, 0, 0, h}}, {"extensions", {{"KHR_lights_punctual", {{"light", 3}}}}}}});
+  builder.doc["scenes"][0]["nodes"] = {0, 3, 4};
   pbr::Scene scene;
   pbr::appendGltf(scene, builder.writeGltf(dir.path(), "lights"));
-  // The directional light is not supported and is skipped with a warning.
   REQUIRE(scene.lights.size() == 2);
+  REQUIRE(scene.directionalLights.size() == 2);
+  // A directional light shines along its node's -Z; its intensity is illuminance in lux.
+  const pbr::DirectionalLight& sun = scene.directionalLights[0];
+  CHECK(sun.direction == glm::vec3(0, 0, -1));
+  CHECK(sun.illuminance == 3.0f);
+  CHECK(sun.color == glm::vec3(1.0f));
+  const pbr::DirectionalLight& turned = scene.directionalLights[1];
+  CHECK(turned.direction.x == doctest::Approx(0.0).epsilon(1e-6));
+  CHECK(turned.direction.y == doctest::Approx(-1.0));
+  CHECK(turned.direction.z == doctest::Approx(0.0).scale(1.0).epsilon(1e-6));
+  CHECK(turned.illuminance == 100000.0f);
+  CHECK(turned.color == glm::vec3(1.0f, 0.9f, 0.8f));
   const pbr::PointLight& a = scene.lights[0];
   CHECK(a.position == glm::vec3(1, 3, 3));
   CHECK(a.luminousPower == doctest::Approx(4.0 * kPi * 10.0));  // P = 4 pi I

@@ -107,6 +107,40 @@ TEST_CASE("scene file: every field of a valid file reaches the scene") {
   }
 }
 
+TEST_CASE("scene file: directional lights and the camera's exposure value") {
+  const TempDir dir;
+  const std::string path = dir.write("sun.json", R"({
+    "camera": {"position": [0, 2, 6], "target": [0, 0, 0], "ev100": 15},
+    "exposure": 2,
+    "lights": [
+      {"type": "directional", "direction": [0, -2, 0], "illuminance_lux": 100000, "color": [1, 0.9, 0.8]},
+      {"position": [0, 3, 0], "luminous_power": 800, "radius": 6}
+    ]
+  })");
+  const pbr::Scene s = pbr::loadSceneFile(path);
+  REQUIRE(s.directionalLights.size() == 1);
+  REQUIRE(s.lights.size() == 1);
+  checkVec(s.directionalLights[0].direction, {0, -1, 0});  // normalised
+  CHECK(s.directionalLights[0].illuminance == 100000.0f);
+  checkVec(s.directionalLights[0].color, {1, 0.9f, 0.8f});
+  REQUIRE(s.ev100.has_value());
+  CHECK(*s.ev100 == 15.0f);
+  // Lmax = 1.2 * 2^EV100 maps to 1, then the plain multiplier.
+  CHECK(s.displayExposure() == doctest::Approx(2.0 / (1.2 * 32768.0)).epsilon(1e-6));
+
+  // f/16 at 1/125 s and ISO 200: EV100 = log2(16^2 * 125 * 100 / 200) = log2(16000).
+  const std::string settings = dir.write("settings.json", R"({
+    "camera": {"position": [0, 2, 6], "target": [0, 0, 0], "aperture": 16, "shutter_s": 0.008, "iso": 200}
+  })");
+  const pbr::Scene t = pbr::loadSceneFile(settings);
+  REQUIRE(t.ev100.has_value());
+  CHECK(*t.ev100 == doctest::Approx(std::log2(16000.0)).epsilon(1e-6));
+  // Without an exposure value the plain multiplier is all there is.
+  const std::string plain = dir.write("plain.json", R"({"camera": {"position": [0, 2, 6], "target": [0, 0, 0]}, "exposure": 3})");
+  CHECK_FALSE(pbr::loadSceneFile(plain).ev100.has_value());
+  CHECK(pbr::loadSceneFile(plain).displayExposure() == 3.0f);
+}
+
 TEST_CASE("scene file: a camera alone is a scene, omitted fields take their documented defaults") {
   const TempDir dir;
   const pbr::Scene s =

@@ -73,6 +73,12 @@ const BadCase kBadCases[] = {
     {"[[-1, 0, -1], [1, 2, 1]]", "[[1, 0, -1], [-1, 2, 1]]", "random_lights.bounds: expected [[min x, y, z], [max x, y, z]] with min <= max, got [[1,0,-1],[-1,2,1]]"},
     {"[[-1, 0, -1], [1, 2, 1]]", "[[-1, 0, -1]]", "random_lights.bounds: expected [[min x, y, z], [max x, y, z]] with min <= max, got [[-1,0,-1]]"},
     {R"("radius": [1, 2])", R"("radius": [2, 1])", "random_lights.radius: expected [lo, hi], lo <= hi, each a number in [0, 1e+12], got [2,1]"},
+    {R"({"position": [1, 3, 1])", R"({"type": "spot", "position": [1, 3, 1])", R"(lights[0].type: expected "point" (the default) or "directional", got "spot")"},
+    {R"({"position": [1, 3, 1], "color": [1, 1, 1], "luminous_power": 100, "radius": 5})", R"({"type": "directional", "direction": [0, 0, 0], "illuminance_lux": 5})", "lights[0].direction: expected a non-zero direction"},
+    {R"({"position": [1, 3, 1], "color": [1, 1, 1], "luminous_power": 100, "radius": 5})", R"({"type": "directional", "direction": [0, -1, 0]})", "lights[0].illuminance_lux: expected a number in [0, 1e+12], but the field is missing"},
+    {R"("fov_y_deg": 50)", R"("fov_y_deg": 50, "ev100": 12, "iso": 100)", "camera: expected ev100 or aperture, shutter_s and iso, got both"},
+    {R"("fov_y_deg": 50)", R"("fov_y_deg": 50, "aperture": 8, "iso": 100)", "camera.shutter_s: expected a finite number > 0, but the field is missing"},
+    {R"("fov_y_deg": 50)", R"("fov_y_deg": 50, "ev100": 99)", "camera.ev100: expected a number in [-64, 64], got 99"},
     // files the scene names
     {R"("metalness": 0})", R"("metalness": 0, "base_color_texture": "no/such.png"})", "objects[0].material.base_color_texture: "},
     {R"({"shape": "sphere", "transform": {"translate": [0, 1, 0], "scale": 2}, "material": {"base_color": [0.8, 0.2, 0.2], "roughness": 0.4, "metalness": 0}})",

@@ -53,7 +53,7 @@ BenchResult runBenchConfig(const ShaderLibrary& shaders, const Scene& scene, con
   FrameOptions options;
   options.model = config.model;
   options.culling = config.culling;
-  options.exposure = scene.exposure;
+  options.exposure = scene.displayExposure();
   const int total = settings.warmup + settings.frames + 1;
 
   // The first frame also pays for shader specialization and sizes the cluster lists, so the estimate errs long.

@@ -41,7 +41,7 @@ ExperimentResult runFresnelExperiment(const ShaderLibrary& shaders, glm::ivec2 r
     for (ShadingModel model : {ShadingModel::Pbr, ShadingModel::BlinnPhong}) {
       FrameOptions options;
       options.model = model;
-      options.exposure = textured.exposure;
+      options.exposure = textured.displayExposure();
       const double radiance = centreRadiance(renderOffscreen(shaders, specular, size, options, 1).hdr);
       row.push_back(model == ShadingModel::Pbr ? radiance / (intensity * att) : radiance / att);
       const std::string name = std::string("fresnel-") + toString(model) + "-" + std::to_string(int(angle)) + ".png";

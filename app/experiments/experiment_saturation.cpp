@@ -33,7 +33,7 @@ ExperimentResult runSaturationExperiment(const ShaderLibrary& shaders, glm::ivec
     for (ShadingModel model : {ShadingModel::Pbr, ShadingModel::BlinnPhong}) {
       FrameOptions options;
       options.model = model;
-      options.exposure = scene.exposure;
+      options.exposure = scene.displayExposure();
       const RenderedFrames frames = renderOffscreen(shaders, scene, size, options, 1);
       row.push_back(saturatedPixels(frames.ldr));
       if (n == 1 || n == maxLights) {

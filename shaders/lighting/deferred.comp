@@ -10,6 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "surface.glsl"
 #include "lights.glsl"
+#include "directional_lights.glsl"
 #if SHADING_MODEL_BLINN_PHONG
 #include "model_blinn_phong.glsl"
 #else
@@ -84,13 +85,16 @@ void visitLight(Surface s, uint k) {
 #endif
 }
 
-// Light arriving from everything but the point lights.
+// Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
+// directional lights, added in their order.
 vec3 shadeEnvironment(Surface s) {
 #if IBL
-  return shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
+  vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
 #else
-  return shadeAmbient(s);
+  vec3 color = shadeAmbient(s);
 #endif
+  for (uint i = 0u; i < directionalCount.x; ++i) color += shadeDirectional(s, directionalLights[i]);
+  return color;
 }
 
 #if IBL
@@ -117,13 +121,13 @@ void main() {
 #endif
     return;
   }
+  beginShading(s);
 #if LIGHT_CHUNKS
   gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + shadeEnvironment(s) : imageLoad(partialRadiance, p).rgb;
 #else
   gColor = imageLoad(radiance, p).rgb + shadeEnvironment(s);
 #endif
   gContributing = 0u;
-  beginShading(s);
 #if CLUSTERED
   gHeader = headers[clusterIndex(uvec2(p), s.viewDepth)];
   gListed = listFits(gHeader);

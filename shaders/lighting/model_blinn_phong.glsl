@@ -33,14 +33,24 @@ void beginShading(Surface s) {
   gShininess = 2.0 / (a * a) - 2.0;
 }
 
+// Light of LDR colour `color` from unit direction L, scaled by `weight` (a point light's attenuation).
+vec3 shadeIncident(Surface s, vec3 L, vec3 color, float weight) {
+  float NoL = dot(s.normal, L);
+  if (NoL <= 0.0 || weight <= 0.0) return vec3(0.0);
+  float NoH = max(dot(s.normal, normalize(s.V + L)), 0.0);
+  return (gDiffuse * NoL + gSpecularColor * lobe(NoH)) * color * weight;
+}
+
 vec3 shadeLight(Surface s, PointLight light) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
-  float NoL = dot(s.normal, L);
-  float att = distanceAttenuation(d2, light.positionRadius.w);
-  if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
-  float NoH = max(dot(s.normal, normalize(s.V + L)), 0.0);
-  return (gDiffuse * NoL + gSpecularColor * lobe(NoH)) * light.colorIntensity.rgb * att;
+  return shadeIncident(s, L, light.colorIntensity.rgb, distanceAttenuation(d2, light.positionRadius.w));
+}
+
+// As a point light's intensity, a directional light's illuminance has no place in an LDR model: its colour is its
+// strength.
+vec3 shadeDirectional(Surface s, DirectionalLight light) {
+  return shadeIncident(s, light.toLight.xyz, light.colorIlluminance.rgb, 1.0);
 }
 
 vec3 finishShading(vec3 color) { return clamp(color, 0.0, 1.0); }

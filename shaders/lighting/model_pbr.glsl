@@ -30,14 +30,24 @@ void beginShading(Surface s) {
   gBrdf = brdfSurface(s.normal, s.V, s.NoV, s.baseColor, s.roughness, s.metalness);
 }
 
+// Light of colour `color` arriving from unit direction L with `strength` lux on a surface facing it: f E n.l.
+vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
+  float NoL = dot(s.normal, L);
+  if (NoL <= 0.0 || strength <= 0.0) return vec3(0.0);
+  vec3 f = brdfCookTorrance(gBrdf, L);
+  return f * color * (strength * NoL);
+}
+
+// A point light of intensity I gives I att / d^2 lux, att windowed (distanceAttenuation holds the 1 / d^2).
 vec3 shadeLight(Surface s, PointLight light) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
-  float NoL = dot(s.normal, L);
   float att = distanceAttenuation(d2, light.positionRadius.w);
-  if (NoL <= 0.0 || att <= 0.0) return vec3(0.0);
-  vec3 f = brdfCookTorrance(gBrdf, L);
-  return f * light.colorIntensity.rgb * (light.colorIntensity.w * att * NoL);
+  return shadeIncident(s, L, light.colorIntensity.rgb, light.colorIntensity.w * att);
+}
+
+vec3 shadeDirectional(Surface s, DirectionalLight light) {
+  return shadeIncident(s, light.toLight.xyz, light.colorIlluminance.rgb, light.colorIlluminance.w);
 }
 
 vec3 finishShading(vec3 color) { return min(color, vec3(FP16_MAX)); }

@@ -1,0 +1,13 @@
+#include "core/exposure.hpp"
+
+#include <cmath>
+
+namespace pbr {
+
+double ev100FromCamera(double aperture, double shutterSeconds, double iso) {
+  return std::log2(aperture * aperture / shutterSeconds * 100.0 / iso);
+}
+
+double exposureFromEv100(double ev100) { return 1.0 / (1.2 * std::exp2(ev100)); }
+
+}  // namespace pbr

@@ -1,0 +1,12 @@
+#pragma once
+#include "core/scene.hpp"
+#include "reference/reference_brdf.hpp"
+
+namespace pbr::reference {
+
+// Radiance towards V that the reference PBR model reflects from one directional light of illuminance E (lux):
+// f(l, v) E n.l with l against the way the light travels; 0 where n.l <= 0.
+dvec3 reflectedRadiance(const DirectionalLight& light, const dvec3& N, const dvec3& V, const ReferenceMaterial& m,
+                        const BrdfForms& forms);
+
+}  // namespace pbr::reference
