@@ -41,6 +41,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
       ev100Option(),
+      cameraOption(),
       {"--environment", "F.hdr|sky", "image-based lighting (PBR) and background from a Radiance .hdr or the "
                                      "procedural sky, replacing the scene's environment"},
       {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"},
@@ -184,6 +185,7 @@ int runRender(const std::vector<std::string>& argv) {
 
   Scene scene = resolveScene(sceneName, sceneParams);
   applyEnvironmentOptions(args, scene);
+  applyCameraOption(args, scene);
   const float exposure = applyExposureOptions(args, scene);
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.

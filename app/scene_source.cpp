@@ -21,6 +21,27 @@ OptionSpec ev100Option() {
           "radiance by 1 / (1.2 2^EV) before --exposure (default: the scene camera's, or none)"};
 }
 
+OptionSpec cameraOption() {
+  return {"--camera", "N|auto",
+          "view through the scene's glTF camera N (from 0, in node order) or, for a model given alone, auto: "
+          "framed to its bounds (default: the scene file's camera; a model's first camera, else auto)"};
+}
+
+void applyCameraOption(const Args& args, Scene& scene) {
+  if (!args.has("--camera")) return;
+  const std::string choice = args.get("--camera", "");
+  if (choice == "auto") {
+    if (!scene.framedCamera) throw UsageError("--camera auto applies to a .gltf or .glb given alone as --scene");
+    scene.camera = *scene.framedCamera;
+    return;
+  }
+  if (scene.cameras.empty()) {
+    throw UsageError("--camera " + choice + ": the scene has no glTF camera (auto frames a model given alone)");
+  }
+  const int index = args.getInt("--camera", 0, 0, static_cast<int>(scene.cameras.size()) - 1);
+  scene.camera = scene.cameras[static_cast<size_t>(index)];
+}
+
 float applyExposureOptions(const Args& args, Scene& scene) {
   if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", 0.0f, -kMaxEv100, kMaxEv100);
   scene.exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);

@@ -16,6 +16,10 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 OptionSpec ev100Option();
 float applyExposureOptions(const Args& args, Scene& scene);
 
+// --camera N|auto: one of the glTF cameras of the scene, or the framing of a model given alone.
+OptionSpec cameraOption();
+void applyCameraOption(const Args& args, Scene& scene);
+
 // --allow-outside-uris, taken by every command that loads scene files, and the policy it sets.
 OptionSpec allowOutsideUrisOption();
 UriPolicy uriPolicy(const Args& args);

@@ -20,6 +20,7 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--culling", "C", "clustered (default) or none at start (key C switches)"},
       {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},
       ev100Option(),
+      cameraOption(),
       {"--size", "WxH", "window size in pixels (default 1280x720)"},
       {"--paused", "", "start with the light animation paused (key P toggles)"},
       {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)"},
@@ -64,6 +65,7 @@ int runView(const std::vector<std::string>& argv) {
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 
   Scene scene = resolveScene(options.sceneName, options.sceneParams);
+  applyCameraOption(args, scene);
   options.frame.exposure = applyExposureOptions(args, scene);
   Viewer viewer(options, std::move(scene));
   std::printf("renderer: %s | %s | %s\n", viewer.window().info().renderer.c_str(),

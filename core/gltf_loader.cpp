@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -160,15 +161,61 @@ class Loader {
       if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
+      if (node.camera >= 0) addCamera(node.camera, world, name + ".camera");
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
         checkNode(*child, name + ".children");
         stack.emplace_back(*child, world);
       }
     }
+    // glTF leaves zfar out for an infinite far plane; the depth slices need a finite one, and nothing of the file
+    // lies beyond its bounds, so the far plane is put just past their farthest corner.
+    for (auto& [camera, infinite] : cameras_) {
+      if (infinite) camera.farPlane = std::max(farthestCorner(camera.position) * 1.01f, 2.0f * camera.nearPlane);
+      scene_.cameras.push_back(camera);
+    }
     return bounds_;
   }
 
  private:
+  float farthestCorner(const glm::vec3& from) const {
+    float farthest = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p(corner & 1 ? bounds_.max.x : bounds_.min.x, corner & 2 ? bounds_.max.y : bounds_.min.y,
+                        corner & 4 ? bounds_.max.z : bounds_.min.z);
+      farthest = std::max(farthest, glm::length(p - from));
+    }
+    return farthest;
+  }
+
+  // A perspective camera looks down its node's -Z with +Y up; the frame's own aspect ratio replaces the file's.
+  void addCamera(int index, const glm::mat4& world, const std::string& field) {
+    const auto& cameras = file_.model.cameras;
+    if (static_cast<size_t>(index) >= cameras.size()) {
+      file_.fail(field + ": not the index of one of the file's " + std::to_string(cameras.size()) + " cameras");
+    }
+    const tinygltf::Camera& c = cameras[static_cast<size_t>(index)];
+    const std::string name = gltfElement("cameras", index);
+    if (c.type != "perspective") {
+      file_.warn(name + ": " + c.type + " cameras are not supported, skipped");
+      return;
+    }
+    const tinygltf::PerspectiveCamera& p = c.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>())) file_.fail(name + ".perspective.yfov: must be in (0, pi)");
+    if (!(p.znear > 0.0 && p.znear <= kMaxCoordinate)) file_.fail(name + ".perspective.znear: must be > 0");
+    if (p.zfar != 0.0 && !(p.zfar > p.znear && p.zfar <= kMaxCoordinate)) {
+      file_.fail(name + ".perspective.zfar: must be greater than znear");
+    }
+    Camera camera;
+    camera.position = glm::vec3(world[3]);
+    const glm::vec3 forward = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f));
+    camera.target = camera.position + forward;
+    camera.up = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 1.0f, 0.0f));
+    camera.fovYDeg = static_cast<float>(glm::degrees(p.yfov));
+    camera.nearPlane = static_cast<float>(p.znear);
+    camera.farPlane = static_cast<float>(p.zfar);  // 0: tinygltf's absent zfar, set from the bounds in load()
+    cameras_.push_back({camera, p.zfar == 0.0});
+  }
+
   // A node's transform combined with its parents' may still overflow or collapse; the node is named, not the
   // camera or lights computed from it later.
   void checkWorld(const glm::mat4& world, const tinygltf::Node& node, const std::string& name) const {
@@ -389,6 +436,7 @@ class Loader {
   Scene& scene_;
   LoadedGltf& loaded_;
   GltfMaterials materials_;
+  std::vector<std::pair<Camera, bool>> cameras_;  // and whether the file left its far plane out
   Bounds bounds_;
   bool empty_ = true;
 };
@@ -410,7 +458,8 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
   // Worked on as a copy: a load that fails leaves the record as it was, with the rest of the scene.
   LoadedGltf loaded = known == scene.gltfFiles.end() ? LoadedGltf{} : known->second;
   const size_t meshes = scene.meshes.size(), textures = scene.textures.size(), objects = scene.objects.size(),
-               lights = scene.lights.size(), directionalLights = scene.directionalLights.size();
+               lights = scene.lights.size(), directionalLights = scene.directionalLights.size(),
+               cameras = scene.cameras.size();
   try {
     const Bounds bounds = Loader(file, scene, loaded).load(transform);
     scene.gltfFiles[key] = std::move(loaded);
@@ -422,6 +471,7 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
     scene.objects.resize(objects);
     scene.lights.resize(lights);
     scene.directionalLights.resize(directionalLights);
+    scene.cameras.resize(cameras);
     throw;
   }
 }

@@ -55,7 +55,9 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
   scene.name = std::filesystem::path(path).stem().string();
   const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy);
   if (scene.objects.empty()) throw SceneError(path + ": the model has no triangles to show");
-  scene.camera = frameBounds(bounds, 45.0f);
+  scene.framedCamera = frameBounds(bounds, 45.0f);
+  // The file's own first camera, as its author placed it; auto-framing where it has none.
+  scene.camera = scene.cameras.empty() ? *scene.framedCamera : scene.cameras.front();
   scene.ambient = glm::vec3(0.03f);
   if (scene.lights.empty() && scene.directionalLights.empty()) scene.lights = defaultLightRig(bounds);
   return scene;

@@ -111,6 +111,8 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<PointLight> lights;
   std::vector<DirectionalLight> directionalLights;
+  std::vector<Camera> cameras;          // the glTF files' perspective cameras, in node order (`--camera N`)
+  std::optional<Camera> framedCamera;   // a model given alone: the camera that frames its bounds (`--camera auto`)
   std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
 
   // What the post pass multiplies radiance by: `exposure`, times exposureFromEv100(*ev100) when given.

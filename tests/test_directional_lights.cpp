@@ -92,7 +92,7 @@ TEST_CASE("directional lights: a floor's radiance is f E n.l, as the double-prec
   }
 }
 
-TEST_CASE("directional lights: a light from below the surface adds nothing, for either model") {
+TEST_CASE("directional lights: a light from below the surface adds nothing in either model") {
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const glm::ivec2 size{48, 27};
@@ -137,7 +137,7 @@ TEST_CASE("directional lights: Blinn-Phong takes the light's colour as its stren
   }
 }
 
-TEST_CASE("physical exposure: a white floor under a 100,000 lux sun at EV100 15 reads f E / (1.2 2^15)") {
+TEST_CASE("physical exposure: a white floor under a 100000 lux sun at EV100 15 reads f E / (1.2 2^15)") {
   PBR_REQUIRE_GL();
   const TempDir dir;
   const std::string scenePath = dir.write("sun.json", R"({

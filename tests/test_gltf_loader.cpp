@@ -19,6 +19,7 @@
 #include "core/assets.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/gltf_loader.hpp"
+#include "core/model_scene.hpp"
 #include "core/mesh_tangent_space.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
@@ -293,7 +294,7 @@ TEST_CASE("gltf materials: factors, alpha modes, double-sided, emissive strength
   CHECK_FALSE(d.doubleSided);
 }
 
-TEST_CASE("gltf lights: KHR_lights_punctual point and directional lights, intensity to luminous power or lux") {
+TEST_CASE("gltf lights: KHR_lights_punctual point and directional lights with intensity as luminous power or lux") {
   const TempDir dir;
   GltfBuilder builder;
   builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -337,6 +338,41 @@ TEST_CASE("gltf lights: KHR_lights_punctual point and directional lights, intens
   // No range: the distance where I x (brightest channel) / d^2 falls to the stated cut-off illuminance.
   CHECK(b.radius == doctest::Approx(std::sqrt(2.5 * 0.8 / pbr::kGltfLightCutoffIlluminance)));
   CHECK(2.5f * 0.8f / (b.radius * b.radius) == doctest::Approx(pbr::kGltfLightCutoffIlluminance));
+}
+
+TEST_CASE("gltf cameras: perspective cameras in node order, placed by their nodes and an absent zfar ends past the bounds") {
+  const TempDir dir;
+  GltfBuilder builder;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, {})}});
+  builder.doc["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.2}, {"zfar", 30.0}}}},
+      {{"type", "orthographic"}, {"orthographic", {{"xmag", 1.0}, {"ymag", 1.0}, {"znear", 0.1}, {"zfar", 10.0}}}},
+      {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.05}}}}};
+  // The second perspective camera turns 90 degrees about +Y: it looks down -X.
+  const double h = std::sqrt(0.5);
+  builder.doc["nodes"].push_back({{"translation", {0, 0, 5}}, {"camera", 0}});
+  builder.doc["nodes"].push_back({{"translation", {0, 1, 0}}, {"camera", 1}});
+  builder.doc["nodes"].push_back({{"translation", {6, 0, 0}}, {"rotation", {0, h, 0, h}}, {"camera", 2}});
+  builder.doc["scenes"][0]["nodes"] = {0, 1, 2, 3};
+  const pbr::Scene scene = pbr::loadModelScene(builder.writeGltf(dir.path(), "cameras"));
+  REQUIRE(scene.cameras.size() == 2);  // the orthographic one is skipped with a warning
+  const pbr::Camera& a = scene.cameras[0];
+  CHECK(a.position == glm::vec3(0, 0, 5));
+  CHECK(a.target == glm::vec3(0, 0, 4));
+  CHECK(a.up == glm::vec3(0, 1, 0));
+  CHECK(a.fovYDeg == doctest::Approx(0.5 * 180.0 / kPi));
+  CHECK(a.nearPlane == 0.2f);
+  CHECK(a.farPlane == 30.0f);
+  const pbr::Camera& b = scene.cameras[1];
+  CHECK(b.position == glm::vec3(6, 0, 0));
+  CHECK(b.target.x == doctest::Approx(5.0));
+  CHECK(b.target.z == doctest::Approx(0.0).epsilon(1e-6));
+  // No zfar: the far plane lies just past the farthest corner of the quad's bounds, (-1, +-1, 0) at sqrt(50).
+  CHECK(b.farPlane == doctest::Approx(std::sqrt(50.0) * 1.01).epsilon(1e-5));
+  // The model's view is its first camera; the framing stays for --camera auto.
+  CHECK(scene.camera.position == a.position);
+  REQUIRE(scene.framedCamera.has_value());
+  CHECK(scene.framedCamera->target == glm::vec3(0.0f));
 }
 
 TEST_CASE("gltf errors: malformed files give one line naming the file and the field") {
