@@ -199,6 +199,7 @@ int runRender(const std::vector<std::string>& argv) {
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
   const std::string directional =
       scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
+  for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
   std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), directional.c_str(), toString(model),
               (" (" + describeTerms(model, variant) + ")").c_str(),

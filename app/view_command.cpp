@@ -67,6 +67,7 @@ int runView(const std::vector<std::string>& argv) {
   Scene scene = resolveScene(options.sceneName, options.sceneParams);
   applyCameraOption(args, scene);
   options.frame.exposure = applyExposureOptions(args, scene);
+  for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
   Viewer viewer(options, std::move(scene));
   std::printf("renderer: %s | %s | %s\n", viewer.window().info().renderer.c_str(),
               viewer.window().info().version.c_str(), viewer.window().info().platform.c_str());

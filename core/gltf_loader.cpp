@@ -144,6 +144,10 @@ class Loader {
       : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded) {}
 
   Bounds load(const glm::mat4& transform) {
+    const auto& used = file_.model.extensionsUsed;
+    if (!file_.model.lights.empty() || std::find(used.begin(), used.end(), "KHR_lights_punctual") != used.end()) {
+      scene_.lightsDeclared = true;
+    }
     // Depth first, children in order; glTF node hierarchies are trees, so a node met twice is malformed.
     std::vector<std::pair<int, glm::mat4>> stack;
     const std::vector<int> roots = rootNodes();

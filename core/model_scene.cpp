@@ -59,7 +59,12 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
   // The file's own first camera, as its author placed it; auto-framing where it has none.
   scene.camera = scene.cameras.empty() ? *scene.framedCamera : scene.cameras.front();
   scene.ambient = glm::vec3(0.03f);
-  if (scene.lights.empty() && scene.directionalLights.empty()) scene.lights = defaultLightRig(bounds);
+  // Only a file silent about lights gets the rig: one that declares lights it has none of (or none this renderer
+  // shades) is rendered as it says, by its ambient light alone.
+  if (scene.lights.empty() && scene.directionalLights.empty() && !scene.lightsDeclared) {
+    scene.lights = defaultLightRig(bounds);
+    scene.notes.push_back("the file has no lights: lit by a default rig of three point lights");
+  }
   return scene;
 }
 

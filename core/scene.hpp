@@ -113,6 +113,8 @@ struct Scene {
   std::vector<DirectionalLight> directionalLights;
   std::vector<Camera> cameras;          // the glTF files' perspective cameras, in node order (`--camera N`)
   std::optional<Camera> framedCamera;   // a model given alone: the camera that frames its bounds (`--camera auto`)
+  bool lightsDeclared = false;          // a glTF file spoke of lights (KHR_lights_punctual), even if none loaded
+  std::vector<std::string> notes;       // what a loader put in where the file was silent, for the commands to say
   std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
 
   // What the post pass multiplies radiance by: `exposure`, times exposureFromEv100(*ev100) when given.

@@ -15,6 +15,7 @@
 #include "core/model_scene.hpp"
 #include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
+#include "tests/gltf_builder.hpp"
 
 namespace fs = std::filesystem;
 using pbr::test::TempDir;
@@ -300,5 +301,27 @@ TEST_CASE("scene file: a .gltf given alone is framed and lit by the default rig"
   checkVec(s.camera.target, framed.target);
   CHECK(s.ambient.x > 0.0f);
   CHECK(s.lights.size() == pbr::defaultLightRig(bounds).size());
+  // The rig is said, not slipped in.
+  REQUIRE(s.notes.size() == 1);
+  CHECK(s.notes[0].find("default rig") != std::string::npos);
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(boxAsset(), 10), doctest::Contains("light count"), pbr::SceneError);
+}
+
+TEST_CASE("scene file: a model that declares lights gets no default rig even when none of them is shaded") {
+  const TempDir dir;
+  pbr::test::GltfBuilder builder = pbr::test::quadModel();
+  builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "spot"}, {"intensity", 10.0}, {"spot", {{"outerConeAngle", 0.5}}}}};
+  builder.doc["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  builder.doc["scenes"][0]["nodes"].push_back(1);
+  const pbr::Scene declared = pbr::loadSceneFile(builder.writeGltf(dir.path(), "declared"));
+  CHECK(declared.lightsDeclared);
+  CHECK(declared.lights.empty());
+  CHECK(declared.notes.empty());
+  // A directional light alone is a light: no rig either.
+  builder.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "directional"}, {"intensity", 2.0}};
+  const pbr::Scene sun = pbr::loadSceneFile(builder.writeGltf(dir.path(), "sun"));
+  CHECK(sun.lights.empty());
+  CHECK(sun.directionalLights.size() == 1);
 }
