@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -14,6 +13,7 @@
 #include "core/gltf_json_check.hpp"
 #include "core/input_file.hpp"
 #include "core/json_file.hpp"
+#include "core/messages.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -70,7 +70,7 @@ std::string lowerExtension(const std::string& path) {
 
 void GltfFile::fail(const std::string& what) const { throw SceneError(path + ": " + what); }
 
-void GltfFile::warn(const std::string& what) const { std::cerr << path << ": " << what << "\n"; }
+void GltfFile::warn(const std::string& what) const { warnOnce(path + ": " + what); }
 
 GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   GltfFile file;

@@ -18,7 +18,8 @@ struct GltfFile {
 
   // Throws SceneError("<path>: <what>").
   [[noreturn]] void fail(const std::string& what) const;
-  // One line "<path>: <what>" on stderr, for what is drawn differently from the file's intent.
+  // One line "<path>: <what>" on stderr (warnOnce: once per process), for what is drawn differently from the
+  // file's intent.
   void warn(const std::string& what) const;
 };
 
