@@ -11,8 +11,10 @@ namespace pbr {
 // fresnel-floor.
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 
-// --allow-outside-uris, taken by every command that loads scene files, and the policy it sets.
+// --allow-outside-uris and --strict, taken by every command that loads scene files, and the scene parameters they
+// set (the other parameters left at their defaults).
 OptionSpec allowOutsideUrisOption();
-UriPolicy uriPolicy(const Args& args);
+OptionSpec strictOption();
+SceneParams sceneFileParams(const Args& args);
 
 }  // namespace pbr
