@@ -28,7 +28,8 @@ inline std::string gltfElement(const char* array, int index) {
   return std::string(array) + "[" + std::to_string(index) + "]";
 }
 
-// Extensions this loader implements; a file that requires any other is rejected.
+// Extensions this loader implements; a file that requires any other is rejected, one that uses any other is read
+// without it and says so in one line.
 inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
 
 // Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through

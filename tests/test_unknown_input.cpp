@@ -1,6 +1,6 @@
 // Input the loaders do not understand is named, not silently dropped: a scene key nobody reads is a warning (with
-// --strict, the file is refused). Every command here fails or renders before making a GL context (`pbr reference`
-// renders on the CPU).
+// --strict, the file is refused), a glTF extension used but not implemented is a warning. Every command here fails
+// or renders before making a GL context (`pbr reference` renders on the CPU).
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include "core/scene.hpp"
 #include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
+#include "tests/gltf_builder.hpp"
 
 namespace fs = std::filesystem;
 using pbr::test::PbrRun;
@@ -152,4 +153,25 @@ TEST_CASE("unknown input: every scenes/*.json file loads without a warning") {
     ++files;
   }
   CHECK(files >= 8);
+}
+
+TEST_CASE("unknown input: glTF extensions used but not implemented are listed once, --strict or not") {
+  const TempDir dir;
+  pbr::test::GltfBuilder model = pbr::test::quadModel();
+  model.doc["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_lights_punctual", "KHR_texture_transform"};
+  const std::string path = model.writeGltf(dir.path(), "model");
+  // Placed twice: the second load of the file has nothing new to say.
+  const std::string scene = dir.write("scene.json", R"({
+    "camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+    "objects": [{"gltf": "model.gltf"}, {"gltf": "model.gltf", "transform": {"translate": [1, 0, 0]}}],
+    "lights": [{"position": [0, 0, 3], "luminous_power": 100, "radius": 10}]
+  })");
+  const std::string out = dir.file("frame.pfm");
+  std::vector<std::string> args = referenceRun(scene, out);
+  args.push_back("--strict");
+  const PbrRun run = runPbr(dir, args);
+  CHECK(run.exitCode == 0);
+  CHECK(run.err ==
+        path + ": extensionsUsed not implemented, ignored: KHR_materials_clearcoat, KHR_texture_transform\n");
+  CHECK(fs::exists(out));
 }
