@@ -51,6 +51,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
       allowOutsideUrisOption(),
+      strictOption(),
   };
   return specs;
 }
@@ -130,7 +131,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   chooseTimingMode(timing, "");
   std::vector<AccuracyScene> scenes;
-  for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, uriPolicy(args)));
+  for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, sceneFileParams(args)));
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();

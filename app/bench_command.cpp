@@ -49,6 +49,7 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
       allowOutsideUrisOption(),
+      strictOption(),
   };
   return specs;
 }
@@ -185,9 +186,8 @@ int runBench(const std::vector<std::string>& argv) {
   // Every scene before any rendering, so that a bad scene or light count fails at once.
   std::vector<Scene> scenes;
   for (int lights : settings.lights) {
-    SceneParams params;
+    SceneParams params = sceneFileParams(args);
     params.lights = lights;
-    params.uris = uriPolicy(args);
     Scene scene = resolveScene(settings.scene, params);
     const float scale = settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
     for (PointLight& l : scene.lights) l.radius *= scale;

@@ -6,6 +6,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "core/context.hpp"
+#include "core/messages.hpp"
 #include "core/provenance.hpp"
 
 namespace {
@@ -24,18 +25,6 @@ const Command kCommands[] = {
     {"reference", pbr::runReference, "CPU ray-cast reference frame in double precision (meshes or exact shapes), EXR/PFM"},
     {"accuracy", pbr::runAccuracy, "shading variants against the CPU reference: time vs error CSV, chart, error maps"},
 };
-
-// An error is one line of bounded length whatever produced it: a driver's multi-line log, a path of thousands of
-// characters.
-std::string oneLine(const char* what) {
-  std::string line(what);
-  for (char& c : line) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  constexpr size_t kMaxChars = 400;
-  if (line.size() > kMaxChars) line = line.substr(0, kMaxChars - 3) + "...";
-  return line;
-}
 
 void printUsage(FILE* out) {
   std::fprintf(out, "usage: pbr <command> [options]\n\nA clustered deferred renderer (OpenGL 4.5, headless EGL).\n\ncommands:\n");
@@ -61,19 +50,19 @@ int main(int argc, char** argv) {
     try {
       return c.run(rest);
     } catch (const pbr::UsageError& e) {
-      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, oneLine(e.what()).c_str(), c.name);
+      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, pbr::oneLine(e.what()).c_str(), c.name);
       return 2;
     } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, oneLine(e.what()).c_str(), c.name);
+      std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, pbr::oneLine(e.what()).c_str(), c.name);
       return 2;
     } catch (const pbr::ContextError& e) {
-      std::fprintf(stderr, "pbr %s: no OpenGL 4.5 context: %s\n", c.name, oneLine(e.what()).c_str());
+      std::fprintf(stderr, "pbr %s: no OpenGL 4.5 context: %s\n", c.name, pbr::oneLine(e.what()).c_str());
       return 3;
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "pbr %s: %s\n", c.name, oneLine(e.what()).c_str());
+      std::fprintf(stderr, "pbr %s: %s\n", c.name, pbr::oneLine(e.what()).c_str());
       return 1;
     }
   }
-  std::fprintf(stderr, "pbr: unknown command '%s' (see 'pbr --help')\n", oneLine(all[0].c_str()).c_str());
+  std::fprintf(stderr, "pbr: unknown command '%s' (see 'pbr --help')\n", pbr::oneLine(all[0].c_str()).c_str());
   return 2;
 }

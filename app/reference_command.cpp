@@ -28,6 +28,7 @@ const std::vector<OptionSpec>& referenceOptions() {
                                      "diffuse=lambert-1-f|lambert-1-f-vh|lambert (default: the first of each, "
                                      "visibility=exact,ndf=ggx,fresnel=exact,diffuse=lambert-1-f)"},
       allowOutsideUrisOption(),
+      strictOption(),
   };
   return specs;
 }
@@ -52,8 +53,7 @@ int runReference(const std::vector<std::string>& argv) {
   const std::string out = args.get("--hdr", "");
   if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
   hdrFileFormat(out);  // an unknown extension fails before the frame is traced
-  SceneParams params;
-  params.uris = uriPolicy(args);
+  SceneParams params = sceneFileParams(args);
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const glm::ivec2 size = args.getSize("--size", {640, 360});

@@ -53,6 +53,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
       allowOutsideUrisOption(),
+      strictOption(),
   };
   return specs;
 }
@@ -158,8 +159,7 @@ int runRender(const std::vector<std::string>& argv) {
   RendererConfig rendererConfig;
   rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
   rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer", "lean"));
-  SceneParams sceneParams;
-  sceneParams.uris = uriPolicy(args);
+  SceneParams sceneParams = sceneFileParams(args);
   if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const Culling culling = parseCulling(args.get("--culling", "clustered"));

@@ -13,7 +13,17 @@ OptionSpec allowOutsideUrisOption() {
           "let glTF models read buffers and images outside their own folder (refused by default)"};
 }
 
-UriPolicy uriPolicy(const Args& args) { return {args.has("--allow-outside-uris")}; }
+OptionSpec strictOption() {
+  return {"--strict", "", "refuse a scene file holding a key the reader does not know (a misspelt field) instead of "
+                          "warning about it"};
+}
+
+SceneParams sceneFileParams(const Args& args) {
+  SceneParams params;
+  params.uris = {args.has("--allow-outside-uris")};
+  params.strictKeys = args.has("--strict");
+  return params;
+}
 
 OptionSpec ev100Option() {
   return {"--ev100", "EV",
@@ -56,7 +66,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (isBuiltinScene(nameOrPath)) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
-    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris);
+    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys);
   } else {
     std::string names;
     for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;

@@ -20,8 +20,10 @@ float applyExposureOptions(const Args& args, Scene& scene);
 OptionSpec cameraOption();
 void applyCameraOption(const Args& args, Scene& scene);
 
-// --allow-outside-uris, taken by every command that loads scene files, and the policy it sets.
+// --allow-outside-uris and --strict, taken by every command that loads scene files, and the scene parameters they
+// set (the other parameters left at their defaults).
 OptionSpec allowOutsideUrisOption();
-UriPolicy uriPolicy(const Args& args);
+OptionSpec strictOption();
+SceneParams sceneFileParams(const Args& args);
 
 }  // namespace pbr

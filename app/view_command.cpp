@@ -27,6 +27,7 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--screenshot", "F.png", "where F12 and the end of a --frames run save the frame"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       allowOutsideUrisOption(),
+      strictOption(),
   };
   return specs;
 }
@@ -51,7 +52,7 @@ int runView(const std::vector<std::string>& argv) {
   }
   ViewerOptions options;
   options.sceneName = args.get("--scene", "default");
-  options.sceneParams.uris = uriPolicy(args);
+  options.sceneParams = sceneFileParams(args);
   if (args.has("--lights")) options.sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) options.sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   options.frame.model = parseShadingModel(args.get("--model", "pbr"));

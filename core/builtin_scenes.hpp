@@ -28,6 +28,7 @@ struct SceneParams {
   std::optional<int> lights;          // light count (every scene)
   std::optional<float> viewAngleDeg;  // fresnel-floor: angle between the floor normal and the view direction
   UriPolicy uris;                     // scene files: where glTF buffers and images may be
+  bool strictKeys = false;            // scene files: an unknown key is an error, not a warning (--strict)
 };
 
 std::vector<std::string> builtinSceneNames();

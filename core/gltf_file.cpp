@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -14,6 +13,7 @@
 #include "core/gltf_json_check.hpp"
 #include "core/input_file.hpp"
 #include "core/json_file.hpp"
+#include "core/messages.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -66,11 +66,16 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
+bool isSupportedExtension(const std::string& name) {
+  return std::any_of(std::begin(kSupportedGltfExtensions), std::end(kSupportedGltfExtensions),
+                     [&](const char* supported) { return name == supported; });
+}
+
 }  // namespace
 
 void GltfFile::fail(const std::string& what) const { throw SceneError(path + ": " + what); }
 
-void GltfFile::warn(const std::string& what) const { std::cerr << path << ": " << what << "\n"; }
+void GltfFile::warn(const std::string& what) const { warnOnce(path + ": " + what); }
 
 GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   GltfFile file;
@@ -107,10 +112,14 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   file.encodedImages.resize(file.model.images.size());
 
   for (const std::string& required : file.model.extensionsRequired) {
-    const bool supported = std::any_of(std::begin(kSupportedGltfExtensions), std::end(kSupportedGltfExtensions),
-                                       [&](const char* name) { return required == name; });
-    if (!supported) file.fail("extensionsRequired: " + required + " is not supported");
+    if (!isSupportedExtension(required)) file.fail("extensionsRequired: " + required + " is not supported");
   }
+  // The file is meant to look right without these, or it would require them; it may still look different.
+  std::string ignored;
+  for (const std::string& used : file.model.extensionsUsed) {
+    if (!isSupportedExtension(used)) ignored += (ignored.empty() ? "" : ", ") + used;
+  }
+  if (!ignored.empty()) file.warn("extensionsUsed not implemented, ignored: " + ignored);
   return file;
 }
 

@@ -18,7 +18,8 @@ struct GltfFile {
 
   // Throws SceneError("<path>: <what>").
   [[noreturn]] void fail(const std::string& what) const;
-  // One line "<path>: <what>" on stderr, for what is drawn differently from the file's intent.
+  // One line "<path>: <what>" on stderr (warnOnce: once per process), for what is drawn differently from the
+  // file's intent.
   void warn(const std::string& what) const;
 };
 
@@ -27,7 +28,8 @@ inline std::string gltfElement(const char* array, int index) {
   return std::string(array) + "[" + std::to_string(index) + "]";
 }
 
-// Extensions this loader implements; a file that requires any other is rejected.
+// Extensions this loader implements; a file that requires any other is rejected, one that uses any other is read
+// without it and says so in one line.
 inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
 
 // Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through

@@ -22,9 +22,10 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
 // images they use are appended, and KHR_lights_punctual point lights join scene.lights. Normals missing from a
 // primitive are generated flat, tangents missing are generated per vertex. Points and lines, spot and directional
-// lights are skipped and alphaMode BLEND is drawn opaque, each with one line on stderr. Returns the world bounds of
-// the geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
-// other than KHR_lights_punctual and KHR_materials_emissive_strength, leaving `scene` as it was.
+// lights are skipped, alphaMode BLEND is drawn opaque and used extensions outside kSupportedGltfExtensions are
+// ignored, each with one line on stderr. Returns the world bounds of the geometry appended. Throws
+// SceneError("<path>: <field>: <what>") for a malformed file or a required extension outside
+// kSupportedGltfExtensions, leaving `scene` as it was.
 // `policy` says where the file's buffers and images may be (readGltfFile).
 // A file loaded again into the same scene (by canonical path) adds its objects, placed by the new transform, and
 // its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/json_text.hpp"
+#include "core/messages.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -40,17 +41,21 @@ std::string NumberRule::describe() const {
 
 JsonField JsonField::operator[](const std::string& key) const {
   const std::string path = memberPath(path_, key);
-  if (!value_) return {nullptr, file_, path};
+  if (!value_) return {nullptr, file_, path, reads_};
   if (!value_->is_object()) expected("an object");
+  reads_->opened.insert(value_);
   const auto it = value_->find(key);
-  return {it == value_->end() ? nullptr : &*it, file_, path};
+  if (it == value_->end()) return {nullptr, file_, path, reads_};
+  reads_->lookedUp.insert(&*it);
+  return {&*it, file_, path, reads_};
 }
 
 std::vector<JsonField> JsonField::items() const {
   std::vector<JsonField> out;
   if (!value_) return out;
   if (!value_->is_array()) expected("an array");
-  for (std::size_t i = 0; i < value_->size(); ++i) out.push_back({&(*value_)[i], file_, itemPath(path_, i)});
+  reads_->opened.insert(value_);
+  for (std::size_t i = 0; i < value_->size(); ++i) out.push_back({&(*value_)[i], file_, itemPath(path_, i), reads_});
   return out;
 }
 
@@ -117,6 +122,26 @@ void JsonField::expected(const std::string& what) const {
 
 void JsonField::fail(const std::string& message) const {
   throw SceneError(file_ + ": " + displayPath(path_) + ": " + message);
+}
+
+void JsonField::reportUnknownKeys(bool strict) const { reportUnknownKeys(*reads_->root, "", strict); }
+
+void JsonField::reportUnknownKeys(const nlohmann::json& value, const std::string& path, bool strict) const {
+  if (!reads_->opened.count(&value)) return;
+  if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) reportUnknownKeys(value[i], itemPath(path, i), strict);
+    return;
+  }
+  for (const auto& [key, member] : value.items()) {
+    const std::string memberAt = memberPath(path, key);
+    if (reads_->lookedUp.count(&member)) {
+      reportUnknownKeys(member, memberAt, strict);
+      continue;
+    }
+    const std::string line = file_ + ": " + memberAt + ": unknown key";
+    if (strict) throw SceneError(line);
+    warnOnce(line);
+  }
 }
 
 std::string JsonField::memberPath(const std::string& path, const std::string& key) {

@@ -1,7 +1,9 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -29,9 +31,11 @@ struct NumberRule {
 // A value of a parsed JSON document with its path, so that every error is one line naming the file, the path and
 // what was expected: "scene.json: lights[3].radius: expected a finite number >= 0, got -1". A field may be absent;
 // accessors then return their fallback, or fail when there is none (the field is required).
+// The fields of one document share a record of what was read, so that keys nobody read can be named afterwards.
 class JsonField {
  public:
-  JsonField(const nlohmann::json& root, std::string file) : value_(&root), file_(std::move(file)) {}
+  JsonField(const nlohmann::json& root, std::string file)
+      : value_(&root), file_(std::move(file)), reads_(std::make_shared<Reads>(Reads{&root, {}, {}})) {}
 
   bool present() const { return value_ != nullptr; }
 
@@ -55,18 +59,33 @@ class JsonField {
   // "F: P: MESSAGE".
   [[noreturn]] void fail(const std::string& message) const;
 
+  // Once the document is read: an object key never looked up by operator[] (a key only checked with present()
+  // was looked up) is a misspelt or unsupported field, reported as "F: P: unknown key" on stderr, one line each,
+  // or with `strict` thrown as a SceneError for the first (members in key order, as nlohmann keeps them). Only
+  // objects and arrays that were read are searched, so nothing under an unknown key is named but the key itself.
+  void reportUnknownKeys(bool strict) const;
+
   static std::string memberPath(const std::string& path, const std::string& key);
   static std::string itemPath(const std::string& path, std::size_t index);
   static std::string displayPath(const std::string& path);  // the root has an empty path
 
  private:
-  JsonField(const nlohmann::json* value, std::string file, std::string path)
-      : value_(value), file_(std::move(file)), path_(std::move(path)) {}
+  struct Reads {
+    const nlohmann::json* root;
+    std::unordered_set<const nlohmann::json*> opened;    // objects and arrays whose content was read
+    std::unordered_set<const nlohmann::json*> lookedUp;  // members found by operator[]
+  };
+
+  JsonField(const nlohmann::json* value, std::string file, std::string path, std::shared_ptr<Reads> reads)
+      : value_(value), file_(std::move(file)), path_(std::move(path)), reads_(std::move(reads)) {}
+  // The search of reportUnknownKeys below `value`, found at `path`.
+  void reportUnknownKeys(const nlohmann::json& value, const std::string& path, bool strict) const;
   // Fails with `what` unless present or a fallback exists; true when the value must be read.
   bool required(bool hasFallback, const std::string& what) const;
 
   const nlohmann::json* value_;
   std::string file_, path_;
+  std::shared_ptr<Reads> reads_;
 };
 
 }  // namespace pbr

@@ -242,7 +242,7 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
   return e;
 }
 
-Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy) {
+Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
   if (!document.is_object()) root.expected("a JSON object");
@@ -273,6 +273,7 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   } else if (lightCount >= 0) {
     random.fail("missing, but a light count was given (it replaces random_lights.count)");
   }
+  root.reportUnknownKeys(strictKeys);
   return scene;
 }
 
@@ -284,11 +285,11 @@ std::string lowerExtension(const std::string& path) {
 
 }  // namespace
 
-Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy) {
+Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys) {
   const std::string ext = lowerExtension(path);
   const bool model = ext == ".gltf" || ext == ".glb";
   if (model && lightCount >= 0) throw SceneError(path + ": a light count applies only to scene files with random_lights");
-  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy);
+  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy, strictKeys);
   validateScene(scene, path);
   return scene;
 }

@@ -9,8 +9,10 @@ namespace pbr {
 // Loads a scene file: JSON (the format of README "Scene files"), or a .gltf/.glb model on its own (see
 // loadModelScene). Throws SceneError with one line naming the file, the JSON path (e.g. lights[3].radius) and
 // what was expected. `lightCount`, when >= 0, replaces random_lights.count; a file without random_lights
-// (or a model) rejects it. `policy` applies to the buffers and images of every glTF model loaded. The scene is
-// checked by validateScene before it is returned.
-Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {});
+// (or a model) rejects it. `policy` applies to the buffers and images of every glTF model loaded. A key the JSON
+// reader never looks up is warned about on stderr, or with `strictKeys` refused (JsonField::reportUnknownKeys).
+// The scene is checked by validateScene before it is returned.
+Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {},
+                    bool strictKeys = false);
 
 }  // namespace pbr

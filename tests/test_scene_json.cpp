@@ -47,8 +47,7 @@ TEST_CASE("scene file: every field of a valid file reaches the scene") {
       {"position": [0, 3, 0], "color": [1, 0.5, 0.25], "luminous_power": 800, "radius": 6},
       {"position": [2, 1, 0], "intensity_cd": 10, "radius": 0}
     ],
-    "random_lights": {"count": 5, "seed": 3, "bounds": [[-1, 0, -2], [1, 2, 2]], "radius": [0.5, 1], "luminous_power": [10, 30]},
-    "comment": "unknown fields are ignored"
+    "random_lights": {"count": 5, "seed": 3, "bounds": [[-1, 0, -2], [1, 2, 2]], "radius": [0.5, 1], "luminous_power": [10, 30]}
   })");
   const pbr::Scene s = pbr::loadSceneFile(path);
   CHECK(s.name == "round");

@@ -80,9 +80,7 @@ bool hasOnlyAnalyticShapes(const Scene& scene) {
   return true;
 }
 
-AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris) {
-  SceneParams params;
-  params.uris = uris;
+AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params) {
   std::string name = spec, label = spec;
   const size_t colon = spec.find(':');
   if (colon != std::string::npos) {

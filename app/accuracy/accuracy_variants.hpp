@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "app/accuracy/pair_cost.hpp"
+#include "core/builtin_scenes.hpp"
 #include "core/scene.hpp"
-#include "core/uri_policy.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/shading_model.hpp"
 
@@ -35,8 +35,8 @@ struct AccuracyScene {
 // True when every object is a plane, sphere or box: the reference can then also ray-cast the exact shapes.
 bool hasOnlyAnalyticShapes(const Scene& scene);
 
-// A built-in scene name or file, or "fresnel-floor:DEG" for that view angle. The reference ignores textures,
-// so base colour textures are removed.
-AccuracyScene loadAccuracyScene(const std::string& spec, const UriPolicy& uris = {});
+// A built-in scene name or file, or "fresnel-floor:DEG" for that view angle, loaded with `params` (the view angle
+// set from the spec). The reference ignores textures, so base colour textures are removed.
+AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params = {});
 
 }  // namespace pbr

@@ -1,0 +1,37 @@
+#include "core/messages.hpp"
+
+#include <iostream>
+#include <mutex>
+#include <set>
+
+namespace pbr {
+
+std::string oneLine(const std::string& text) {
+  std::string line = text;
+  for (char& c : line) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  constexpr size_t kMaxChars = 400;
+  if (line.size() > kMaxChars) line = line.substr(0, kMaxChars - 3) + "...";
+  return line;
+}
+
+void warnOnce(const std::string& message) {
+  static std::mutex mutex;
+  static std::set<std::string> printed;
+  static bool silenced = false;
+  const std::string line = oneLine(message);
+  // A process that loads many files (a fuzzer, a long sweep) stops remembering, and saying, after this many.
+  constexpr size_t kMaxLines = 4096;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (silenced || printed.count(line) != 0) return;
+  if (printed.size() == kMaxLines) {
+    silenced = true;
+    std::cerr << "further warnings are not shown (" << kMaxLines << " printed)\n";
+    return;
+  }
+  printed.insert(line);
+  std::cerr << line << "\n";
+}
+
+}  // namespace pbr
