@@ -37,6 +37,7 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--constant-density", "",
        "scale light radii by sqrt(L0/lights), L0 the smallest of --lights, holding lights x radius^2 (the light "
        "density) constant"},
+      spotShareOption(),
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
@@ -105,6 +106,7 @@ BenchSettings parseSettings(const Args& args) {
   s.frames = args.getInt("--frames", s.frames, 1, 100000);
   s.maxSeconds = args.getFloat("--max-seconds", static_cast<float>(s.maxSeconds), 0.0f, 1e7f);
   s.constantDensity = args.has("--constant-density");
+  s.spotShare = sceneFileParams(args).spotShare;
   s.timing = args.get("--timing", s.timing);
   chooseTimingMode(s.timing, "");  // rejects a bad mode before a context is made
   return s;

@@ -19,6 +19,7 @@ const std::vector<OptionSpec>& referenceOptions() {
       {"--scene", "NAME", "scene lit by point lights, without an environment (default sphere-grid)"},
       {"--lights", "N", "number of point lights (default: the scene's)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view"},
+      spotShareOption(),
       {"--size", "WxH", "frame size in pixels (default 640x360)"},
       {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (required)"},
       {"--threads", "N", "worker threads (default: every hardware thread)"},

@@ -33,6 +33,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 44 bytes)"},
       {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
+      spotShareOption(),
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
       {"--slices", "S", "cluster depth slices, exponential between near and far (default 192)"},

@@ -18,10 +18,16 @@ OptionSpec strictOption() {
                           "warning about it"};
 }
 
+OptionSpec spotShareOption() {
+  return {"--spot-share", "F", "make this share (0-1) of a scene's random lights spot lights, aimed down at random "
+                               "with outer angles of 10-60 degrees (default: the scene's, 0)"};
+}
+
 SceneParams sceneFileParams(const Args& args) {
   SceneParams params;
   params.uris = {args.has("--allow-outside-uris")};
   params.strictKeys = args.has("--strict");
+  if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 0.0f, 1.0f);
   return params;
 }
 
@@ -66,7 +72,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (isBuiltinScene(nameOrPath)) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
-    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys);
+    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys, params.spotShare);
   } else {
     std::string names;
     for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;

@@ -20,10 +20,11 @@ float applyExposureOptions(const Args& args, Scene& scene);
 OptionSpec cameraOption();
 void applyCameraOption(const Args& args, Scene& scene);
 
-// --allow-outside-uris and --strict, taken by every command that loads scene files, and the scene parameters they
-// set (the other parameters left at their defaults).
+// --allow-outside-uris and --strict, taken by every command that loads scene files, and --spot-share, by those
+// that take --lights; and the scene parameters they set (the other parameters left at their defaults).
 OptionSpec allowOutsideUrisOption();
 OptionSpec strictOption();
+OptionSpec spotShareOption();
 SceneParams sceneFileParams(const Args& args);
 
 }  // namespace pbr

@@ -16,6 +16,7 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--scene", "NAME|FILE", "built-in scene or scene file, as for pbr render (default: default)"},
       {"--lights", "N", "number of point lights (default: the scene's)"},
       {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
+      spotShareOption(),
       {"--model", "MODEL", "shading model at start: pbr (default) or blinn-phong (key M switches)"},
       {"--culling", "C", "clustered (default) or none at start (key C switches)"},
       {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},

@@ -7,6 +7,8 @@
 #include <limits>
 
 #include <glm/common.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/gltf_loader.hpp"
@@ -145,6 +147,19 @@ std::vector<PointLight> makeRandomLights(const RandomLightSpec& spec) {
     l.luminousPower = rng.uniform(spec.powerMin, spec.powerMax);
     lights.push_back(l);
   }
+  if (spec.spotShare <= 0.0f) return lights;
+  // A stream of its own, so that the share leaves the lights' positions, radii, colours and powers as they were.
+  Pcg32 spots(spec.seed, 0x5907u);
+  for (PointLight& l : lights) {
+    if (!(spots.uniform() < spec.spotShare)) continue;
+    SpotCone cone;
+    const float down = spots.uniform(), azimuth = spots.uniform(0.0f, 2.0f * glm::pi<float>());
+    const float across = std::sqrt(std::max(0.0f, 1.0f - down * down));
+    cone.direction = glm::normalize(glm::vec3(across * std::cos(azimuth), -down, across * std::sin(azimuth)));
+    cone.outerAngle = glm::radians(spots.uniform(10.0f, 60.0f));
+    cone.innerAngle = cone.outerAngle * spots.uniform(0.0f, 0.9f);
+    l.spot = cone;
+  }
   return lights;
 }
 
@@ -170,7 +185,12 @@ Scene makeBuiltinScene(const std::string& name, const SceneParams& params) {
     throw SceneError("unknown scene '" + name + "' (built-in scenes: " + list + ")");
   }
   const int fileLightCount = builtin->setLightCount ? -1 : params.lights.value_or(-1);
-  Scene scene = loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys);
+  if (params.spotShare && builtin->setLightCount) {
+    throw SceneError(name + ": a spot-light share applies to the scenes of random lights (default, stress, "
+                            "helmet-grid, many-lights)");
+  }
+  Scene scene =
+      loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys, params.spotShare);
   if (params.viewAngleDeg && builtin->setViewAngle) builtin->setViewAngle(scene, *params.viewAngleDeg);
   if (params.lights && builtin->setLightCount) builtin->setLightCount(scene, *params.lights);
   return scene;

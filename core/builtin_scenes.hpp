@@ -18,6 +18,9 @@ struct RandomLightSpec {
   glm::vec3 boundsMax{5.0f, 2.5f, 5.0f};
   float radiusMin = 1.5f, radiusMax = 4.0f;
   float powerMin = 40.0f, powerMax = 200.0f;  // lumens
+  // This share of the lights are spot lights aimed into the lower hemisphere, outer angles of 10-60 degrees and
+  // inner ones up to 90% of them; the lights' other parameters are those of the same seed without spots.
+  float spotShare = 0.0f;
 };
 
 // Seeded pseudo-random lights with saturated colours of random hue (max channel 1).
@@ -27,6 +30,7 @@ std::vector<PointLight> makeRandomLights(const RandomLightSpec& spec);
 struct SceneParams {
   std::optional<int> lights;          // light count (every scene)
   std::optional<float> viewAngleDeg;  // fresnel-floor: angle between the floor normal and the view direction
+  std::optional<float> spotShare;     // scenes of random lights: the share of them that are spot lights
   UriPolicy uris;                     // scene files: where glTF buffers and images may be
   bool strictKeys = false;            // scene files: an unknown key is an error, not a warning (--strict)
 };

@@ -390,9 +390,8 @@ class Loader {
     const int index = ref.GetNumberAsInt();
     const tinygltf::Light& l = lights[static_cast<size_t>(index)];
     const std::string name = "extensions.KHR_lights_punctual." + gltfElement("lights", index);
-    if (l.type != "point" && l.type != "directional") {
-      file_.warn(name + ": " + l.type + " lights are not supported, skipped");
-      return;
+    if (l.type != "point" && l.type != "spot" && l.type != "directional") {
+      file_.fail(name + ".type: expected \"point\", \"spot\" or \"directional\" (got \"" + l.type + "\")");
     }
     glm::vec3 color(1.0f);
     if (!l.color.empty()) {
@@ -423,7 +422,27 @@ class Loader {
       file_.fail(name + (l.range > 0.0 ? ".range" : ".intensity") + ": gives a light radius beyond the coordinate limit " +
                  number(kMaxCoordinate));
     }
+    if (l.type == "spot") light.spot = spotCone(l.spot, world, name);
     scene_.lights.push_back(light);
+  }
+
+  // KHR_lights_punctual: a spot light shines along its node's local -Z; 0 <= inner < outer <= pi/2.
+  SpotCone spotCone(const tinygltf::SpotLight& spot, const glm::mat4& world, const std::string& name) {
+    const glm::vec3 direction = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    const float length = glm::length(direction);
+    if (!(length > 0.0f) || !std::isfinite(length)) file_.fail(name + ": its node's transform leaves no direction");
+    if (!(spot.outerConeAngle > 0.0 && spot.outerConeAngle <= kPi / 2.0 + 1e-6)) {
+      file_.fail(name + ".spot.outerConeAngle: must be in (0, pi/2] (got " + number(spot.outerConeAngle) + ")");
+    }
+    if (!(spot.innerConeAngle >= 0.0 && spot.innerConeAngle < spot.outerConeAngle)) {
+      file_.fail(name + ".spot.innerConeAngle: must be in [0, outerConeAngle) (got " + number(spot.innerConeAngle) +
+                 ")");
+    }
+    SpotCone cone;
+    cone.direction = direction / length;
+    cone.outerAngle = std::min(static_cast<float>(spot.outerConeAngle), glm::half_pi<float>());
+    cone.innerAngle = std::min(static_cast<float>(spot.innerConeAngle), cone.outerAngle);
+    return cone;
   }
 
   // KHR_lights_punctual: a directional light shines along its node's local -Z, with illuminance in lux.

@@ -1,14 +1,22 @@
 #include "core/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "core/exposure.hpp"
 
 namespace pbr {
+
+SpotFalloff spotFalloff(const SpotCone& cone) {
+  const float cosOuter = std::cos(cone.outerAngle);
+  const float scale = 1.0f / std::max(1e-3f, std::cos(cone.innerAngle) - cosOuter);
+  return {scale, -cosOuter * scale};
+}
 
 float Scene::displayExposure() const {
   return ev100 ? static_cast<float>(exposure * exposureFromEv100(*ev100)) : exposure;
@@ -133,6 +141,13 @@ void validateScene(const Scene& scene, const std::string& source) {
     c.atLeast(base + ".radius", l.radius, 0.0f);
     c.color(base + ".color", l.color);
     c.atLeast(base + ".luminous_power", l.luminousPower, 0.0f);
+    if (!l.spot) continue;
+    c.finite(base + ".direction", l.spot->direction);
+    if (!(std::abs(glm::length(l.spot->direction) - 1.0f) <= 1e-3f)) {
+      c.fail(base + ".direction", "must be a unit vector", glm::length(l.spot->direction));
+    }
+    c.inRange(base + ".outer_angle", l.spot->outerAngle, 0.0f, glm::half_pi<float>());
+    c.inRange(base + ".inner_angle", l.spot->innerAngle, 0.0f, l.spot->outerAngle);
   }
   if (scene.directionalLights.size() > kMaxDirectionalLights) {
     c.fail("directional lights", "at most " + std::to_string(kMaxDirectionalLights) + " are shaded",

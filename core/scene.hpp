@@ -63,12 +63,30 @@ struct SceneObject {
   Material material;
 };
 
+// A spot light's cone (KHR_lights_punctual): full intensity within `innerAngle` of its axis, fading smoothly to
+// nothing at `outerAngle` (radians; 0 <= inner <= outer <= pi/2).
+struct SpotCone {
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // the axis, the way the light shines; unit length
+  float innerAngle = 0.0f;
+  float outerAngle = 0.785398163f;  // pi/4, glTF's default
+};
+
+// A point light, or with `spot` a spot light: the same source masked by a cone, its intensity along the axis that
+// of the point light (I = P / (4 pi) still; the cone does not concentrate the power).
 struct PointLight {
   glm::vec3 position{0.0f};
   float radius = 1.0f;  // influence radius R of the windowed attenuation
   glm::vec3 color{1.0f};
   float luminousPower = 100.0f;  // P in lumens; intensity I = P / (4 pi)
+  std::optional<SpotCone> spot = std::nullopt;
 };
+
+// glTF's smooth angular falloff of a spot light as a scale and offset of cos(angle to the axis):
+// clamp(cos s + o, 0, 1)^2, s = 1 / max(1e-3, cos inner - cos outer), o = -cos(outer) s (KHR_lights_punctual).
+struct SpotFalloff {
+  float scale, offset;
+};
+SpotFalloff spotFalloff(const SpotCone& cone);
 
 // A light infinitely far away (the sun): parallel rays of illuminance E on a surface facing it, Lo = f E n.l.
 struct DirectionalLight {

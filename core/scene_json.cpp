@@ -194,7 +194,23 @@ PointLight readPointLight(const JsonField& f) {
   return l;
 }
 
-std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount) {
+// A spot light: a point light's fields and its cone, angles in degrees from the axis as in glTF (0 and 45 by
+// default).
+PointLight readSpotLight(const JsonField& f) {
+  PointLight l = readPointLight(f);
+  SpotCone cone;
+  const glm::vec3 direction = f["direction"].vec3(R::any());
+  if (!(glm::length(direction) > 0.0f)) f["direction"].fail("expected a non-zero direction (the way the light shines)");
+  cone.direction = glm::normalize(direction);
+  const float outerDeg = f["outer_angle_deg"].number(R::closed(0.0, 90.0), glm::degrees(cone.outerAngle));
+  const float innerDeg = f["inner_angle_deg"].number(R::closed(0.0, outerDeg), 0.0f);
+  cone.outerAngle = glm::radians(outerDeg);
+  cone.innerAngle = std::min(glm::radians(innerDeg), cone.outerAngle);
+  l.spot = cone;
+  return l;
+}
+
+std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount, std::optional<float> spotShare) {
   RandomLightSpec spec;
   spec.count = static_cast<int>(f["count"].integer(kMaxRandomLights));
   if (lightCount >= 0) spec.count = lightCount;
@@ -208,6 +224,8 @@ std::vector<PointLight> readRandomLights(const JsonField& f, int lightCount) {
   if (glm::any(glm::greaterThan(spec.boundsMin, spec.boundsMax))) bounds.expected(boundsShape);
   std::tie(spec.radiusMin, spec.radiusMax) = f["radius"].interval(R::closed(0.0, kMaxCoordinate));
   std::tie(spec.powerMin, spec.powerMax) = f["luminous_power"].interval(R::atLeast(0.0));
+  spec.spotShare = f["spot_share"].number(R::closed(0.0, 1.0), spec.spotShare);
+  if (spotShare) spec.spotShare = *spotShare;
   return makeRandomLights(spec);
 }
 
@@ -242,7 +260,8 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
   return e;
 }
 
-Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys) {
+Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
+                    std::optional<float> spotShare) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
   if (!document.is_object()) root.expected("a JSON object");
@@ -260,18 +279,22 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
     const std::string type = l["type"].present() ? l["type"].string() : "point";
     if (type == "point") {
       scene.lights.push_back(readPointLight(l));
+    } else if (type == "spot") {
+      scene.lights.push_back(readSpotLight(l));
     } else if (type == "directional") {
       scene.directionalLights.push_back(readDirectionalLight(l));
     } else {
-      l["type"].expected("\"point\" (the default) or \"directional\"");
+      l["type"].expected("\"point\" (the default), \"spot\" or \"directional\"");
     }
   }
   const JsonField random = root["random_lights"];
   if (random.present()) {
-    const std::vector<PointLight> lights = readRandomLights(random, lightCount);
+    const std::vector<PointLight> lights = readRandomLights(random, lightCount, spotShare);
     scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
   } else if (lightCount >= 0) {
     random.fail("missing, but a light count was given (it replaces random_lights.count)");
+  } else if (spotShare) {
+    random.fail("missing, but a spot-light share was given (it replaces random_lights.spot_share)");
   }
   root.reportUnknownKeys(strictKeys);
   return scene;
@@ -285,11 +308,15 @@ std::string lowerExtension(const std::string& path) {
 
 }  // namespace
 
-Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys) {
+Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
+                    std::optional<float> spotShare) {
   const std::string ext = lowerExtension(path);
   const bool model = ext == ".gltf" || ext == ".glb";
-  if (model && lightCount >= 0) throw SceneError(path + ": a light count applies only to scene files with random_lights");
-  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy, strictKeys);
+  if (model && (lightCount >= 0 || spotShare)) {
+    throw SceneError(path + ": " + (lightCount >= 0 ? "a light count" : "a spot-light share") +
+                     " applies only to scene files with random_lights");
+  }
+  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy, strictKeys, spotShare);
   validateScene(scene, path);
   return scene;
 }

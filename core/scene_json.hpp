@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 #include "core/scene.hpp"
@@ -11,8 +12,9 @@ namespace pbr {
 // what was expected. `lightCount`, when >= 0, replaces random_lights.count; a file without random_lights
 // (or a model) rejects it. `policy` applies to the buffers and images of every glTF model loaded. A key the JSON
 // reader never looks up is warned about on stderr, or with `strictKeys` refused (JsonField::reportUnknownKeys).
-// The scene is checked by validateScene before it is returned.
+// `spotShare`, when given, replaces random_lights.spot_share as `lightCount` does its count. The scene is checked
+// by validateScene before it is returned.
 Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {},
-                    bool strictKeys = false);
+                    bool strictKeys = false, std::optional<float> spotShare = std::nullopt);
 
 }  // namespace pbr

@@ -14,6 +14,12 @@ GpuLight toGpuLight(const PointLight& l) {
   return {glm::vec4(l.position, l.radius), glm::vec4(l.color, l.luminousPower / (4.0f * glm::pi<float>()))};
 }
 
+GpuSpotCone toGpuSpotCone(const PointLight& l) {
+  if (!l.spot) return {0.0f, 0.0f, 0.0f, 1.0f};
+  const SpotFalloff f = spotFalloff(*l.spot);
+  return glm::vec4(l.spot->direction * f.scale, f.offset);
+}
+
 void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional) {
   if (directional.size() > kMaxDirectionalLights) {
     throw std::logic_error(std::to_string(directional.size()) + " directional lights, more than the " +
@@ -36,10 +42,22 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
   if (!buffer_ || buffer_->size() < bytes) buffer_ = std::make_unique<Buffer>(bytes);
   buffer_->upload(packed.data(), bytes);
   count_ = static_cast<unsigned>(lights.size());
+
+  hasSpots_ = std::any_of(lights.begin(), lights.end(), [](const PointLight& l) { return l.spot.has_value(); });
+  if (!hasSpots_) {
+    cones_.reset();
+    return;
+  }
+  std::vector<GpuSpotCone> cones(packed.size(), GpuSpotCone(0.0f));
+  for (size_t i = 0; i < lights.size(); ++i) cones[i] = toGpuSpotCone(lights[i]);
+  const size_t coneBytes = cones.size() * sizeof(GpuSpotCone);
+  if (!cones_ || cones_->size() < coneBytes) cones_ = std::make_unique<Buffer>(coneBytes);
+  cones_->upload(cones.data(), coneBytes);
 }
 
 void LightBuffer::bind() const {
   if (buffer_) buffer_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightSsbo.index);
+  if (hasSpots_) cones_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSpotConeSsbo.index);
 }
 
 void LightBuffer::bindDirectional() const {
@@ -50,6 +68,10 @@ void LightBuffer::bindWindow(uint32_t first, uint32_t lights) const {
   if (buffer_) {
     buffer_->bindRange(GL_UNIFORM_BUFFER, lighting_binding::kLightWindowUbo.index, size_t(first) * sizeof(GpuLight),
                        size_t(lights) * sizeof(GpuLight));
+  }
+  if (hasSpots_) {
+    cones_->bindRange(GL_UNIFORM_BUFFER, lighting_binding::kSpotWindowUbo.index, size_t(first) * sizeof(GpuSpotCone),
+                      size_t(lights) * sizeof(GpuSpotCone));
   }
 }
 

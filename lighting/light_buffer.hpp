@@ -22,6 +22,11 @@ static_assert(offsetof(GpuLight, colorIntensity) == 16, "GpuLight must match its
 
 GpuLight toGpuLight(const PointLight& light);
 
+// Mirror of a light's entry in `spotCones` and `windowCones` (shaders/lighting/lights.glsl): the spot light's axis
+// times its falloff's scale, and the offset (SpotFalloff); a point light's (0, 0, 0, 1) leaves it unmasked.
+using GpuSpotCone = glm::vec4;
+GpuSpotCone toGpuSpotCone(const PointLight& light);
+
 // std140 mirror of `DirectionalLightBlock` in shaders/lighting/directional_lights.glsl.
 struct GpuDirectionalLight {
   glm::vec4 toLight;           // xyz: unit direction towards the light
@@ -39,9 +44,11 @@ static_assert(sizeof(DirectionalLightBlock) == 16 + 32 * kMaxDirectionalLights, 
 // allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
 constexpr uint32_t kLightWindowMax = 2048;
 
-// The frame's point lights in one buffer, read as a storage buffer (cluster assignment, clustered lighting) and,
-// a window at a time, as a uniform buffer (lighting every light), reallocated only when it must grow; and its
-// directional lights in a uniform block of their own, which no culling touches.
+// The frame's point and spot lights in one buffer, read as a storage buffer (cluster assignment, clustered
+// lighting) and, a window at a time, as a uniform buffer (lighting every light), reallocated only when it must
+// grow; with spot lights among them, their cones in a second buffer of the same layout; and the directional
+// lights in a uniform block of their own, which no culling touches. A frame without spot lights neither uploads
+// nor reads cones (the SPOT_LIGHTS permutations).
 class LightBuffer {
  public:
   void upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional = {});
@@ -51,11 +58,14 @@ class LightBuffer {
   // two no larger than kLightWindowMax.
   void bindWindow(uint32_t first, uint32_t lights) const;
   unsigned count() const { return count_; }
+  bool hasSpotLights() const { return hasSpots_; }
   unsigned directionalCount() const { return directionalCount_; }
-  size_t bytes() const { return buffer_ ? buffer_->size() : 0; }
+  size_t bytes() const { return (buffer_ ? buffer_->size() : 0) + (cones_ ? cones_->size() : 0); }
 
  private:
   std::unique_ptr<Buffer> buffer_;
+  std::unique_ptr<Buffer> cones_;  // only while the frame has spot lights
+  bool hasSpots_ = false;
   unsigned count_ = 0;
   unsigned directionalCount_ = 0;
   UniformBuffer<DirectionalLightBlock> directionalBlock_{DirectionalLightBlock{}};

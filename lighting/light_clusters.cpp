@@ -12,8 +12,10 @@ namespace pbr {
 
 namespace {
 
-ShaderDefines assignDefines(bool fill, bool stats) {
-  return concat({{"ASSIGN_FILL", fill ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}}, lightingBindingDefines());
+ShaderDefines assignDefines(bool spotLights, bool fill, bool stats) {
+  return concat({{"SPOT_LIGHTS", spotLights ? "1" : "0"}, {"ASSIGN_FILL", fill ? "1" : "0"},
+                 {"ASSIGN_STATS", stats ? "1" : "0"}},
+                lightingBindingDefines());
 }
 
 GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
@@ -39,19 +41,25 @@ std::string mebibytes(uint64_t bytes) {
 
 }  // namespace
 
+LightClusters::AssignPrograms LightClusters::assignPrograms(ProgramCache& programs, bool spotLights) {
+  const ShaderDefines lights = concat({{"SPOT_LIGHTS", spotLights ? "1" : "0"}}, lightingBindingDefines());
+  return {&programs.compute("lighting/cluster_lights.comp", lights),
+          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, false, false)),
+          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, false, true)),
+          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, true, false))};
+}
+
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) {
   return nearPlane * std::pow(farPlane / nearPlane, static_cast<float>(slice) / static_cast<float>(slices));
 }
 
 LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config)
     : config_(config),
+      programs_(programs),
       occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
-      lightsProgram_(programs.compute("lighting/cluster_lights.comp", lightingBindingDefines())),
-      countProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, false))),
-      countStatsProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(false, true))),
+      pointPrograms_(assignPrograms(programs, false)),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
-      fillProgram_(programs.compute("lighting/cluster_assign.comp", assignDefines(true, false))),
       clearProgram_(programs.compute("lighting/cluster_clear.comp", lightingBindingDefines())),
       status_(sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
@@ -69,8 +77,8 @@ LightClusters::~LightClusters() {
 
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
-  for (const auto* b : {&headers_, &cursors_, &occupancy_, &indices_, &visible_, &viewLights_, &tileMasks_,
-                        &tileWords_}) {
+  for (const auto* b : {&headers_, &cursors_, &occupancy_, &indices_, &visible_, &viewLights_, &viewCones_,
+                        &tileMasks_, &tileWords_}) {
     total += *b ? (*b)->size() : 0;
   }
   return total;
@@ -130,7 +138,7 @@ void LightClusters::ensureCapacity(uint64_t entries) {
 
 // Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound. The masks are
 // all zero between frames (cluster_clear.comp), whatever light count set them.
-void LightClusters::ensureLightBuffers(uint32_t lights) {
+void LightClusters::ensureLightBuffers(uint32_t lights, bool spotLights) {
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
   lights = std::max(lights, 1u);
   const uint64_t viewBytes = uint64_t(lights) * sizeof(ClusterViewLight);
@@ -143,6 +151,9 @@ void LightClusters::ensureLightBuffers(uint32_t lights) {
                              "larger --tile");
   }
   if (!viewLights_ || viewLights_->size() < viewBytes) viewLights_ = std::make_unique<Buffer>(viewBytes, nullptr, 0);
+  if (spotLights && (!viewCones_ || viewCones_->size() < 2 * viewBytes)) {
+    viewCones_ = std::make_unique<Buffer>(2 * viewBytes, nullptr, 0);
+  }
   if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = zeroedBuffer(maskBytes);
   if (!tileWords_ || tileWords_->size() < summaryBytes) tileWords_ = zeroedBuffer(summaryBytes);
 }
@@ -168,7 +179,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
                            const Texture& depth, bool stats) {
   if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
   growFromPastDemand();
-  ensureLightBuffers(lights.count());
+  ensureLightBuffers(lights.count(), lights.hasSpotLights());
   const uint32_t clusters = blockData_.counts.y;
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
   blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
@@ -195,10 +206,14 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8), groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  lightsProgram_.use();
+  // Spot lights' cones take permutations of their own, compiled the first time a frame has them.
+  if (lights.hasSpotLights() && !spotPrograms_) spotPrograms_ = assignPrograms(programs_, true);
+  const AssignPrograms& pass = lights.hasSpotLights() ? *spotPrograms_ : pointPrograms_;
+  if (lights.hasSpotLights()) viewCones_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewConesSsbo.index);
+  pass.lights->use();
   glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  dispatchAssign(stats ? countStatsProgram_ : countProgram_, lights.count());
+  dispatchAssign(*(stats ? pass.countStats : pass.count), lights.count());
   const Program& scan = stats ? scanStatsProgram_ : scanProgram_;
   scan.use();
   glDispatchCompute(1, 1, 1);
@@ -218,7 +233,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
-  dispatchAssign(fillProgram_, lights.count());
+  dispatchAssign(*pass.fill, lights.count());
   clearProgram_.use();
   glDispatchCompute(groupsFor(tiles * summaryWords(lights.count()), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

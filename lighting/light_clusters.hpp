@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -75,19 +76,29 @@ class LightClusters {
   void growFromPastDemand();
   void growTo(uint32_t demand);
   void ensureCapacity(uint64_t entries);
-  void ensureLightBuffers(uint32_t lights);
+  void ensureLightBuffers(uint32_t lights, bool spotLights);
 
   ClusterConfig config_;
   void dispatchAssign(const Program& program, uint32_t lights);
 
-  const Program &occupancyProgram_, &lightsProgram_, &countProgram_, &countStatsProgram_,
-      &scanProgram_, &scanStatsProgram_, &fillProgram_, &clearProgram_;
+  ProgramCache& programs_;
+  // The passes that read lights: cluster_lights.comp and cluster_assign.comp's count (without, with stats) and
+  // fill, for frames of point lights and for frames with spot lights.
+  struct AssignPrograms {
+    const Program *lights, *count, *countStats, *fill;
+  };
+  static AssignPrograms assignPrograms(ProgramCache& programs, bool spotLights);
+  const Program& occupancyProgram_;
+  AssignPrograms pointPrograms_;
+  std::optional<AssignPrograms> spotPrograms_;
+  const Program &scanProgram_, &scanStatsProgram_, &clearProgram_;
   UniformBuffer<ClusterBlock> block_;
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for
   glm::vec4 gridKey2_{0.0f};
   std::unique_ptr<Buffer> headers_, cursors_, occupancy_, indices_, visible_, viewLights_, tileMasks_, tileWords_;
+  std::unique_ptr<Buffer> viewCones_;  // two vec4 per light (clusters.glsl), while frames have spot lights
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   Buffer status_;
   uint32_t capacity_ = 0;

@@ -8,10 +8,10 @@ namespace pbr {
 ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
   // Built and checked once: the lighting pass asks for its program every frame.
-  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
-                         kLightVisibleSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
+  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
+                         kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterViewLightsSsbo, kClusterTileMasksSsbo, kClusterTileWordsSsbo, kClusterOccupancySsbo,
-                         kClusterCursorSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
+                         kClusterCursorSsbo, kClusterViewConesSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
                          kDepthUnit, kRadianceImage, kPartialRadianceImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
   return defines;
 }

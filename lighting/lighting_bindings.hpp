@@ -10,10 +10,12 @@ constexpr BindingPoint kLightingUbo{"LIGHTING_UBO", BindingKind::UniformBuffer, 
 constexpr BindingPoint kClusterUbo{"CLUSTER_UBO", BindingKind::UniformBuffer, 4};
 constexpr BindingPoint kLightWindowUbo{"LIGHT_WINDOW_UBO", BindingKind::UniformBuffer, 6};
 constexpr BindingPoint kDirectionalLightUbo{"DIRECTIONAL_LIGHT_UBO", BindingKind::UniformBuffer, 7};
+constexpr BindingPoint kSpotWindowUbo{"SPOT_WINDOW_UBO", BindingKind::UniformBuffer, 8};
 constexpr BindingPoint kLightSsbo{"LIGHT_SSBO", BindingKind::StorageBuffer, 0};
 constexpr BindingPoint kClusterSsbo{"CLUSTER_SSBO", BindingKind::StorageBuffer, 1};
 constexpr BindingPoint kLightIndexSsbo{"LIGHT_INDEX_SSBO", BindingKind::StorageBuffer, 2};
 constexpr BindingPoint kLightVisibleSsbo{"LIGHT_VISIBLE_SSBO", BindingKind::StorageBuffer, 3};
+constexpr BindingPoint kSpotConeSsbo{"SPOT_CONE_SSBO", BindingKind::StorageBuffer, 4};
 constexpr BindingPoint kClusterStatusSsbo{"CLUSTER_STATUS_SSBO", BindingKind::StorageBuffer, 5};
 constexpr BindingPoint kLightingStatsSsbo{"LIGHTING_STATS_SSBO", BindingKind::StorageBuffer, 6};
 constexpr BindingPoint kClusterViewLightsSsbo{"CLUSTER_VIEW_LIGHTS_SSBO", BindingKind::StorageBuffer, 7};
@@ -21,6 +23,7 @@ constexpr BindingPoint kClusterTileMasksSsbo{"CLUSTER_TILE_MASKS_SSBO", BindingK
 constexpr BindingPoint kClusterTileWordsSsbo{"CLUSTER_TILE_WORDS_SSBO", BindingKind::StorageBuffer, 9};
 constexpr BindingPoint kClusterOccupancySsbo{"CLUSTER_OCCUPANCY_SSBO", BindingKind::StorageBuffer, 10};
 constexpr BindingPoint kClusterCursorSsbo{"CLUSTER_CURSOR_SSBO", BindingKind::StorageBuffer, 11};
+constexpr BindingPoint kClusterViewConesSsbo{"CLUSTER_VIEW_CONES_SSBO", BindingKind::StorageBuffer, 12};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.
 constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};

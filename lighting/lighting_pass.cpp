@@ -32,7 +32,7 @@ uint32_t lightWindowLights() {
 }
 
 ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat,
-                                        bool chunked, uint32_t lightWindow) {
+                                        bool chunked, bool spotLights, uint32_t lightWindow) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   const auto [qualifier, maximum] = imageFormat(radianceFormat);
@@ -46,14 +46,17 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
+  defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
   if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
   defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
   return defines;
 }
 
-const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked) {
-  return programs_.compute("lighting/deferred.comp", concat(permutation(o, clustered, radianceFormat, chunked, lightWindow_),
-                                                            lightingBindingDefines()));
+const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked,
+                                     bool spotLights) {
+  return programs_.compute("lighting/deferred.comp",
+                           concat(permutation(o, clustered, radianceFormat, chunked, spotLights, lightWindow_),
+                                  lightingBindingDefines()));
 }
 
 void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
@@ -76,7 +79,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
     throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
                            std::to_string(perDispatch) + " lights");
   }
-  const Program& shader = program(options, clustered, radiance.format(), chunked);
+  const Program& shader = program(options, clustered, radiance.format(), chunked, lights.hasSpotLights());
   shader.use();
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);

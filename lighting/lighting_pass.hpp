@@ -57,7 +57,7 @@ struct PairCounts {
 };
 
 // Deferred lighting in a compute shader; one permutation per (model, variant, radiance format, culling, stats,
-// IBL), compiled on first use.
+// IBL, spot lights present), compiled on first use.
 class LightingPass {
  public:
   explicit LightingPass(ProgramCache& programs)
@@ -82,10 +82,12 @@ class LightingPass {
 
   // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
   static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
-                                   bool chunked = false, uint32_t lightWindow = kLightWindowMax);
+                                   bool chunked = false, bool spotLights = false,
+                                   uint32_t lightWindow = kLightWindowMax);
 
  private:
-  const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked);
+  const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked,
+                         bool spotLights);
   uint32_t lightsPerDispatch(bool clustered) const { return clustered ? kLightsPerDispatch : lightWindow_; }
 
   ProgramCache& programs_;  // permutations compiled on first use

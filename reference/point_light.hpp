@@ -7,7 +7,7 @@
 namespace pbr::reference {
 
 // Where a point light stands from surface point P with unit normal N: the unit direction to it (N when the light
-// sits on P), n.l, and the windowed attenuation at its distance.
+// sits on P), n.l, and the windowed attenuation at its distance, times a spot light's cone falloff.
 struct LightIncidence {
   dvec3 L;
   double NoL;

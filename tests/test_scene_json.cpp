@@ -1,6 +1,7 @@
 // Scene files: what a valid JSON file turns into, the transform order, light counts, textures and glTF objects.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -197,6 +198,52 @@ TEST_CASE("scene file: a light count replaces random_lights.count and is refused
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(fixed, 8), doctest::Contains("random_lights"), pbr::SceneError);
 }
 
+TEST_CASE("scene file: spot lights, and a spot share of random lights that leaves the lights where they were") {
+  const TempDir dir;
+  const std::string path = dir.write("spots.json", R"({
+    "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -2, 0], "intensity_cd": 10, "radius": 4,
+                "inner_angle_deg": 10, "outer_angle_deg": 30},
+               {"type": "spot", "position": [1, 2, 0], "direction": [1, 0, 0], "luminous_power": 100, "radius": 4}],
+    "random_lights": {"count": 400, "bounds": [[-1, 0, -1], [1, 1, 1]], "radius": [1, 2], "luminous_power": [1, 2],
+                      "spot_share": 0.25}
+  })");
+  const pbr::Scene s = pbr::loadSceneFile(path);
+  REQUIRE(s.lights.size() == 2 + 400);
+  REQUIRE(s.lights[0].spot.has_value());
+  checkVec(s.lights[0].spot->direction, {0, -1, 0});
+  CHECK(s.lights[0].spot->innerAngle == doctest::Approx(glm::radians(10.0)));
+  CHECK(s.lights[0].spot->outerAngle == doctest::Approx(glm::radians(30.0)));
+  CHECK(s.lights[0].luminousPower == doctest::Approx(4.0 * glm::pi<double>() * 10.0));
+  // glTF's defaults: inner 0, outer 45 degrees.
+  CHECK(s.lights[1].spot->innerAngle == 0.0f);
+  CHECK(s.lights[1].spot->outerAngle == doctest::Approx(glm::radians(45.0)));
+  const auto spots = [](const pbr::Scene& scene) {
+    return std::count_if(scene.lights.begin() + 2, scene.lights.end(), [](const pbr::PointLight& l) {
+      return l.spot && l.spot->direction.y <= 0.0f && l.spot->innerAngle <= l.spot->outerAngle &&
+             l.spot->outerAngle >= glm::radians(10.0f) - 1e-6f && l.spot->outerAngle <= glm::radians(60.0f) + 1e-6f;
+    });
+  };
+  CHECK(spots(s) > 60);
+  CHECK(spots(s) < 140);
+  // The share given on the command line replaces the file's; positions, radii, colours and powers stay.
+  const pbr::Scene none = pbr::loadSceneFile(path, -1, {}, false, 0.0f);
+  const pbr::Scene all = pbr::loadSceneFile(path, -1, {}, false, 1.0f);
+  CHECK(spots(none) == 0);
+  CHECK(spots(all) == 400);
+  for (size_t i = 2; i < s.lights.size(); ++i) {
+    CHECK(none.lights[i].position == all.lights[i].position);
+    CHECK(none.lights[i].radius == s.lights[i].radius);
+    CHECK(none.lights[i].luminousPower == all.lights[i].luminousPower);
+  }
+  const std::string fixed = dir.write("f.json", R"({
+    "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "lights": [{"position": [0, 2, 0], "luminous_power": 100, "radius": 4}]
+  })");
+  CHECK_THROWS_WITH_AS(pbr::loadSceneFile(fixed, -1, {}, false, 0.5f), doctest::Contains("spot-light share"),
+                       pbr::SceneError);
+}
+
 TEST_CASE("scene file: base_color_texture loads an sRGB image relative to the file, once per path") {
   const TempDir dir;
   pbr::ImageRgba8 image{2, 1, {10, 20, 30, 255, 200, 100, 50, 255}};
@@ -306,18 +353,28 @@ TEST_CASE("scene file: a .gltf given alone is framed and lit by the default rig"
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(boxAsset(), 10), doctest::Contains("light count"), pbr::SceneError);
 }
 
-TEST_CASE("scene file: a model that declares lights gets no default rig even when none of them is shaded") {
+TEST_CASE("scene file: a model that declares lights gets no default rig even when it places none") {
   const TempDir dir;
   pbr::test::GltfBuilder builder = pbr::test::quadModel();
   builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
-  builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
-      {{"type", "spot"}, {"intensity", 10.0}, {"spot", {{"outerConeAngle", 0.5}}}}};
-  builder.doc["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-  builder.doc["scenes"][0]["nodes"].push_back(1);
+  builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::array();
   const pbr::Scene declared = pbr::loadSceneFile(builder.writeGltf(dir.path(), "declared"));
   CHECK(declared.lightsDeclared);
   CHECK(declared.lights.empty());
   CHECK(declared.notes.empty());
+  // A spot light is loaded as one, along its node's -Z.
+  builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "spot"}, {"intensity", 10.0}, {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 0.5}}}}};
+  builder.doc["nodes"].push_back({{"rotation", {-0.70710678, 0.0, 0.0, 0.70710678}},
+                                  {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  builder.doc["scenes"][0]["nodes"].push_back(1);
+  const pbr::Scene spot = pbr::loadSceneFile(builder.writeGltf(dir.path(), "spot"));
+  REQUIRE(spot.lights.size() == 1);
+  REQUIRE(spot.lights[0].spot.has_value());
+  checkVec(spot.lights[0].spot->direction, glm::vec3(0.0f, -1.0f, 0.0f));
+  CHECK(spot.lights[0].spot->innerAngle == doctest::Approx(0.25));
+  CHECK(spot.lights[0].spot->outerAngle == doctest::Approx(0.5));
+  CHECK(spot.notes.empty());
   // A directional light alone is a light: no rig either.
   builder.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "directional"}, {"intensity", 2.0}};
   const pbr::Scene sun = pbr::loadSceneFile(builder.writeGltf(dir.path(), "sun"));

@@ -171,8 +171,8 @@ void checkComputeCompiles(const std::string& file, const DefineSets& permutation
 
 TEST_CASE("shader library: every program the renderer builds from the project's shaders compiles") {
   PBR_REQUIRE_GL();
-  // Every model x culling x stats x light chunking with the standard PBR terms, then every form of every PBR term
-  // once.
+  // Every model x culling x stats x (light chunking, spot lights) with the standard PBR terms, then every form of
+  // every PBR term once.
   DefineSets lighting, ibl;
   for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
     for (const bool clustered : {false, true}) {
@@ -182,6 +182,7 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         options.stats = stats;
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, false, true));
         // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
         const pbr::EnvironmentMaps maps;
         options.environment = &maps;
@@ -200,9 +201,9 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   }
   checkComputeCompiles("lighting/deferred.comp", lighting);
   checkComputeCompiles("lighting/deferred.comp", ibl);
-  checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS"}));
+  checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS", "SPOT_LIGHTS"}));
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
-  checkComputeCompiles("lighting/cluster_lights.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_lights.comp", flagCombinations({"SPOT_LIGHTS"}));
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_clear.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));

@@ -71,6 +71,7 @@ Record settingsRecord(const BenchSettings& s) {
           {"timed_frames", std::to_string(s.frames)},
           {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
           {"constant_density", s.constantDensity ? density : "no"},
+          {"spot_share", s.spotShare ? fixedDecimals(*s.spotShare, 3) : "the scene's"},
           {"timing_requested", s.timing}};
 }
 
@@ -226,6 +227,7 @@ void writeBenchJson(std::ostream& out, const BenchReport& report) {
                    {"max_seconds", s.maxSeconds},
                    {"constant_density", s.constantDensity},
                    {"density_reference_lights", densityReferenceLights(s)},
+                   {"spot_share", s.spotShare ? Json(*s.spotShare) : Json()},
                    {"timing_requested", s.timing}};
   for (Culling c : s.culling) settings["culling"].push_back(toString(c));
   for (ShadingModel m : s.models) settings["models"].push_back(toString(m));

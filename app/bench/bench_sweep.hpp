@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct BenchSettings {
   int frames = 30;
   double maxSeconds = 60.0;
   bool constantDensity = false;
+  std::optional<float> spotShare;  // --spot-share: the share of random lights that are spots (else the scene's)
   std::string timing = "auto";  // as requested; the mode used is in the provenance
 };
 

@@ -4,8 +4,8 @@
 // screen tile and visits only the lights of that tile's mask (cluster_lights.comp), found through its summary
 // words, lowest first, so every list comes out in ascending order: clustered shading sums lights in the same
 // order as the brute-force path and the two agree bit for bit. A light is listed when its tile took it and its
-// sphere touches the box of the surfaces the cluster holds (cluster_occupancy.comp); clusters without surface
-// get no list.
+// sphere touches the box of the surfaces the cluster holds (cluster_occupancy.comp), and a spot light's cone the
+// box's bounding sphere; clusters without surface get no list.
 //
 // Dispatched once per chunk of lights (assignChunk), in ascending order, so that no invocation loops past
 // llvmpipe's limit of 65535 iterations: a chunk of 131,072 lights takes at most 128 summary words, 4,096 mask
@@ -19,6 +19,9 @@ layout(location = 0) uniform uvec4 assignChunk;
 
 layout(std430, binding = CLUSTER_SSBO) buffer Headers { ClusterHeader headers[]; };
 layout(std430, binding = CLUSTER_VIEW_LIGHTS_SSBO) readonly buffer ViewLights { vec4 viewLights[]; };
+#if SPOT_LIGHTS
+layout(std430, binding = CLUSTER_VIEW_CONES_SSBO) readonly buffer ViewCones { vec4 viewCones[]; };
+#endif
 layout(std430, binding = CLUSTER_OCCUPANCY_SSBO) readonly buffer Occupancy { uint occupancy[]; };
 layout(std430, binding = CLUSTER_TILE_MASKS_SSBO) readonly buffer TileMasks { uint tileMasks[]; };
 layout(std430, binding = CLUSTER_TILE_WORDS_SSBO) readonly buffer TileWords { uint tileWords[]; };
@@ -40,6 +43,9 @@ uint gCount;
 void testLight(uint light) {
   vec4 sphere = viewLights[light];
   if (!sphereIntersectsAabb(sphere.xyz, sphere.w, gBoxLo, gBoxHi)) return;
+#if SPOT_LIGHTS
+  if (!coneIntersectsAabb(viewCones[2u * light], viewCones[2u * light + 1u], gBoxLo, gBoxHi)) return;
+#endif
 #if ASSIGN_FILL
   lightIndices[gCursor++] = light;
 #else

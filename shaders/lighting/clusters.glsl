@@ -79,3 +79,19 @@ bool sphereIntersectsAabb(vec3 center, float radius, vec3 lo, vec3 hi) {
   vec3 d = max(lo - center, 0.0) + max(center - hi, 0.0);
   return dot(d, d) <= radius * radius;
 }
+
+// A spot light's cone in view space (cluster_lights.comp writes it, for frames with spot lights): apex and range R,
+// unit axis and the cosine of the outer angle; a point light's axis is zero and its cosine -1, which never culls.
+// Whether the cone can reach the box: tested against the box's bounding sphere (Wronski 2017, "Cull that cone!"),
+// the sphere's distance from the cone's side in the plane of the axis, never more than the true distance, so that
+// the test culls only what the cone misses.
+bool coneIntersectsAabb(vec4 apexRange, vec4 axisCos, vec3 lo, vec3 hi) {
+  vec3 center = 0.5 * (lo + hi);
+  float radius = 0.5 * length(hi - lo);
+  vec3 v = center - apexRange.xyz;
+  float along = dot(v, axisCos.xyz);
+  float across = sqrt(max(dot(v, v) - along * along, 0.0));
+  float cosOuter = axisCos.w, sinOuter = sqrt(max(1.0 - cosOuter * cosOuter, 0.0));
+  bool outsideAngle = cosOuter * across - sinOuter * along > radius;
+  return !(outsideAngle || along > radius + apexRange.w || along < -radius);
+}

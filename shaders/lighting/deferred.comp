@@ -33,6 +33,9 @@ layout(std430, binding = LIGHT_INDEX_SSBO) readonly buffer Indices { uint lightI
 // for the SIMD row, where a storage-buffer read is a bounds-checked load per lane (about 5 ns of a 7 ns pair).
 // The window holds the dispatch's lights (LightBuffer::bindWindow).
 layout(std140, binding = LIGHT_WINDOW_UBO) uniform LightWindow { PointLight windowLights[LIGHT_WINDOW]; };
+#if SPOT_LIGHTS
+layout(std140, binding = SPOT_WINDOW_UBO) uniform SpotWindow { vec4 windowCones[LIGHT_WINDOW]; };
+#endif
 #endif
 #if LIGHTING_STATS
 // Per workgroup: light-pixel pairs evaluated, and pairs that contribute (attenuation > 0 and n.l > 0).
@@ -56,10 +59,10 @@ layout(rgba32f, binding = PARTIAL_RADIANCE_IMAGE) uniform image2D partialRadianc
 #endif
 
 #if LIGHTING_STATS
-bool contributes(Surface s, PointLight light) {
+bool contributes(Surface s, PointLight light, vec4 cone) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
-  return dot(s.normal, L) > 0.0 && distanceAttenuation(d2, light.positionRadius.w) > 0.0;
+  return dot(s.normal, L) > 0.0 && lightAttenuation(d2, L, light, cone) > 0.0;
 }
 #endif
 
@@ -75,13 +78,23 @@ uint gContributing;
 // The k-th light this pixel visits: its cluster's k-th entry, or light k when shading every light.
 void visitLight(Surface s, uint k) {
 #if CLUSTERED
-  PointLight light = lights[gListed ? lightIndices[gHeader.offset + k] : k];
+  uint index = gListed ? lightIndices[gHeader.offset + k] : k;
+  PointLight light = lights[index];
+#if SPOT_LIGHTS
+  vec4 cone = spotCones[index];
+#endif
 #else
   PointLight light = windowLights[k - gWindowStart];
+#if SPOT_LIGHTS
+  vec4 cone = windowCones[k - gWindowStart];
 #endif
-  gColor += shadeLight(s, light);
+#endif
+#if !SPOT_LIGHTS
+  const vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+  gColor += shadeLight(s, light, cone);
 #if LIGHTING_STATS
-  gContributing += contributes(s, light) ? 1u : 0u;
+  gContributing += contributes(s, light, cone) ? 1u : 0u;
 #endif
 }
 

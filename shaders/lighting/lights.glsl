@@ -8,6 +8,14 @@ layout(std430, binding = LIGHT_SSBO) readonly buffer LightBuffer {
   PointLight lights[];
 };
 
+#if SPOT_LIGHTS
+// Mirrors pbr::GpuSpotCone, one per light, indexed as `lights`: the axis times the falloff's scale, and its offset.
+// A point light's, (0, 0, 0, 1), leaves it unmasked.
+layout(std430, binding = SPOT_CONE_SSBO) readonly buffer SpotConeBuffer {
+  vec4 spotCones[];
+};
+#endif
+
 // Mirrors pbr::LightingBlock (lighting/lighting_block.hpp).
 layout(std140, binding = LIGHTING_UBO) uniform LightingBlock {
   vec4 ambient;  // uniform ambient radiance (PBR)
@@ -22,6 +30,22 @@ float distanceAttenuation(float d2, float R) {
   float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
   float attenuation = min(window * window / max(d2, 1e-4), 1.0);
   return R > 0.0 ? attenuation : 0.0;
+}
+
+// A spot light's smooth angular falloff (KHR_lights_punctual): clamp(cos(angle to the axis) s + o, 0, 1)^2, with
+// the axis premultiplied by s; L points from the surface to the light.
+float spotAttenuation(vec4 cone, vec3 L) {
+  float x = clamp(dot(cone.xyz, -L) + cone.w, 0.0, 1.0);
+  return x * x;
+}
+
+// The light's distance window times, with spot lights in the frame, its cone's falloff.
+float lightAttenuation(float d2, vec3 L, PointLight light, vec4 cone) {
+#if SPOT_LIGHTS
+  return distanceAttenuation(d2, light.positionRadius.w) * spotAttenuation(cone, L);
+#else
+  return distanceAttenuation(d2, light.positionRadius.w);
+#endif
 }
 
 // Unit direction to the light and its squared distance; a light exactly at the point shines along the normal.

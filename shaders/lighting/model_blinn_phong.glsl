@@ -41,10 +41,10 @@ vec3 shadeIncident(Surface s, vec3 L, vec3 color, float weight) {
   return (gDiffuse * NoL + gSpecularColor * lobe(NoH)) * color * weight;
 }
 
-vec3 shadeLight(Surface s, PointLight light) {
+vec3 shadeLight(Surface s, PointLight light, vec4 cone) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
-  return shadeIncident(s, L, light.colorIntensity.rgb, distanceAttenuation(d2, light.positionRadius.w));
+  return shadeIncident(s, L, light.colorIntensity.rgb, lightAttenuation(d2, L, light, cone));
 }
 
 // As a point light's intensity, a directional light's illuminance has no place in an LDR model: its colour is its

@@ -38,11 +38,12 @@ vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
   return f * color * (strength * NoL);
 }
 
-// A point light of intensity I gives I att / d^2 lux, att windowed (distanceAttenuation holds the 1 / d^2).
-vec3 shadeLight(Surface s, PointLight light) {
+// A point light of intensity I gives I att / d^2 lux, att windowed and masked by a spot light's cone
+// (lightAttenuation holds the 1 / d^2).
+vec3 shadeLight(Surface s, PointLight light, vec4 cone) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
-  float att = distanceAttenuation(d2, light.positionRadius.w);
+  float att = lightAttenuation(d2, L, light, cone);
   return shadeIncident(s, L, light.colorIntensity.rgb, light.colorIntensity.w * att);
 }
 
