@@ -141,6 +141,53 @@ TEST_CASE("clusters: an index list over its memory limit falls back to brute for
   CHECK(test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
 }
 
+TEST_CASE("clusters: 1000 random spot cones, narrow and wide, seen from inside and across the near plane, equal brute force") {
+  PBR_REQUIRE_GL();
+  ClusterConfig config;
+  config.tileSize = 16;
+  Scene scene = clusterScene();
+  RandomLightSpec spec;
+  spec.count = 1000;
+  spec.seed = 5;
+  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
+  spec.boundsMax = {12.0f, 4.0f, 8.0f};
+  spec.radiusMin = 0.5f;
+  spec.radiusMax = 6.0f;
+  spec.powerMin = 2.0f;
+  spec.powerMax = 60.0f;
+  spec.spotShare = 0.8f;
+  scene.lights = makeRandomLights(spec);
+  // The awkward cones: one holding the camera, one straddling the near plane aimed across the view, one as wide as
+  // glTF allows covering the whole view, a needle of 1 degree, and one of zero range.
+  const Camera& c = scene.camera;
+  const glm::vec3 forward = glm::normalize(c.target - c.position);
+  const auto cone = [](glm::vec3 direction, float innerDeg, float outerDeg) {
+    return SpotCone{glm::normalize(direction), glm::radians(innerDeg), glm::radians(outerDeg)};
+  };
+  scene.lights.push_back({c.position - forward * 2.0f, 8.0f, {1.0f, 0.9f, 0.8f}, 80.0f, cone(forward, 10.0f, 30.0f)});
+  scene.lights.push_back({c.position + forward * c.nearPlane, 3.0f, {0.4f, 0.6f, 1.0f}, 40.0f,
+                          cone({1.0f, -0.4f, 0.0f}, 0.0f, 50.0f)});
+  scene.lights.push_back({c.target + glm::vec3(0.0f, 3.0f, 0.0f), 500.0f, {0.2f, 0.2f, 0.2f}, 5.0f,
+                          cone({0.0f, -1.0f, 0.0f}, 80.0f, 90.0f)});
+  scene.lights.push_back({glm::vec3(0.0f, 3.0f, 0.0f), 6.0f, {1.0f, 1.0f, 0.2f}, 200.0f, cone({0.1f, -1.0f, 0.2f}, 0.5f, 1.0f)});
+  scene.lights.push_back({glm::vec3(0.5f, 0.3f, 1.0f), 0.0f, {1.0f, 0.0f, 0.0f}, 100.0f, cone({0.0f, -1.0f, 0.0f}, 5.0f, 20.0f)});
+  const auto spots = std::count_if(scene.lights.begin(), scene.lights.end(), [](const PointLight& l) { return l.spot.has_value(); });
+  CHECK(spots > 700);
+  CHECK(size_t(spots) < scene.lights.size());
+  checkClusteredMatchesBruteForce(scene, ShadingModel::Pbr, config);
+  checkClusteredMatchesBruteForce(scene, ShadingModel::BlinnPhong, config);
+  // Culled as cones: each contributing pair on both paths alike, and a small share of brute force's pairs.
+  FrameOptions options;
+  options.stats = true;
+  options.culling = Culling::None;
+  const test::RenderedFrame brute = test::renderScene(scene, kSize, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame clustered = test::renderScene(scene, kSize, options, 2, config);
+  CHECK(brute.stats.pairs.contributing == clustered.stats.pairs.contributing);
+  CHECK(clustered.stats.pairs.contributing > 0);
+  CHECK(clustered.stats.pairs.evaluated * 20 < brute.stats.pairs.evaluated);
+}
+
 TEST_CASE("clusters: statistics count contributing pairs identically on both paths and culling helps") {
   PBR_REQUIRE_GL();
   Scene scene = clusterScene();

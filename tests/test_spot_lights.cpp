@@ -1,15 +1,11 @@
 // Spot lights: a glTF spot aimed at a floor against the cone falloff of KHR_lights_punctual, evaluated here from
-// the angles, and against the double-precision reference; clustered culling of cones against brute force.
+// the angles, and against the double-precision reference (clustered culling of cones: test_clusters.cpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/accuracy_metrics.hpp"
-#include "core/builtin_scenes.hpp"
 #include "core/scene_json.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/display_image.hpp"
@@ -17,7 +13,6 @@
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/gltf_builder.hpp"
-#include "tests/render_util.hpp"
 
 namespace ref = pbr::reference;
 using pbr::test::TempDir;
@@ -129,69 +124,4 @@ TEST_CASE("spot lights: a floor under a glTF spot is lit inside the cone, black 
       pbr::measureError(gpu.hdr, gpu.ldr, expected, pbr::displayImage(shaders, expected.radiance, 1.0f));
   MESSAGE("relative RMSE against the reference: " << e.relativeRmse);
   CHECK(e.relativeRmse < 1e-3);
-}
-
-TEST_CASE("spot lights: 1000 random cones, narrow and wide, seen from inside and across the near plane, equal brute force") {
-  PBR_REQUIRE_GL();
-  pbr::Scene s;
-  s.name = "spot-clusters";
-  s.camera.position = {0.0f, 2.0f, 6.0f};
-  s.camera.target = {0.0f, 0.5f, 0.0f};
-  s.camera.nearPlane = 0.3f;
-  s.camera.farPlane = 40.0f;
-  s.ambient = glm::vec3(0.01f);
-  s.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(60.0f, 1.0f, 60.0f)), {glm::vec3(0.6f), 0.7f, 0.0f});
-  s.addShape(pbr::Shape::Box, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, -1.0f)),
-             {glm::vec3(0.8f, 0.3f, 0.2f), 0.3f, 0.0f});
-  s.addShape(pbr::Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.8f, 0.5f)), glm::vec3(1.6f)),
-             {glm::vec3(0.9f, 0.8f, 0.5f), 0.25f, 1.0f});
-  pbr::RandomLightSpec spec;
-  spec.count = 1000;
-  spec.seed = 5;
-  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
-  spec.boundsMax = {12.0f, 4.0f, 8.0f};
-  spec.radiusMin = 0.5f;
-  spec.radiusMax = 6.0f;
-  spec.powerMin = 2.0f;
-  spec.powerMax = 60.0f;
-  spec.spotShare = 0.8f;
-  s.lights = pbr::makeRandomLights(spec);
-  // The awkward cones: one whose cone holds the camera, one straddling the near plane aimed across the view, a
-  // 90-degree one as wide as glTF allows covering the whole view, a needle of 1 degree, and a cone of zero range.
-  const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.position);
-  const auto cone = [](glm::vec3 direction, float innerDeg, float outerDeg) {
-    return pbr::SpotCone{glm::normalize(direction), glm::radians(innerDeg), glm::radians(outerDeg)};
-  };
-  s.lights.push_back({s.camera.position - forward * 2.0f, 8.0f, {1.0f, 0.9f, 0.8f}, 80.0f, cone(forward, 10.0f, 30.0f)});
-  s.lights.push_back({s.camera.position + forward * s.camera.nearPlane, 3.0f, {0.4f, 0.6f, 1.0f}, 40.0f,
-                      cone({1.0f, -0.4f, 0.0f}, 0.0f, 50.0f)});
-  s.lights.push_back({s.camera.target + glm::vec3(0.0f, 3.0f, 0.0f), 500.0f, {0.2f, 0.2f, 0.2f}, 5.0f,
-                      cone({0.0f, -1.0f, 0.0f}, 80.0f, 90.0f)});
-  s.lights.push_back({glm::vec3(0.0f, 3.0f, 0.0f), 6.0f, {1.0f, 1.0f, 0.2f}, 200.0f, cone({0.1f, -1.0f, 0.2f}, 0.5f, 1.0f)});
-  s.lights.push_back({glm::vec3(0.5f, 0.3f, 1.0f), 0.0f, {1.0f, 0.0f, 0.0f}, 100.0f, cone({0.0f, -1.0f, 0.0f}, 5.0f, 20.0f)});
-  const size_t spots = size_t(std::count_if(s.lights.begin(), s.lights.end(), [](const pbr::PointLight& l) { return l.spot.has_value(); }));
-  CHECK(spots > 700);
-  CHECK(spots < s.lights.size());
-
-  pbr::ClusterConfig config;
-  config.tileSize = 16;
-  const glm::ivec2 size{160, 90};
-  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
-    CAPTURE(pbr::toString(model));
-    pbr::FrameOptions options;
-    options.model = model;
-    options.culling = pbr::Culling::None;
-    options.stats = true;
-    const pbr::test::RenderedFrame reference = pbr::test::renderScene(s, size, options, 1);
-    options.culling = pbr::Culling::Clustered;
-    const pbr::test::RenderedFrame clustered = pbr::test::renderScene(s, size, options, 2, config);
-    CHECK(clustered.stats.overflowedClusters == 0);
-    CHECK(pbr::test::maxRelativeDifference(clustered.hdr, reference.hdr) <= 1e-5);
-    CHECK(pbr::test::countDifferentBytes(clustered.ldr, reference.ldr) == 0);
-    // The cones are culled as cones: clustering evaluates a small share of brute force's pairs, and each
-    // contributing pair on both paths alike.
-    CHECK(clustered.stats.pairs.contributing == reference.stats.pairs.contributing);
-    CHECK(clustered.stats.pairs.contributing > 0);
-    CHECK(clustered.stats.pairs.evaluated * 20 < reference.stats.pairs.evaluated);
-  }
 }
