@@ -170,7 +170,8 @@ Scene makeBuiltinScene(const std::string& name, const SceneParams& params) {
     throw SceneError("unknown scene '" + name + "' (built-in scenes: " + list + ")");
   }
   const int fileLightCount = builtin->setLightCount ? -1 : params.lights.value_or(-1);
-  Scene scene = loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys);
+  Scene scene = loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys,
+                              params.defaultEnvironment);
   if (params.viewAngleDeg && builtin->setViewAngle) builtin->setViewAngle(scene, *params.viewAngleDeg);
   if (params.lights && builtin->setLightCount) builtin->setLightCount(scene, *params.lights);
   return scene;

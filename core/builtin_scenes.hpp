@@ -29,6 +29,7 @@ struct SceneParams {
   std::optional<float> viewAngleDeg;  // fresnel-floor: angle between the floor normal and the view direction
   UriPolicy uris;                     // scene files: where glTF buffers and images may be
   bool strictKeys = false;            // scene files: an unknown key is an error, not a warning (--strict)
+  DefaultEnvironment defaultEnvironment = DefaultEnvironment::Sky;  // scene files: for glTF models given none
 };
 
 std::vector<std::string> builtinSceneNames();

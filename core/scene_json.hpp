@@ -11,8 +11,10 @@ namespace pbr {
 // what was expected. `lightCount`, when >= 0, replaces random_lights.count; a file without random_lights
 // (or a model) rejects it. `policy` applies to the buffers and images of every glTF model loaded. A key the JSON
 // reader never looks up is warned about on stderr, or with `strictKeys` refused (JsonField::reportUnknownKeys).
-// The scene is checked by validateScene before it is returned.
+// `environment` is what a model, or a JSON scene placing glTF models, gets when the file has no "environment" (a
+// note in Scene::notes says so); a JSON scene of shapes alone gets none. The scene is checked by validateScene
+// before it is returned.
 Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {},
-                    bool strictKeys = false);
+                    bool strictKeys = false, DefaultEnvironment environment = DefaultEnvironment::Sky);
 
 }  // namespace pbr
