@@ -189,6 +189,7 @@ int runBench(const std::vector<std::string>& argv) {
   std::vector<Scene> scenes;
   for (int lights : settings.lights) {
     SceneParams params = sceneFileParams(args);
+    params.defaultEnvironment = DefaultEnvironment::None;  // timings stay comparable with earlier runs
     params.lights = lights;
     Scene scene = resolveScene(settings.scene, params);
     const float scale = settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;

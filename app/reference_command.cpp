@@ -55,6 +55,7 @@ int runReference(const std::vector<std::string>& argv) {
   if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
   hdrFileFormat(out);  // an unknown extension fails before the frame is traced
   SceneParams params = sceneFileParams(args);
+  params.defaultEnvironment = DefaultEnvironment::None;  // the reference has no image-based lighting
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const glm::ivec2 size = args.getSize("--size", {640, 360});

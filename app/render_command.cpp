@@ -43,9 +43,8 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
       ev100Option(),
       cameraOption(),
-      {"--environment", "F.hdr|sky", "image-based lighting (PBR) and background from a Radiance .hdr or the "
-                                     "procedural sky, replacing the scene's environment"},
-      {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"},
+      environmentOption(),
+      environmentIntensityOption(),
       {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
       {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
       {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet (default 2)"},
@@ -117,23 +116,6 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   }
 }
 
-// --environment replaces the scene's environment (intensity 1, no rotation); --environment-intensity scales
-// whichever applies.
-void applyEnvironmentOptions(const Args& args, Scene& scene) {
-  if (args.has("--environment")) {
-    const std::string source = args.get("--environment", "");
-    if (source.empty()) throw UsageError("--environment needs a .hdr file or \"sky\"");
-    scene.environment = EnvironmentDesc{};
-    if (source != "sky") scene.environment->file = source;
-  }
-  if (args.has("--environment-intensity")) {
-    if (!scene.environment) {
-      throw UsageError("--environment-intensity needs an environment (--environment or the scene's)");
-    }
-    scene.environment->intensity = args.getFloat("--environment-intensity", 1.0f, 0.0f, 1e6f);
-  }
-}
-
 void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
   for (const FrameTiming& f : frames) {
     for (const PassTiming& p : f.passes) std::printf("  %-16s %9.3f ms\n", p.name.c_str(), p.ms);
@@ -161,6 +143,7 @@ int runRender(const std::vector<std::string>& argv) {
   rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
   rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer", "lean"));
   SceneParams sceneParams = sceneFileParams(args);
+  sceneParams.defaultEnvironment = defaultEnvironment(args);
   if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   const Culling culling = parseCulling(args.get("--culling", "clustered"));

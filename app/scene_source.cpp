@@ -58,6 +58,41 @@ void applyCameraOption(const Args& args, Scene& scene) {
   scene.camera = scene.cameras[static_cast<size_t>(index)];
 }
 
+OptionSpec environmentOption() {
+  return {"--environment", "F.hdr|sky|none",
+          "image-based lighting (PBR) and background from a Radiance .hdr or the procedural sky, or none, replacing "
+          "the scene's environment (default: the scene file's; a glTF model, or a scene file that places models and "
+          "has no \"environment\", gets the sky)"};
+}
+
+OptionSpec environmentIntensityOption() {
+  return {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"};
+}
+
+DefaultEnvironment defaultEnvironment(const Args& args) {
+  return args.has("--environment") ? DefaultEnvironment::None : DefaultEnvironment::Sky;
+}
+
+// --environment sets intensity 1 and no rotation.
+void applyEnvironmentOptions(const Args& args, Scene& scene) {
+  if (args.has("--environment")) {
+    const std::string source = args.get("--environment", "");
+    if (source.empty()) throw UsageError("--environment needs a .hdr file, \"sky\" or \"none\"");
+    if (source == "none") {
+      scene.environment.reset();
+    } else {
+      scene.environment = EnvironmentDesc{};
+      if (source != "sky") scene.environment->file = source;
+    }
+  }
+  if (args.has("--environment-intensity")) {
+    if (!scene.environment) {
+      throw UsageError("--environment-intensity needs an environment (--environment or the scene's)");
+    }
+    scene.environment->intensity = args.getFloat("--environment-intensity", 1.0f, 0.0f, 1e6f);
+  }
+}
+
 float applyExposureOptions(const Args& args, Scene& scene) {
   if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", 0.0f, -kMaxEv100, kMaxEv100);
   scene.exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
@@ -72,7 +107,8 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
   if (isBuiltinScene(nameOrPath)) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
-    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys, params.spotShare);
+    scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys,
+                          params.defaultEnvironment, params.spotShare);
   } else {
     std::string names;
     for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;

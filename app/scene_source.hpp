@@ -20,6 +20,15 @@ float applyExposureOptions(const Args& args, Scene& scene);
 OptionSpec cameraOption();
 void applyCameraOption(const Args& args, Scene& scene);
 
+// --environment F.hdr|sky|none and --environment-intensity X, taken by the commands that show frames. Given,
+// --environment decides alone: the loaders then add no default environment (defaultEnvironment says None), and
+// applyEnvironmentOptions puts its choice in the loaded scene and scales whichever environment applies; UsageError
+// for an intensity without an environment.
+OptionSpec environmentOption();
+OptionSpec environmentIntensityOption();
+DefaultEnvironment defaultEnvironment(const Args& args);
+void applyEnvironmentOptions(const Args& args, Scene& scene);
+
 // --allow-outside-uris and --strict, taken by every command that loads scene files, and --spot-share, by those
 // that take --lights; and the scene parameters they set (the other parameters left at their defaults).
 OptionSpec allowOutsideUrisOption();

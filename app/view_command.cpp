@@ -22,6 +22,8 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},
       ev100Option(),
       cameraOption(),
+      environmentOption(),
+      environmentIntensityOption(),
       {"--size", "WxH", "window size in pixels (default 1280x720)"},
       {"--paused", "", "start with the light animation paused (key P toggles)"},
       {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)"},
@@ -54,6 +56,7 @@ int runView(const std::vector<std::string>& argv) {
   ViewerOptions options;
   options.sceneName = args.get("--scene", "default");
   options.sceneParams = sceneFileParams(args);
+  options.sceneParams.defaultEnvironment = defaultEnvironment(args);
   if (args.has("--lights")) options.sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
   if (args.has("--view-angle")) options.sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   options.frame.model = parseShadingModel(args.get("--model", "pbr"));
@@ -67,6 +70,7 @@ int runView(const std::vector<std::string>& argv) {
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 
   Scene scene = resolveScene(options.sceneName, options.sceneParams);
+  applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
   options.frame.exposure = applyExposureOptions(args, scene);
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());

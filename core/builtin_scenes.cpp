@@ -189,8 +189,8 @@ Scene makeBuiltinScene(const std::string& name, const SceneParams& params) {
     throw SceneError(name + ": a spot-light share applies to the scenes of random lights (default, stress, "
                             "helmet-grid, many-lights)");
   }
-  Scene scene =
-      loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys, params.spotShare);
+  Scene scene = loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys,
+                              params.defaultEnvironment, params.spotShare);
   if (params.viewAngleDeg && builtin->setViewAngle) builtin->setViewAngle(scene, *params.viewAngleDeg);
   if (params.lights && builtin->setLightCount) builtin->setLightCount(scene, *params.lights);
   return scene;

@@ -33,6 +33,7 @@ struct SceneParams {
   std::optional<float> spotShare;     // scenes of random lights: the share of them that are spot lights
   UriPolicy uris;                     // scene files: where glTF buffers and images may be
   bool strictKeys = false;            // scene files: an unknown key is an error, not a warning (--strict)
+  DefaultEnvironment defaultEnvironment = DefaultEnvironment::Sky;  // scene files: for glTF models given none
 };
 
 std::vector<std::string> builtinSceneNames();

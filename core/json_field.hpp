@@ -38,6 +38,8 @@ class JsonField {
       : value_(&root), file_(std::move(file)), reads_(std::make_shared<Reads>(Reads{&root, {}, {}})) {}
 
   bool present() const { return value_ != nullptr; }
+  // For a field that takes a keyword or an object.
+  bool isString() const { return value_ && value_->is_string(); }
 
   // A member: absent when missing. Fails when this field is present but not an object.
   JsonField operator[](const std::string& key) const;

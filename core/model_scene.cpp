@@ -50,7 +50,7 @@ std::vector<PointLight> defaultLightRig(const Bounds& bounds) {
   return lights;
 }
 
-Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
+Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEnvironment environment) {
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
   const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy);
@@ -64,6 +64,11 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy) {
   if (scene.lights.empty() && scene.directionalLights.empty() && !scene.lightsDeclared) {
     scene.lights = defaultLightRig(bounds);
     scene.notes.push_back("the file has no lights: lit by a default rig of three point lights");
+  }
+  // Core glTF has no way to name an environment: the file is always silent about one.
+  if (environment == DefaultEnvironment::Sky) {
+    scene.environment = EnvironmentDesc{};
+    scene.notes.push_back("no environment in the file: lit by the procedural sky (--environment none turns it off)");
   }
   return scene;
 }

@@ -16,7 +16,9 @@ Camera frameBounds(const Bounds& bounds, float fovYDeg);
 // illuminance on the model is the same at any scale. For models that bring no lights.
 std::vector<PointLight> defaultLightRig(const Bounds& bounds);
 
-// A .gltf or .glb model alone: framed by frameBounds, a small ambient, and the default rig when it has no lights.
-Scene loadModelScene(const std::string& path, const UriPolicy& policy = {});
+// A .gltf or .glb model alone: framed by frameBounds, a small ambient, the default rig when it has no lights, and
+// the procedural sky unless `environment` is None. What it adds so is said in Scene::notes.
+Scene loadModelScene(const std::string& path, const UriPolicy& policy = {},
+                     DefaultEnvironment environment = DefaultEnvironment::Sky);
 
 }  // namespace pbr

@@ -107,6 +107,11 @@ struct EnvironmentDesc {
   float rotationDeg = 0.0f;  // about +Y, right-handed
 };
 
+// What the loaders give glTF models whose scene names no environment. Their metals show little but reflections, so
+// the commands that show frames light them by the procedural sky; the measurements keep them without one, to stay
+// comparable with earlier runs and with the reference renderer, which has no image-based lighting.
+enum class DefaultEnvironment { Sky, None };
+
 // What appendGltf added to a scene for one file, by the file's own indices: a file placed N times then costs one
 // conversion of each mesh and one decode (and GPU upload) of each image, not N. The indices are valid while the
 // scene's meshes and textures only grow.

@@ -242,8 +242,13 @@ SkyParams readSky(const JsonField& f) {
   return sky;
 }
 
-// The file is only checked for existence here: it is decoded, with its own one-line errors, when rendered.
-EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
+// The file is only checked for existence here: it is decoded, with its own one-line errors, when rendered. "none"
+// says no environment where leaving the key out would not: in a scene with glTF models.
+std::optional<EnvironmentDesc> readEnvironment(const JsonField& f, const fs::path& folder) {
+  if (f.isString()) {
+    if (f.string() != "none") f.expected(R"("none" or an object with a "file" or a "sky" field)");
+    return std::nullopt;
+  }
   const JsonField file = f["file"], sky = f["sky"];
   if (file.present() == sky.present()) {
     f.fail(file.present() ? "expected \"file\" or \"sky\", got both" : "expected a \"file\" or a \"sky\" field");
@@ -261,7 +266,7 @@ EnvironmentDesc readEnvironment(const JsonField& f, const fs::path& folder) {
 }
 
 Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
-                    std::optional<float> spotShare) {
+                    DefaultEnvironment defaultEnvironment, std::optional<float> spotShare) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
   if (!document.is_object()) root.expected("a JSON object");
@@ -273,8 +278,16 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   scene.ev100 = readEv100(root["camera"]);
   scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
-  if (root["environment"].present()) scene.environment = readEnvironment(root["environment"], folder);
+  const JsonField environment = root["environment"];
+  if (environment.present()) scene.environment = readEnvironment(environment, folder);
   for (const JsonField& o : root["objects"].items()) readObject(o, folder, policy, scene);
+  // Scenes of shapes alone were written for their own lights and stay without one; glTF models are lit as a model
+  // given alone is.
+  if (!environment.present() && !scene.gltfFiles.empty() && defaultEnvironment == DefaultEnvironment::Sky) {
+    scene.environment = EnvironmentDesc{};
+    scene.notes.push_back("no environment in the file, which places glTF models: lit by the procedural sky "
+                          "(\"environment\": \"none\" in the file or --environment none turns it off)");
+  }
   for (const JsonField& l : root["lights"].items()) {
     const std::string type = l["type"].present() ? l["type"].string() : "point";
     if (type == "point") {
@@ -309,14 +322,15 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
-                    std::optional<float> spotShare) {
+                    DefaultEnvironment environment, std::optional<float> spotShare) {
   const std::string ext = lowerExtension(path);
   const bool model = ext == ".gltf" || ext == ".glb";
   if (model && (lightCount >= 0 || spotShare)) {
     throw SceneError(path + ": " + (lightCount >= 0 ? "a light count" : "a spot-light share") +
                      " applies only to scene files with random_lights");
   }
-  Scene scene = model ? loadModelScene(path, policy) : readJsonScene(path, lightCount, policy, strictKeys, spotShare);
+  Scene scene = model ? loadModelScene(path, policy, environment)
+                      : readJsonScene(path, lightCount, policy, strictKeys, environment, spotShare);
   validateScene(scene, path);
   return scene;
 }

@@ -12,9 +12,12 @@ namespace pbr {
 // what was expected. `lightCount`, when >= 0, replaces random_lights.count; a file without random_lights
 // (or a model) rejects it. `policy` applies to the buffers and images of every glTF model loaded. A key the JSON
 // reader never looks up is warned about on stderr, or with `strictKeys` refused (JsonField::reportUnknownKeys).
-// `spotShare`, when given, replaces random_lights.spot_share as `lightCount` does its count. The scene is checked
-// by validateScene before it is returned.
+// `environment` is what a model, or a JSON scene placing glTF models, gets when the file has no "environment" (a
+// note in Scene::notes says so); a JSON scene of shapes alone gets none. `spotShare`, when given, replaces
+// random_lights.spot_share as `lightCount` does its count. The scene is checked by validateScene before it is
+// returned.
 Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {},
-                    bool strictKeys = false, std::optional<float> spotShare = std::nullopt);
+                    bool strictKeys = false, DefaultEnvironment environment = DefaultEnvironment::Sky,
+                    std::optional<float> spotShare = std::nullopt);
 
 }  // namespace pbr

@@ -99,6 +99,9 @@ TEST_CASE("built-in scenes: each name is a file of scenes/ that loads as that sc
     CHECK(!scene.objects.empty());
     CHECK(!scene.lights.empty());
     CHECK(scene.lights.size() == pbr::loadSceneFile((kSceneFolder / (name + ".json")).string()).lights.size());
+    // What bench and accuracy measure: lit by their lights alone, whether or not they place glTF models.
+    CHECK_FALSE(scene.environment);
+    CHECK(scene.notes.empty());
   }
   for (const fs::directory_entry& e : fs::directory_iterator(kSceneFolder)) {
     if (e.path().extension() != ".json") continue;

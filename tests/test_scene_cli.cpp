@@ -1,9 +1,11 @@
 // `pbr render --scene` refusing what it cannot render: a bad file or an unknown scene exits 1, an option the scene
-// does not take exits 2, each with one line and before any context is made.
+// does not take exits 2, each with one line and before any context is made; and the environment options.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <string>
 
+#include "core/assets.hpp"
 #include "tests/cli_scene.hpp"
 #include "tests/cli_util.hpp"
 
@@ -41,4 +43,28 @@ TEST_CASE("cli: --view-angle is refused for scenes other than fresnel-floor") {
     CHECK(isOneLine(run.err));
     CHECK(run.err.find("--view-angle applies only to --scene fresnel-floor") != std::string::npos);
   }
+}
+
+TEST_CASE("cli: --environment none takes a model's default sky away, and the reference never gets one") {
+  const TempDir dir;
+  const std::string box = pbr::assetPath("BoxTextured/glTF-Embedded/BoxTextured.gltf");
+  for (const std::string command : {"render", "view"}) {
+    CAPTURE(command);
+    const PbrRun help = runPbr(dir, {command, "--help"});
+    CHECK(help.out.find("--environment F.hdr|sky|none") != std::string::npos);
+    // Refused before a context or a window is made.
+    const PbrRun run =
+        runPbr(dir, {command, "--scene", box, "--environment", "none", "--environment-intensity", "2"});
+    CHECK(run.exitCode == 2);
+    CHECK(isOneLine(run.err));
+    CHECK(run.err.find("--environment-intensity needs an environment") != std::string::npos);
+    CHECK(run.out.empty());
+  }
+  // The reference refuses scenes with an environment: a default sky would fail it.
+  const std::string out = dir.file("box.pfm");
+  const PbrRun reference =
+      runPbr(dir, {"reference", "--scene", box, "--size", "16x9", "--threads", "2", "--hdr", out});
+  CAPTURE(reference.err);
+  CHECK(reference.exitCode == 0);
+  CHECK(std::filesystem::exists(out));
 }

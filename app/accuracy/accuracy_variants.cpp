@@ -90,6 +90,7 @@ AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params) {
   }
   for (char& c : label)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  params.defaultEnvironment = DefaultEnvironment::None;  // the reference has no image-based lighting
   Scene scene = resolveScene(name, params);
   for (auto& object : scene.objects) object.material.baseColorTexture = -1;
   return {label, std::move(scene)};

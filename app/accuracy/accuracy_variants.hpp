@@ -36,7 +36,8 @@ struct AccuracyScene {
 bool hasOnlyAnalyticShapes(const Scene& scene);
 
 // A built-in scene name or file, or "fresnel-floor:DEG" for that view angle, loaded with `params` (the view angle
-// set from the spec). The reference ignores textures, so base colour textures are removed.
+// set from the spec, and no default environment, which the reference could not render). The reference ignores
+// textures, so base colour textures are removed.
 AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params = {});
 
 }  // namespace pbr
