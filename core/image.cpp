@@ -105,9 +105,27 @@ std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
   return "";
 }
 
+// A PNG chunk whose declared length runs past the end of the file: stb_image grows its data buffer to the declared
+// length, doubling, before it finds the bytes missing, so a few hundred bytes can ask for gigabytes. Empty when
+// every chunk fits (or the data is no PNG).
+std::string pngChunkProblem(const unsigned char* b, size_t size) {
+  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (size < 8 || std::memcmp(b, signature, 8) != 0) return {};
+  size_t pos = 8;
+  while (pos + 12 <= size) {
+    const size_t length = size_t(b[pos]) << 24 | size_t(b[pos + 1]) << 16 | size_t(b[pos + 2]) << 8 | b[pos + 3];
+    if (length > size - pos - 12) {
+      return "PNG chunk at byte " + std::to_string(pos) + " declares " + std::to_string(length) +
+             " bytes, past the end of the data (" + std::to_string(size) + " bytes)";
+    }
+    pos += 12 + length;
+  }
+  return {};
+}
+
 // An empty IDAT chunk is legal PNG, but stb_image copies it (memcpy of 0 bytes) into a data buffer it has not
 // allocated yet when it comes first, which is undefined behaviour. Returns the file without its empty IDAT chunks,
-// or nothing when it has none (or is no PNG); a chunk that runs past the end stops the walk, for stb to report.
+// or nothing when it has none (or is no PNG). Every chunk fits (pngChunkProblem).
 std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned char* b, size_t size) {
   static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (size < 8 || std::memcmp(b, signature, 8) != 0) return std::nullopt;
@@ -134,6 +152,8 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
   const std::string jpegProblem = jpegHuffmanProblem(bytes, size);
   if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
+  const std::string pngProblem = pngChunkProblem(bytes, size);
+  if (!pngProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + pngProblem);
   const std::optional<std::vector<unsigned char>> png = withoutEmptyPngData(bytes, size);
   if (png) {
     bytes = png->data();

@@ -94,3 +94,20 @@ TEST_CASE("image decode: a header declaring more pixels than the image limit is 
                     "bomb.jpg: cannot decode image: 6432x65280 pixels, over the image limit (16384 a side, "
                     "67108864 pixels in all)");
 }
+
+TEST_CASE("image decode: a PNG chunk declaring more bytes than the file holds is refused before stb_image sizes it") {
+  // A valid PNG with a second IDAT whose length field says 1.9 GB: stb_image would grow its data buffer to that
+  // before finding the bytes missing (a texture fuzzing find: malloc of 2 GiB from a file of a few hundred bytes).
+  const pbr::ImageRgba8 image{2, 2, {10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255, 1, 2, 3, 4}};
+  std::ostringstream encoded;
+  pbr::writePng(encoded, image);
+  std::string png = encoded.str();
+  const size_t end = png.find("IEND") - 4;
+  const std::string bogus("\x72\x00\x00\xd3IDAT\0\0\0\0", 12);
+  png = png.substr(0, end) + bogus + png.substr(end);
+  const std::vector<unsigned char> bytes(png.begin(), png.end());
+  CHECK_THROWS_WITH(pbr::decodeImage(bytes.data(), bytes.size(), "long.png"),
+                    ("long.png: cannot decode image: PNG chunk at byte " + std::to_string(end) +
+                     " declares 1912602835 bytes, past the end of the data (" + std::to_string(bytes.size()) +
+                     " bytes)").c_str());
+}
