@@ -1,5 +1,6 @@
 #include "core/gltf_json_check.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <stdexcept>
@@ -183,6 +184,28 @@ class Checker {
     if (!ok) fail(join(owner, key), "must be an array of " + std::to_string(size) + " numbers (got " + quoteJson(*it) + ")");
   }
 
+  // Number `key` of an extension, or with `size` an array of that many. tinygltf keeps an extension's integer
+  // literal as an int, so one beyond 32 bits, which it would wrap, is refused rather than misread.
+  void extensionNumbers(const json& object, const char* key, const std::string& owner, std::size_t size = 0) const {
+    const auto it = object.find(key);
+    if (it == object.end()) return;
+    const std::string field = join(owner, key);
+    if (size > 0 && !(it->is_array() && it->size() == size)) {
+      fail(field, "must be an array of " + std::to_string(size) + " numbers (got " + quoteJson(*it) + ")");
+    }
+    for (std::size_t i = 0; i < std::max<std::size_t>(size, 1); ++i) {
+      const json& v = size > 0 ? (*it)[i] : *it;
+      const std::string at = size > 0 ? item(field, i) : field;
+      if (!v.is_number()) fail(at, "must be a number (got " + quoteJson(v) + ")");
+      if (v.is_number_float()) continue;
+      const bool fits = v.is_number_unsigned() ? v.get<uint64_t>() <= INT_MAX
+                                               : v.get<int64_t>() >= INT_MIN && v.get<int64_t>() <= INT_MAX;
+      if (!fits) {
+        fail(at, "an integer beyond 32 bits would be misread; write it with an exponent (got " + quoteJson(v) + ")");
+      }
+    }
+  }
+
   void checkBuffers() {
     const std::vector<const json*> buffers = objects(doc_, "buffers", "buffers");
     for (std::size_t i = 0; i < buffers.size(); ++i) {
@@ -338,6 +361,16 @@ class Checker {
     const json& info = member(object, key, owner);
     index(info, "index", field, "textures", true);
     integer(info, "texCoord", field, kMaxIndex);
+    if (!info.contains("extensions")) return;
+    const json& extensions = member(info, "extensions", field);
+    if (!extensions.contains("KHR_texture_transform")) return;
+    // tinygltf would drop a transform that is not an object without a word.
+    const json& transform = member(extensions, "KHR_texture_transform", field + ".extensions");
+    const std::string name = field + ".extensions.KHR_texture_transform";
+    extensionNumbers(transform, "offset", name, 2);
+    extensionNumbers(transform, "rotation", name);
+    extensionNumbers(transform, "scale", name, 2);
+    integer(transform, "texCoord", name, kMaxIndex);
   }
 
   void checkMaterials() const {

@@ -21,8 +21,8 @@ struct GltfJsonContext {
 // Checks a glTF document as written, before tinygltf reads it: tinygltf turns a fractional or string index into 0,
 // -1 or "absent" without a word, so each integer the specification constrains is checked here from the JSON: a
 // non-negative integer of the allowed values, an index in range of its array, accessor offsets aligned to their
-// component size and accessors and buffer views within their buffer views and buffers. Node transforms must be
-// arrays of numbers of the right length. Buffer and image URIs are resolved (resolveGltfUri) and buffer lengths
+// component size and accessors and buffer views within their buffer views and buffers. Node transforms and the
+// KHR_texture_transform of each textureInfo must be numbers, in arrays of the right length. Buffer and image URIs are resolved (resolveGltfUri) and buffer lengths
 // compared with the data. Throws SceneError("PATH: accessors[3].byteOffset: must be a non-negative integer (got
 // -4)").
 void checkGltfJson(const nlohmann::json& doc, const GltfJsonContext& context);

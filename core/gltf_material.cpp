@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -33,6 +34,40 @@ bool oneOf(int v, std::initializer_list<int> allowed) {
   return std::find(allowed.begin(), allowed.end(), v) != allowed.end();
 }
 
+// KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) (u, v, 1), R turning the UVs counter-clockwise as
+// seen with v down the image, as glTF issue #1563 corrects the specification's GLSL listing (and Blender exports).
+glm::mat3x2 uvTransformMatrix(glm::vec2 offset, float rotation, glm::vec2 scale) {
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  // Columns: the images of u, of v and of the origin.
+  return {glm::vec2(c, -s) * scale.x, glm::vec2(s, c) * scale.y, offset};
+}
+
+struct UvTransform {
+  glm::mat3x2 matrix{1.0f};
+  std::optional<int> texCoord;  // replaces the textureInfo's
+};
+
+// The KHR_texture_transform among a textureInfo's `extensions`, whose types and lengths checkGltfJson has checked.
+UvTransform textureTransform(const GltfFile& file, const tinygltf::ExtensionMap& extensions, const std::string& field) {
+  UvTransform t;
+  const auto it = extensions.find("KHR_texture_transform");
+  if (it == extensions.end()) return t;
+  const std::string name = field + ".extensions.KHR_texture_transform";
+  const tinygltf::Value& v = it->second;
+  const auto pair = [&](const char* key, glm::vec2 absent) {
+    if (!v.Has(key)) return absent;
+    const std::string where = name + "." + key;
+    const tinygltf::Value& xy = v.Get(key);
+    return glm::vec2(finite(file, xy.Get(0).GetNumberAsDouble(), where + "[0]"),
+                     finite(file, xy.Get(1).GetNumberAsDouble(), where + "[1]"));
+  };
+  const float rotation =
+      v.Has("rotation") ? finite(file, v.Get("rotation").GetNumberAsDouble(), name + ".rotation") : 0.0f;
+  t.matrix = uvTransformMatrix(pair("offset", glm::vec2(0.0f)), rotation, pair("scale", glm::vec2(1.0f)));
+  if (v.Has("texCoord")) t.texCoord = v.Get("texCoord").GetNumberAsInt();
+  return t;
+}
+
 }  // namespace
 
 const Material& GltfMaterials::get(int index, const std::string& field) {
@@ -60,16 +95,28 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   m.alpha = unitFactor(file_, pbr.baseColorFactor[3], name + ".pbrMetallicRoughness.baseColorFactor");
   m.metalness = unitFactor(file_, pbr.metallicFactor, name + ".pbrMetallicRoughness.metallicFactor");
   m.roughness = unitFactor(file_, pbr.roughnessFactor, name + ".pbrMetallicRoughness.roughnessFactor");
-  m.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true,
-                               name + ".pbrMetallicRoughness.baseColorTexture");
-  m.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, false,
-                                       name + ".pbrMetallicRoughness.metallicRoughnessTexture");
-  m.normalTexture = texture(g.normalTexture.index, g.normalTexture.texCoord, false, name + ".normalTexture");
+  // A textureInfo's texture, and its KHR_texture_transform into `uv`.
+  const auto map = [&](const auto& info, bool srgb, const std::string& where, glm::mat3x2& uv) {
+    if (info.index < 0) return -1;
+    const UvTransform t = textureTransform(file_, info.extensions, where);
+    const int texCoord = t.texCoord.value_or(info.texCoord);
+    if (texCoord != 0) {
+      file_.warn((t.texCoord ? where + ".extensions.KHR_texture_transform" : where) + ": texCoord " +
+                 std::to_string(texCoord) + " is not supported, TEXCOORD_0 is used");
+    }
+    uv = t.matrix;
+    return texture(info.index, srgb, where);
+  };
+  m.baseColorTexture = map(pbr.baseColorTexture, true, name + ".pbrMetallicRoughness.baseColorTexture",
+                           m.baseColorUvTransform);
+  m.metallicRoughnessTexture = map(pbr.metallicRoughnessTexture, false,
+                                   name + ".pbrMetallicRoughness.metallicRoughnessTexture",
+                                   m.metallicRoughnessUvTransform);
+  m.normalTexture = map(g.normalTexture, false, name + ".normalTexture", m.normalUvTransform);
   m.normalScale = finite(file_, g.normalTexture.scale, name + ".normalTexture.scale");
-  m.occlusionTexture =
-      texture(g.occlusionTexture.index, g.occlusionTexture.texCoord, false, name + ".occlusionTexture");
+  m.occlusionTexture = map(g.occlusionTexture, false, name + ".occlusionTexture", m.occlusionUvTransform);
   m.occlusionStrength = unitFactor(file_, g.occlusionTexture.strength, name + ".occlusionTexture.strength");
-  m.emissiveTexture = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, true, name + ".emissiveTexture");
+  m.emissiveTexture = map(g.emissiveTexture, true, name + ".emissiveTexture", m.emissiveUvTransform);
   m.emissive = colorFactor(file_, g.emissiveFactor, 3, name + ".emissiveFactor");
   const auto strength = g.extensions.find("KHR_materials_emissive_strength");
   if (strength != g.extensions.end() && strength->second.Has("emissiveStrength")) {
@@ -94,17 +141,13 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   return m;
 }
 
-int GltfMaterials::texture(int index, int texCoord, bool srgb, const std::string& field) {
-  if (index < 0) return -1;
+int GltfMaterials::texture(int index, bool srgb, const std::string& field) {
   const auto cached = loaded_.textures.find({index, srgb});
   if (cached != loaded_.textures.end()) return cached->second;
   const tinygltf::Model& model = file_.model;
   if (static_cast<size_t>(index) >= model.textures.size()) {
     file_.fail(field + ": no texture " + std::to_string(index) + " (the file has " +
                std::to_string(model.textures.size()) + ")");
-  }
-  if (texCoord != 0) {
-    file_.warn(field + ": texCoord " + std::to_string(texCoord) + " is not supported, TEXCOORD_0 is used");
   }
   const tinygltf::Texture& t = model.textures[static_cast<size_t>(index)];
   const std::string name = gltfElement("textures", index);

@@ -20,8 +20,8 @@ class GltfMaterials {
 
  private:
   Material convert(int index, const std::string& field);
-  // Index into Scene::textures of glTF texture `index` (-1 stays -1).
-  int texture(int index, int texCoord, bool srgb, const std::string& field);
+  // Index into Scene::textures of glTF texture `index`.
+  int texture(int index, bool srgb, const std::string& field);
   // Image `image` decoded; `field` names the texture that uses it.
   TextureData imageTexture(int image, const std::string& field) const;
 

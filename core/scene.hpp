@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/mat3x2.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -50,6 +51,12 @@ struct Material {
   int occlusionTexture = -1;  // R = ambient occlusion
   float occlusionStrength = 1.0f;
   int emissiveTexture = -1;
+  // Each map's KHR_texture_transform: its UVs become M (u, v, 1) before it is sampled; identity without one.
+  glm::mat3x2 baseColorUvTransform{1.0f};
+  glm::mat3x2 metallicRoughnessUvTransform{1.0f};
+  glm::mat3x2 normalUvTransform{1.0f};
+  glm::mat3x2 occlusionUvTransform{1.0f};
+  glm::mat3x2 emissiveUvTransform{1.0f};
   bool doubleSided = false;  // drawn without back-face culling, the normal flipped on back faces
 };
 

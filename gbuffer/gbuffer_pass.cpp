@@ -4,7 +4,9 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <type_traits>
 
+#include <glm/mat2x3.hpp>
 #include <glm/matrix.hpp>
 
 #include "gbuffer/gbuffer_bindings.hpp"
@@ -23,6 +25,12 @@ GLsizeiptr alignedStride() {
 
 bool mirrors(const glm::mat4& transform) { return glm::determinant(glm::mat3(transform)) < 0.0f; }
 
+// An affine UV map as the shader's std140 mat2x3: its two rows, each padded to a vec4.
+glm::mat2x4 std140Rows(const glm::mat3x2& uvTransform) {
+  const glm::mat2x3 rows = glm::transpose(uvTransform);
+  return {glm::vec4(rows[0], 0.0f), glm::vec4(rows[1], 0.0f)};
+}
+
 std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr stride) {
   std::vector<unsigned char> bytes(static_cast<size_t>(stride) * scene.objects.size());
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -35,6 +43,12 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     b.material = glm::vec4(m.roughness, m.metalness, m.normalScale, m.occlusionStrength);
     b.emissive = glm::vec4(m.emissive, m.alphaCutoff);
     b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, 0.0f, 0.0f, 0.0f);
+    using namespace gbuffer_binding;
+    b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
+    b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
+    b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
+    b.uvTransform[kOcclusionMapUnit.index] = std140Rows(m.occlusionUvTransform);
+    b.uvTransform[kEmissiveMapUnit.index] = std140Rows(m.emissiveUvTransform);
     std::memcpy(&bytes[i * static_cast<size_t>(stride)], &b, sizeof b);
   }
   return bytes;
@@ -48,6 +62,7 @@ std::array<int, GBufferPass::kMapCount> GBufferPass::materialMaps(const Material
                     kNormalMapUnit.index < kMapCount && kOcclusionMapUnit.index < kMapCount &&
                     kEmissiveMapUnit.index < kMapCount,
                 "material maps are bound to units 0 .. kMapCount - 1");
+  static_assert(std::extent_v<decltype(ObjectBlock::uvTransform)> == kMapCount, "one UV transform per map unit");
   std::array<int, kMapCount> maps{};
   maps[kBaseColorMapUnit.index] = m.baseColorTexture;
   maps[kMetallicRoughnessMapUnit.index] = m.metallicRoughnessTexture;

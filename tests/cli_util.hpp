@@ -1,5 +1,7 @@
 #pragma once
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,20 @@ class TempDir {
 };
 
 std::string readFile(const std::filesystem::path& path);
+
+// Holds what std::cerr, where the loaders' warnings go, receives while it lives.
+class CapturedStderr {
+ public:
+  CapturedStderr() : saved_(std::cerr.rdbuf(text_.rdbuf())) {}
+  ~CapturedStderr() { std::cerr.rdbuf(saved_); }
+  CapturedStderr(const CapturedStderr&) = delete;
+  CapturedStderr& operator=(const CapturedStderr&) = delete;
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+  std::streambuf* saved_;
+};
 
 struct PbrRun {
   int exitCode = -1;

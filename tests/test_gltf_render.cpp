@@ -1,6 +1,6 @@
 // glTF models through the whole renderer: the sample assets render lit and textured, and small files written here
-// check each material input (alpha mask, normal map, emission, occlusion, double-sided) against what the test
-// knows it wrote.
+// check each material input (alpha mask, normal map, emission, occlusion, double-sided, texture transform) against
+// what the test knows it wrote.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -12,7 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/assets.hpp"
@@ -362,4 +364,82 @@ TEST_CASE("gltf render: double-sided quads show their back lit from behind, mirr
   const float b = rgb(pbr::test::renderScene(mirrored, kSize, options(), 1).hdr, kCentre).x;
   CHECK(a > 0.05f);
   CHECK(b == doctest::Approx(a).epsilon(1e-3));
+}
+
+TEST_CASE("gltf render: KHR_texture_transform moves, turns and scales the base colour and emissive maps") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  // 4 x 4 texels of distinct colours, sampled without filtering and repeated.
+  const auto texel = [](glm::ivec2 t) { return glm::u8vec4(85 * t.x, 85 * t.y, 255 * ((t.x + t.y) % 2), 255); };
+  pbr::ImageRgba8 image{4, 4, {}};
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const glm::u8vec4 c = texel({x, y});
+      image.pixels.insert(image.pixels.end(), {c.x, c.y, c.z, c.w});
+    }
+  }
+  struct Transform {
+    glm::vec2 offset;
+    float rotation;
+    glm::vec2 scale;
+    json asJson() const {
+      return {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}};
+    }
+    // The specification's T R S (u, v, 1), R turning +u towards -v (glTF issue #1563).
+    glm::vec2 operator()(glm::vec2 uv) const {
+      const float c = std::cos(rotation), s = std::sin(rotation);
+      const glm::vec2 scaled = uv * scale;
+      return offset + glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y);
+    }
+  };
+  const Transform baseColor{{0.0f, 0.5f}, glm::half_pi<float>(), {0.5f, 1.5f}};
+  const Transform emissive{{0.25f, 0.5f}, 0.0f, {1.0f, 1.0f}};  // samples one texel right, two down
+  const Transform none{{0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}};
+  const Transform otherWay{baseColor.offset, -baseColor.rotation, baseColor.scale};
+  const auto texelAt = [](glm::vec2 uv) { return glm::ivec2(glm::floor(glm::fract(uv) * 4.0f)); };
+
+  const auto textureInfo = [](const Transform& t) {
+    return json{{"index", 0}, {"extensions", {{"KHR_texture_transform", t.asJson()}}}};
+  };
+  const json material = {{"pbrMetallicRoughness", {{"baseColorTexture", textureInfo(baseColor)}}},
+                         {"emissiveFactor", {1.0, 1.0, 1.0}},
+                         {"emissiveTexture", textureInfo(emissive)}};
+  const std::string path = materialQuad(dir, "transformed", material, {}, {{"texels.png", image}});
+  json doc = json::parse(pbr::test::readFile(path));
+  doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 10497}, {"wrapT", 10497}}};
+  doc["textures"][0]["sampler"] = 0;
+  doc["extensionsUsed"] = doc["extensionsRequired"] = {"KHR_texture_transform"};
+  std::ofstream(path) << doc.dump();
+  const pbr::Scene scene = quadScene(path);
+  REQUIRE(scene.lights.empty());  // the HDR frame is the emission alone
+  pbr::FrameOptions baseColorView = options();
+  baseColorView.gbufferView = pbr::GBufferChannel::BaseColor;
+  const pbr::test::RenderedFrame f = pbr::test::renderScene(scene, kSize, baseColorView, 1);
+  const auto decode = [](uint8_t code) {
+    const double c = code / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+
+  // Pixels 9.5 pixels either side of the frame's centre, where the quad's uv is 0.375 or 0.625 give or take 0.002:
+  // the centres of texels 1 and 2. Both transforms take these points a quarter of a texel or more from any texel's
+  // edge, so that no rounding of the frame can change the texel.
+  bool notIdentity = false, notOtherWay = false;
+  for (const glm::vec2 uv : {glm::vec2(0.375f, 0.375f), glm::vec2(0.625f, 0.375f), glm::vec2(0.375f, 0.625f),
+                             glm::vec2(0.625f, 0.625f)}) {
+    const glm::ivec2 p = kCentre + glm::ivec2(uv.x < 0.5f ? -10 : 9, uv.y < 0.5f ? -10 : 9);  // v down the frame
+    CAPTURE(uv.x);
+    CAPTURE(uv.y);
+    const glm::ivec2 base = texelAt(baseColor(uv));
+    notIdentity |= base != texelAt(none(uv));
+    notOtherWay |= base != texelAt(otherWay(uv));
+    const uint8_t* shown = &f.ldr.pixels[(static_cast<size_t>(p.y) * f.ldr.width + p.x) * 4];
+    const glm::u8vec4 want = texel(base);
+    for (int ch = 0; ch < 3; ++ch) CHECK(std::abs(int(shown[ch]) - int(want[ch])) <= 2);
+    const glm::u8vec4 glow = texel(texelAt(emissive(uv)));
+    const glm::vec3 got = rgb(f.hdr, p);
+    for (int ch = 0; ch < 3; ++ch) CHECK(got[ch] == doctest::Approx(decode(glow[ch])).epsilon(0.01));
+  }
+  // The points would catch the transform left out or the rotation turned the other way.
+  CHECK(notIdentity);
+  CHECK(notOtherWay);
 }
