@@ -34,7 +34,8 @@ SceneParams sceneFileParams(const Args& args) {
 OptionSpec ev100Option() {
   return {"--ev100", "EV",
           "physical exposure: the camera's exposure value at ISO 100 (sunny day about 15, indoors 6-8), scaling "
-          "radiance by 1 / (1.2 2^EV) before --exposure (default: the scene camera's, or none)"};
+          "radiance by 1 / (1.2 2^EV) before --exposure (default: the scene camera's; for a glTF model given alone with "
+          "lights, what an incident-light meter reads at the model; else none)"};
 }
 
 OptionSpec cameraOption() {

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
+
+#include "core/exposure.hpp"
+#include "core/light_meter.hpp"
 
 namespace pbr {
 
@@ -16,6 +20,31 @@ glm::vec3 centreOf(const Bounds& b) { return 0.5f * (b.min + b.max); }
 
 // The bounding sphere of the box; the floor keeps a flat or point-sized model from collapsing the view.
 float radiusOf(const Bounds& b) { return std::max(0.5f * glm::length(b.max - b.min), 1e-3f); }
+
+std::string fixed(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+// glTF gives lights in physical units and carries no exposure: the camera is set as an incident-light meter held at
+// the model reads. What the loader invented is brought to that level: the ambient light to look as it does at
+// exposure 1, the sky two stops below that, a fill that leaves the file's own lights the key. Black lights leave
+// nothing to meter.
+void meterExposure(Scene& scene, const Bounds& bounds) {
+  const double lux = incidentIlluminance(scene, centreOf(bounds), radiusOf(bounds));
+  if (!(lux > 0.0)) return;
+  const double ev = std::clamp(ev100FromIlluminance(lux), double(-kMaxEv100), double(kMaxEv100));
+  scene.ev100 = static_cast<float>(ev);
+  const float level = static_cast<float>(1.0 / exposureFromEv100(ev));
+  scene.ambient *= level;
+  if (scene.environment) scene.environment->intensity *= 0.25f * level;
+  scene.notes.push_back("the file's lights give " + fixed(lux, lux < 10.0 ? 3 : 0) +
+                        " lux at the model and glTF carries no exposure: EV100 " + fixed(ev, 2) +
+                        " as an incident-light meter reads it, the default " +
+                        (scene.environment ? "sky and ambient light" : "ambient light") +
+                        " scaled to match (--ev100 sets another, --exposure multiplies)");
+}
 
 }  // namespace
 
@@ -59,6 +88,7 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEn
   // The file's own first camera, as its author placed it; auto-framing where it has none.
   scene.camera = scene.cameras.empty() ? *scene.framedCamera : scene.cameras.front();
   scene.ambient = glm::vec3(0.03f);
+  const bool fileLights = !scene.lights.empty() || !scene.directionalLights.empty();
   // Only a file silent about lights gets the rig: one that declares lights it has none of (or none this renderer
   // shades) is rendered as it says, by its ambient light alone.
   if (scene.lights.empty() && scene.directionalLights.empty() && !scene.lightsDeclared) {
@@ -70,6 +100,7 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEn
     scene.environment = EnvironmentDesc{};
     scene.notes.push_back("no environment in the file: lit by the procedural sky (--environment none turns it off)");
   }
+  if (fileLights) meterExposure(scene, bounds);
   return scene;
 }
 
