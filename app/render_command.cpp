@@ -37,6 +37,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
       {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
       {"--slices", "S", "cluster depth slices, exponential between near and far (default 192)"},
+      {"--aa", "none|fxaa",
+       "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
+       "never filtered (default fxaa)"},
       {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels (default 1280x720)"},
@@ -151,6 +154,7 @@ int runRender(const std::vector<std::string>& argv) {
   clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
   clusterConfig.slices = args.getInt("--slices", clusterConfig.slices, 1, 256);
   const bool stats = args.has("--stats");
+  const AntiAliasing aa = parseAntiAliasing(args.get("--aa", "fxaa"));
   const ClusterDebugView debugView = parseClusterDebugView(args.get("--debug", "none"));
   if (debugView != ClusterDebugView::None && culling != Culling::Clustered) {
     throw UsageError("--debug needs --culling clustered");
@@ -184,10 +188,10 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string directional =
       scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
-  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s\n", scene.name.c_str(), size.x, size.y,
+  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), directional.c_str(), toString(model),
               (" (" + describeTerms(model, variant) + ")").c_str(),
-              toString(culling));
+              toString(culling), toString(aa));
 
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(timing, info.renderer));
@@ -200,7 +204,7 @@ int runRender(const std::vector<std::string>& argv) {
                 describe(precomputeProfiler.mode()));
     printPrecomputeTimings(precomputeProfiler.takeResults(true));
   }
-  FrameOptions options{model, variant, culling, exposure, false, debugView, {}};
+  FrameOptions options{model, variant, culling, exposure, false, debugView, {}, aa};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

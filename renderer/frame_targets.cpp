@@ -28,4 +28,9 @@ const Texture& FrameTargets::partialRadiance() {
   return *partialRadiance_;
 }
 
+const Texture& FrameTargets::beforeAntiAliasing() {
+  if (!beforeAntiAliasing_) beforeAntiAliasing_ = std::make_unique<Texture>(GL_RGBA8, width, height);
+  return *beforeAntiAliasing_;
+}
+
 }  // namespace pbr

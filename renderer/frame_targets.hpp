@@ -26,9 +26,11 @@ struct FrameTargets {
   // RGBA32F running sums of the lighting pass when it needs several dispatches (over kLightsPerDispatch lights):
   // made on first use, as only such frames need its 16 bytes per pixel.
   const Texture& partialRadiance();
+  // The tone-mapped RGBA8 frame before anti-aliasing, which writes `ldr`: made on first use.
+  const Texture& beforeAntiAliasing();
 
  private:
-  std::unique_ptr<Texture> partialRadiance_;
+  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_;
 };
 
 }  // namespace pbr

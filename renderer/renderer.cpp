@@ -56,9 +56,15 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                       scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
                                              clustered ? &t.clusters : nullptr, partial);
                     }});
-  passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options] {
-                      scene_.post.render(t.hdr, t.ldr, {options.exposure, options.model == ShadingModel::Pbr});
+  // A G-buffer view replaces the display image: nothing to anti-alias.
+  const bool antiAliased = options.aa == AntiAliasing::Fxaa && !options.gbufferView;
+  passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
+                      const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
+                      scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr});
                     }});
+  if (antiAliased) {
+    passes.push_back({"aa", {R::Display}, {R::Display}, [this, &t] { scene_.fxaa.render(t.beforeAntiAliasing(), t.ldr); }});
+  }
   if (clustered && options.debugView != ClusterDebugView::None) {
     passes.push_back({"debug", {R::ClusterLists, R::GBuffer, R::Camera, R::Display}, {R::Display},
                       [this, &t, view = options.debugView] {

@@ -24,6 +24,7 @@ struct FrameOptions {
   bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
   ClusterDebugView debugView = ClusterDebugView::None;  // painted over the final frame (clustered only)
   std::optional<GBufferChannel> gbufferView;            // replaces the final frame with one G-buffer channel
+  AntiAliasing aa = AntiAliasing::None;                  // of the display image, before any debug view
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair

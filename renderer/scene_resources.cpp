@@ -20,6 +20,7 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       ibl(makeIbl(shaders, scene, precomputeProfiler)),
       lighting(programs),
       post(programs),
+      fxaa(programs),
       clusterDebug(programs),
       gbufferDebug(programs) {
   lights.upload(scene.lights, scene.directionalLights);

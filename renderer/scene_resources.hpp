@@ -10,6 +10,7 @@
 #include "lighting/gbuffer_debug_pass.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/lighting_pass.hpp"
+#include "post/fxaa_pass.hpp"
 #include "post/post_pass.hpp"
 
 namespace pbr {
@@ -29,6 +30,7 @@ struct SceneResources {
   std::unique_ptr<IblMaps> ibl;  // null without an environment
   LightingPass lighting;
   PostPass post;
+  FxaaPass fxaa;
   ClusterDebugPass clusterDebug;
   GBufferDebugPass gbufferDebug;
 };
