@@ -8,7 +8,7 @@
 
 namespace pbr {
 
-Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv) {
+Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv, bool takesOperands) {
   for (size_t i = 0; i < argv.size(); ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -24,6 +24,10 @@ Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>&
     }
     auto spec = std::find_if(specs.begin(), specs.end(), [&](const OptionSpec& s) { return s.name == arg; });
     if (spec == specs.end()) {
+      if (takesOperands && !arg.empty() && arg[0] != '-') {
+        operands_.push_back(arg);
+        continue;
+      }
       throw UsageError(arg.rfind("-", 0) == 0 ? "unknown option '" + arg + "'" : "unexpected argument '" + arg + "'");
     }
     // A second occurrence would silently override the first: which one the user meant is not ours to guess.

@@ -20,10 +20,11 @@ struct OptionSpec {
   std::string help;
 };
 
-// Parses "--name value", "--name=value" and flags against a fixed list of options.
+// Parses "--name value", "--name=value" and flags against a fixed list of options. With `takesOperands`, the other
+// arguments not starting with '-' (input files) are kept in order as operands; otherwise they are refused.
 class Args {
  public:
-  Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv);
+  Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv, bool takesOperands = false);
 
   bool helpRequested() const { return help_; }
   bool has(const std::string& name) const { return values_.count(name) != 0; }
@@ -31,12 +32,14 @@ class Args {
   int getInt(const std::string& name, int fallback, int lo, int hi) const;
   float getFloat(const std::string& name, float fallback, float lo, float hi) const;
   glm::ivec2 getSize(const std::string& name, glm::ivec2 fallback) const;  // "WxH"
+  const std::vector<std::string>& operands() const { return operands_; }
 
   static std::string helpText(const std::string& usage, const std::string& summary,
                               const std::vector<OptionSpec>& specs);
 
  private:
   std::map<std::string, std::string> values_;
+  std::vector<std::string> operands_;
   bool help_ = false;
 };
 

@@ -1,17 +1,21 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <optional>
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/args.hpp"
 #include "app/bench/bench_progress.hpp"
 #include "app/bench/bench_report.hpp"
 #include "app/bench/bench_run.hpp"
+#include "app/bench/bench_shard.hpp"
 #include "app/accuracy/pair_cost_report.hpp"
 #include "app/commands.hpp"
 #include "app/scene_source.hpp"
@@ -47,6 +51,9 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--csv", "F", "write the results as CSV (provenance in leading # lines)"},
       {"--json", "F", "write the results, every timed frame included, as JSON"},
       {"--trace", "F", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
+      {"--shard", "K/N",
+       "measure only the K-th of N disjoint parts of the sweep (1 <= K <= N), for N processes or machines; "
+       "pbr bench-merge joins their --json reports (default: the whole sweep)"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
       allowOutsideUrisOption(),
@@ -174,7 +181,7 @@ int runBench(const std::vector<std::string>& argv) {
   }
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
   if (args.has("--pair-cost")) {
-    for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density"}) {
+    for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density", "--shard"}) {
       if (args.has(sweepOnly)) throw UsageError(std::string(sweepOnly) + " belongs to the sweep, not --pair-cost");
     }
     chooseTimingMode(args.get("--timing", "auto"), "");
@@ -184,6 +191,20 @@ int runBench(const std::vector<std::string>& argv) {
     if (args.has(pairOnly)) throw UsageError(std::string(pairOnly) + " belongs to --pair-cost");
   }
   const BenchSettings settings = parseSettings(args);
+  const std::vector<BenchConfig> sweep = sweepConfigs(settings);
+  std::optional<BenchShard> shard;
+  if (args.has("--shard")) {
+    shard = parseShard(args.get("--shard", ""));
+    if (static_cast<size_t>(shard->count) > sweep.size()) {
+      throw UsageError("--shard " + shard->text() + ": the sweep has " + std::to_string(sweep.size()) +
+                       " configurations, too few for " + std::to_string(shard->count) + " shards");
+    }
+  }
+  std::vector<size_t> positions(sweep.size());
+  std::iota(positions.begin(), positions.end(), size_t{0});
+  if (shard) positions = shardPositions(sweep, *shard);
+  std::vector<BenchConfig> configs;
+  for (size_t p : positions) configs.push_back(sweep[p]);
 
   // Every scene before any rendering, so that a bad scene or light count fails at once.
   std::vector<Scene> scenes;
@@ -204,27 +225,25 @@ int runBench(const std::vector<std::string>& argv) {
   const TimingMode timing = chooseTimingMode(settings.timing, context->info().renderer);
   BenchReport report;
   report.settings = settings;
+  report.shard = shard;
   report.provenance = collectProvenance(context->info(), timing);
-  const size_t total = settings.lights.size() * settings.culling.size() * settings.models.size();
-  std::fprintf(stderr, "bench: %zu configurations on %s, %s\n", total, context->info().renderer.c_str(),
-               describe(timing));
+  const std::string part =
+      shard ? " (shard " + shard->text() + " of " + std::to_string(sweep.size()) + ")" : std::string();
+  std::fprintf(stderr, "bench: %zu configurations%s on %s, %s\n", configs.size(), part.c_str(),
+               context->info().renderer.c_str(), describe(timing));
 
   const ShaderLibrary shaders;
-  const BenchProgress progress(total, ::isatty(STDERR_FILENO) == 1);
+  BenchProgress progress(configs, settings, ::isatty(STDERR_FILENO) == 1);
   const BenchClock::time_point sweepStart = BenchClock::now();
-  for (size_t li = 0; li < settings.lights.size(); ++li) {
-    for (Culling culling : settings.culling) {
-      for (ShadingModel model : settings.models) {
-        const size_t index = report.results.size();
-        const int lights = settings.lights[li];
-        const BenchConfig config{settings.scene, settings.size, lights, culling, model,
-                                 settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f};
-        BenchResult result = runBenchConfig(shaders, scenes[li], config, settings, timing, sweepStart,
-                                            [&](int done, int frames) { progress.frame(index, config, done, frames); });
-        progress.finished(index, result);
-        report.results.push_back(std::move(result));
-      }
-    }
+  for (size_t index = 0; index < configs.size(); ++index) {
+    const BenchConfig& config = configs[index];
+    const size_t li = static_cast<size_t>(
+        std::find(settings.lights.begin(), settings.lights.end(), config.lights) - settings.lights.begin());
+    progress.started();
+    BenchResult result = runBenchConfig(shaders, scenes[li], config, settings, timing, sweepStart,
+                                        [&](int done, int frames) { progress.frame(index, done, frames); });
+    progress.finished(index, result);
+    report.results.push_back(std::move(result));
   }
   report.provenance.set("load_average_end", loadAverage());
 

@@ -8,6 +8,7 @@ namespace pbr {
 // 0 success, 1 failure (bad input file, I/O), 2 usage error, 3 no OpenGL context.
 int runRender(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
+int runBenchMerge(const std::vector<std::string>& args);
 int runExperiment(const std::vector<std::string>& args);
 int runReference(const std::vector<std::string>& args);
 int runAccuracy(const std::vector<std::string>& args);

@@ -20,6 +20,7 @@ struct Command {
 const Command kCommands[] = {
     {"render", pbr::runRender, "render a scene headlessly, print per-pass timings, write PNG/EXR/PFM captures"},
     {"bench", pbr::runBench, "sweep light counts, culling and shading models; per-pass times as table, CSV, JSON, trace"},
+    {"bench-merge", pbr::runBenchMerge, "join the JSON reports of a sweep's shards (bench --shard K/N) into one report"},
     {"experiment", pbr::runExperiment, "reproduce a Blinn-Phong vs PBR experiment: images, CSV and chart"},
     {"view", pbr::runView, "an interactive window: orbit camera, runtime model/culling/debug-view switches, live timings"},
     {"reference", pbr::runReference, "CPU ray-cast reference frame in double precision (meshes or exact shapes), EXR/PFM"},
@@ -28,7 +29,7 @@ const Command kCommands[] = {
 
 void printUsage(FILE* out) {
   std::fprintf(out, "usage: pbr <command> [options]\n\nA clustered deferred renderer (OpenGL 4.5, headless EGL).\n\ncommands:\n");
-  for (const Command& c : kCommands) std::fprintf(out, "  %-10s %s\n", c.name, c.summary);
+  for (const Command& c : kCommands) std::fprintf(out, "  %-11s %s\n", c.name, c.summary);
   std::fprintf(out, "\n'pbr <command> --help' describes a command's options; 'pbr --version' the build.\n");
 }
 

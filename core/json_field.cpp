@@ -59,6 +59,18 @@ std::vector<JsonField> JsonField::items() const {
   return out;
 }
 
+std::vector<std::pair<std::string, JsonField>> JsonField::members() const {
+  std::vector<std::pair<std::string, JsonField>> out;
+  if (!value_) return out;
+  if (!value_->is_object()) expected("an object");
+  reads_->opened.insert(value_);
+  for (const auto& [key, member] : value_->items()) {
+    reads_->lookedUp.insert(&member);
+    out.push_back({key, JsonField(&member, file_, memberPath(path_, key), reads_)});
+  }
+  return out;
+}
+
 bool JsonField::required(bool hasFallback, const std::string& what) const {
   if (value_) return true;
   if (!hasFallback) expected(what);
@@ -69,6 +81,12 @@ float JsonField::number(const NumberRule& rule, std::optional<float> fallback) c
   if (!required(fallback.has_value(), rule.describe())) return *fallback;
   if (!value_->is_number() || !rule.accepts(value_->get<double>())) expected(rule.describe());
   return static_cast<float>(value_->get<double>());
+}
+
+double JsonField::real(const NumberRule& rule, std::optional<double> fallback) const {
+  if (!required(fallback.has_value(), rule.describe())) return *fallback;
+  if (!value_->is_number() || !rule.accepts(value_->get<double>())) expected(rule.describe());
+  return value_->get<double>();
 }
 
 glm::vec3 JsonField::vec3(const NumberRule& rule, std::optional<glm::vec3> fallback) const {

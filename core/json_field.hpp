@@ -40,13 +40,19 @@ class JsonField {
   bool present() const { return value_ != nullptr; }
   // For a field that takes a keyword or an object.
   bool isString() const { return value_ && value_->is_string(); }
+  // For a field that may be null (a report's "not applicable").
+  bool isNull() const { return value_ && value_->is_null(); }
 
   // A member: absent when missing. Fails when this field is present but not an object.
   JsonField operator[](const std::string& key) const;
   // The elements of an array; none when absent. Fails when this field is present but not an array.
   std::vector<JsonField> items() const;
+  // The members of an object, in nlohmann's key order; none when absent. Fails when present but not an object.
+  std::vector<std::pair<std::string, JsonField>> members() const;
 
   float number(const NumberRule& rule, std::optional<float> fallback = std::nullopt) const;
+  // As number, without rounding to float: for measurements read back at the precision they were written with.
+  double real(const NumberRule& rule, std::optional<double> fallback = std::nullopt) const;
   glm::vec3 vec3(const NumberRule& rule, std::optional<glm::vec3> fallback = std::nullopt) const;
   // A number n stands for (n, n, n): a grey colour, a uniform scale.
   glm::vec3 vec3OrNumber(const NumberRule& rule, std::optional<glm::vec3> fallback = std::nullopt) const;

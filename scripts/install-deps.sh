@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libglm-dev python3-glad libstb-dev libtinygltf-dev nlohmann-json3-dev
   doctest-dev libtinyexr-dev python3-matplotlib
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  xvfb xauth
+  xvfb xauth parallel
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang-14 libfuzzer-14-dev)

@@ -33,3 +33,13 @@ TEST_CASE("args: malformed input is a usage error") {
   CHECK_THROWS_AS(Args(kSpecs, {"--size", "10x10x"}).getSize("--size", {1, 1}), UsageError);
   CHECK_THROWS_AS(Args(kSpecs, {"--exposure", "nan"}).getFloat("--exposure", 1, 0, 10), UsageError);
 }
+
+TEST_CASE("args: a command that takes operands keeps them in order, options around them parsed as usual") {
+  const Args a(kSpecs, {"a.json", "--lights", "8", "b.json", "--flag"}, true);
+  CHECK(a.operands() == std::vector<std::string>{"a.json", "b.json"});
+  CHECK(a.getInt("--lights", 0, 0, 100) == 8);
+  CHECK(a.has("--flag"));
+  CHECK(Args(kSpecs, {"--lights", "8"}, true).operands().empty());
+  CHECK_THROWS_WITH_AS(Args(kSpecs, {"a.json", "--nope"}, true), "unknown option '--nope'", UsageError);
+  CHECK_THROWS_WITH_AS(Args(kSpecs, {"-x"}, true), "unknown option '-x'", UsageError);
+}

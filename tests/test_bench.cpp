@@ -1,5 +1,5 @@
-// `pbr bench` through the real binary: its CSV, JSON and trace files, skipping by estimate, and the charts
-// scripts/plot_bench.py draws from the CSV.
+// `pbr bench` through the real binary: its CSV, JSON and trace files, skipping by estimate, the charts
+// scripts/plot_bench.py draws from the CSV, and a sweep run as shards under GNU parallel then merged.
 #include <doctest/doctest.h>
 #include <sys/wait.h>
 
@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -300,4 +302,82 @@ TEST_CASE("bench: --pair-cost measures finite, positive ns per light-pixel pair 
   CHECK(csv.find("variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,"
                  "ns_per_pair_p10,ns_per_pair_p90") != std::string::npos);
   CHECK(csv.find("\nblinn-phong,blinn-phong,") != std::string::npos);
+}
+
+TEST_CASE("bench: a sweep run as 2 shards under GNU parallel merges into the rows and keys of the unsharded run") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  if (runShell(dir, "command -v parallel").exitCode != 0) {
+    MESSAGE("GNU parallel is not installed (Debian package parallel, which scripts/install-deps.sh installs): "
+            "skipping the sharded sweep");
+    return;
+  }
+  const std::vector<std::string> sweep = {"bench",  "--scene", "default", "--lights", "4,8",    "--culling",
+                                          "none,clustered", "--model", "pbr", "--size", "32x32", "--warmup",
+                                          "1",      "--frames", "1"};
+  std::vector<std::string> whole = sweep;
+  whole.insert(whole.end(), {"--csv", dir.file("whole.csv"), "--json", dir.file("whole.json")});
+  const PbrRun unsharded = pbr::test::runPbr(dir, whole);
+  CAPTURE(unsharded.err);
+  REQUIRE(unsharded.exitCode == 0);
+  // Not a terminal: each configuration's line says the time left, but the last one's.
+  CHECK(std::regex_search(unsharded.err, std::regex("bench 1/4 4 lights, none, pbr: .*, about [0-9]+ s left\n")));
+  CHECK(std::regex_search(unsharded.err, std::regex("bench 4/4 8 lights, clustered, pbr: [^\n]* s\n")));
+
+  std::string command = "parallel --will-cite --halt now,fail=1 " + std::string(PBR_BINARY);
+  for (const std::string& arg : sweep) command += " " + arg;
+  command += " --shard {}/2 --json " + dir.file("shard-{}.json") + " ::: 1 2";
+  const PbrRun shards = runShell(dir, command);
+  CAPTURE(shards.out);
+  REQUIRE(shards.exitCode == 0);
+  const PbrRun merge = pbr::test::runPbr(dir, {"bench-merge", dir.file("shard-1.json"), dir.file("shard-2.json"),
+                                                "--csv", dir.file("merged.csv"), "--json", dir.file("merged.json")});
+  CAPTURE(merge.err);
+  REQUIRE(merge.exitCode == 0);
+
+  const char* const configColumns[] = {"scene", "width", "height", "lights", "culling", "model",
+                                       "light_radius_scale", "status", "timed_frames"};
+  const Csv expected = parseCsv(pbr::test::readFile(dir.file("whole.csv")));
+  const Csv merged = parseCsv(pbr::test::readFile(dir.file("merged.csv")));
+  CHECK(merged.header == expected.header);
+  REQUIRE(merged.rows.size() == 4);
+  REQUIRE(merged.rows.size() == expected.rows.size());
+  for (size_t i = 0; i < merged.rows.size(); ++i) {
+    CAPTURE(i);
+    for (const char* column : configColumns) CHECK(merged.rows[i].at(column) == expected.rows[i].at(column));
+  }
+  for (const char* setting : {"scene", "size", "lights", "culling", "models", "warmup_frames", "timed_frames",
+                              "sweep_configurations", "sweep_fingerprint", "gl_renderer", "git_commit"}) {
+    CAPTURE(setting);
+    CHECK(merged.provenance.at(setting) == expected.provenance.at(setting));
+  }
+
+  const Json wholeJson = Json::parse(pbr::test::readFile(dir.file("whole.json")));
+  const Json mergedJson = Json::parse(pbr::test::readFile(dir.file("merged.json")));
+  for (const char* key : {"schema", "settings", "sweep"}) CHECK(mergedJson.at(key) == wholeJson.at(key));
+  CHECK_FALSE(mergedJson.contains("shard"));
+  const Json& configs = mergedJson.at("configurations");
+  REQUIRE(configs.size() == wholeJson.at("configurations").size());
+  for (size_t i = 0; i < configs.size(); ++i) {
+    const Json& want = wholeJson.at("configurations")[i];
+    CAPTURE(want.at("label").get<std::string>());
+    std::vector<std::string> keys, wantKeys;
+    for (const auto& [key, value] : configs[i].items()) keys.push_back(key);
+    for (const auto& [key, value] : want.items()) wantKeys.push_back(key);
+    CHECK(keys == wantKeys);
+    for (const char* key : {"label", "scene", "width", "height", "lights", "culling", "model", "light_radius_scale",
+                            "status"}) {
+      CHECK(configs[i].at(key) == want.at(key));
+    }
+  }
+
+  // The shards measured disjoint halves of the sweep, each saying which half.
+  std::set<std::string> labels;
+  for (int k = 1; k <= 2; ++k) {
+    const Json shard = Json::parse(pbr::test::readFile(dir.file("shard-" + std::to_string(k) + ".json")));
+    CHECK(shard.at("shard") == Json{{"index", k}, {"count", 2}});
+    CHECK(shard.at("configurations").size() == 2);
+    for (const Json& c : shard.at("configurations")) labels.insert(c.at("label").get<std::string>());
+  }
+  CHECK(labels.size() == 4);
 }

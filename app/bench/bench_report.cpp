@@ -1,6 +1,7 @@
 #include "app/bench/bench_report.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -59,20 +60,44 @@ std::string joinedInts(const std::vector<int>& values) {
   return out;
 }
 
-Record settingsRecord(const BenchSettings& s) {
+Record settingsRecord(const BenchReport& report) {
+  const BenchSettings& s = report.settings;
   const std::string density =
       "yes (light radii x sqrt(" + std::to_string(densityReferenceLights(s)) + "/lights))";
-  return {{"scene", s.scene},
-          {"size", std::to_string(s.size.x) + "x" + std::to_string(s.size.y)},
-          {"lights", joinedInts(s.lights)},
-          {"culling", joined(s.culling)},
-          {"models", joined(s.models)},
-          {"warmup_frames", std::to_string(s.warmup)},
-          {"timed_frames", std::to_string(s.frames)},
-          {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
-          {"constant_density", s.constantDensity ? density : "no"},
-          {"spot_share", s.spotShare ? fixedDecimals(*s.spotShare, 3) : "the scene's"},
-          {"timing_requested", s.timing}};
+  Record record = {{"scene", s.scene},
+                   {"size", std::to_string(s.size.x) + "x" + std::to_string(s.size.y)},
+                   {"lights", joinedInts(s.lights)},
+                   {"culling", joined(s.culling)},
+                   {"models", joined(s.models)},
+                   {"warmup_frames", std::to_string(s.warmup)},
+                   {"timed_frames", std::to_string(s.frames)},
+                   {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
+                   {"constant_density", s.constantDensity ? density : "no"},
+                   {"spot_share", s.spotShare ? fixedDecimals(*s.spotShare, 3) : "the scene's"},
+                   {"timing_requested", s.timing},
+                   {"sweep_configurations", std::to_string(sweepConfigs(s).size())},
+                   {"sweep_fingerprint", sweepFingerprint(s)}};
+  if (report.shard) record.emplace_back("shard", report.shard->text());
+  return record;
+}
+
+Json settingsJson(const BenchSettings& s) {
+  Json settings = {{"scene", s.scene},
+                   {"width", s.size.x},
+                   {"height", s.size.y},
+                   {"lights", s.lights},
+                   {"culling", Json::array()},
+                   {"models", Json::array()},
+                   {"warmup_frames", s.warmup},
+                   {"timed_frames", s.frames},
+                   {"max_seconds", s.maxSeconds},
+                   {"constant_density", s.constantDensity},
+                   {"density_reference_lights", densityReferenceLights(s)},
+                   {"spot_share", s.spotShare ? Json(*s.spotShare) : Json()},
+                   {"timing_requested", s.timing}};
+  for (Culling c : s.culling) settings["culling"].push_back(toString(c));
+  for (ShadingModel m : s.models) settings["models"].push_back(toString(m));
+  return settings;
 }
 
 // One CSV row; the column names are the same for every result, skipped or not.
@@ -192,6 +217,17 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
 
 }  // namespace
 
+std::string sweepFingerprint(const BenchSettings& settings) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : jsonText(settingsJson(settings))) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  char text[17];
+  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
 std::string fixedDecimals(double v, int decimals) {
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", decimals, v);
@@ -200,7 +236,7 @@ std::string fixedDecimals(double v, int decimals) {
 
 void writeBenchCsv(std::ostream& out, const BenchReport& report) {
   for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << oneLine(value) << "\n";
-  for (const auto& [key, value] : settingsRecord(report.settings)) out << "# " << key << ": " << value << "\n";
+  for (const auto& [key, value] : settingsRecord(report)) out << "# " << key << ": " << value << "\n";
   const std::vector<std::string> passes = reportedPasses(report.results);
   const Record header = csvRecord(BenchResult{}, passes);
   for (size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i].first;
@@ -215,29 +251,17 @@ void writeBenchCsv(std::ostream& out, const BenchReport& report) {
 void writeBenchJson(std::ostream& out, const BenchReport& report) {
   Json provenance = Json::object();
   for (const auto& [key, value] : report.provenance.entries) provenance[key] = value;
-  const BenchSettings& s = report.settings;
-  Json settings = {{"scene", s.scene},
-                   {"width", s.size.x},
-                   {"height", s.size.y},
-                   {"lights", s.lights},
-                   {"culling", Json::array()},
-                   {"models", Json::array()},
-                   {"warmup_frames", s.warmup},
-                   {"timed_frames", s.frames},
-                   {"max_seconds", s.maxSeconds},
-                   {"constant_density", s.constantDensity},
-                   {"density_reference_lights", densityReferenceLights(s)},
-                   {"spot_share", s.spotShare ? Json(*s.spotShare) : Json()},
-                   {"timing_requested", s.timing}};
-  for (Culling c : s.culling) settings["culling"].push_back(toString(c));
-  for (ShadingModel m : s.models) settings["models"].push_back(toString(m));
   const std::vector<std::string> passes = reportedPasses(report.results);
   Json configurations = Json::array();
   for (const BenchResult& r : report.results) configurations.push_back(configJson(r, passes));
-  const Json doc = {{"schema", "pbr-bench/1"},
-                    {"provenance", provenance},
-                    {"settings", settings},
-                    {"configurations", configurations}};
+  Json doc = {{"schema", "pbr-bench/1"},
+              {"provenance", provenance},
+              {"settings", settingsJson(report.settings)},
+              {"sweep",
+               {{"configurations", sweepConfigs(report.settings).size()},
+                {"fingerprint", sweepFingerprint(report.settings)}}}};
+  if (report.shard) doc["shard"] = {{"index", report.shard->index}, {"count", report.shard->count}};
+  doc["configurations"] = configurations;
   out << jsonText(doc, 2) << "\n";
 }
 

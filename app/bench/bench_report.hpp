@@ -1,8 +1,10 @@
 #pragma once
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_shard.hpp"
 #include "app/bench/bench_sweep.hpp"
 #include "core/provenance.hpp"
 
@@ -16,16 +18,22 @@ struct BenchReport {
   Provenance provenance;
   BenchSettings settings;
   std::vector<BenchResult> results;  // in sweep order, skipped configurations included
+  std::optional<BenchShard> shard;   // set when the results are one shard of the sweep the settings describe
 };
 
-// CSV: the provenance and settings as leading "# key: value" lines, a header row, then one row per
+// A digest of the settings that define a sweep's measurements (FNV-1a, 16 hex digits): reports of the same sweep,
+// its shards included, carry the same one.
+std::string sweepFingerprint(const BenchSettings& settings);
+
+// CSV: the provenance, settings, sweep fingerprint and shard as leading "# key: value" lines, a header row, then one row per
 // configuration with five order statistics per pass. Every cell holds a value: "skipped" for measurements of a
 // skipped configuration, "n/a" where a quantity does not exist (the cluster pass and cluster statistics of
 // brute-force rows).
 void writeBenchCsv(std::ostream& out, const BenchReport& report);
 
-// JSON (schema "pbr-bench/1"): provenance, settings and one object per configuration with summaries, every timed
-// frame, light statistics and memory; keys are always present, null where the CSV says skipped or n/a.
+// JSON (schema "pbr-bench/1"): provenance, settings, the sweep's size and fingerprint, the shard ("shard": {"index":
+// K, "count": N}, only in a shard's report) and one object per configuration with summaries, every timed frame,
+// light statistics and memory; keys are always present, null where the CSV says skipped or n/a.
 void writeBenchJson(std::ostream& out, const BenchReport& report);
 
 // A fixed-width table of the median times, light statistics and memory per configuration.

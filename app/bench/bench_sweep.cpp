@@ -33,6 +33,20 @@ std::string BenchConfig::label() const {
   return std::to_string(lights) + " lights, " + toString(culling) + ", " + toString(model);
 }
 
+std::vector<BenchConfig> sweepConfigs(const BenchSettings& settings) {
+  std::vector<BenchConfig> configs;
+  for (int lights : settings.lights) {
+    const float scale =
+        settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
+    for (Culling culling : settings.culling) {
+      for (ShadingModel model : settings.models) {
+        configs.push_back({settings.scene, settings.size, lights, culling, model, scale});
+      }
+    }
+  }
+  return configs;
+}
+
 TimeSummary summarizeTimes(std::vector<double> ms) {
   if (ms.empty()) return {};
   std::sort(ms.begin(), ms.end());

@@ -45,6 +45,10 @@ struct BenchConfig {
   std::string label() const;  // "1024 lights, clustered, pbr"
 };
 
+// The sweep's configurations in the order it measures them and its reports list them: light counts as given,
+// then culling modes, then shading models, innermost.
+std::vector<BenchConfig> sweepConfigs(const BenchSettings& settings);
+
 // Order statistics of one timed quantity over the timed frames, in ms. Percentiles interpolate linearly between
 // the two nearest ranks (as numpy's default does).
 struct TimeSummary {

@@ -34,7 +34,8 @@ void writeTrace(std::ostream& out, const BenchReport& report) {
   Json events = Json::array();
   events.push_back(metadata("process_name", 0,
                             {{"name", "pbr bench: " + s.scene + " " + std::to_string(s.size.x) + "x" +
-                                          std::to_string(s.size.y) + " on " + report.provenance.get("gl_renderer")}}));
+                                          std::to_string(s.size.y) + " on " + report.provenance.get("gl_renderer") +
+                                          (report.shard ? ", shard " + report.shard->text() : "")}}));
   for (size_t i = 0; i < report.results.size(); ++i) {
     const BenchResult& r = report.results[i];
     const int tid = static_cast<int>(i) + 1;

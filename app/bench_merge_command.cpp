@@ -1,0 +1,60 @@
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "app/args.hpp"
+#include "app/bench/bench_merge.hpp"
+#include "app/commands.hpp"
+#include "core/output_file.hpp"
+#include "core/provenance.hpp"
+
+namespace pbr {
+
+namespace {
+
+const std::vector<OptionSpec>& mergeOptions() {
+  static const std::vector<OptionSpec> specs = {
+      {"--csv", "F", "write the merged sweep as CSV, as pbr bench --csv writes it"},
+      {"--json", "F", "write the merged sweep as JSON, as pbr bench --json writes it"},
+      {"--allow-mixed", "",
+       "merge shards measured on different renderers or builds (or, with a CPU rasterizer, CPUs); by default "
+       "they are refused, their times not being comparable"},
+  };
+  return specs;
+}
+
+void writeOutput(const Args& args, const std::string& option, void (*write)(std::ostream&, const BenchReport&),
+                 const BenchReport& report) {
+  if (!args.has(option)) return;
+  OutputFile out(args.get(option, ""));
+  out.write([&](std::ostream& stream) { write(stream, report); });
+  std::printf("wrote %s\n", out.path().c_str());
+}
+
+}  // namespace
+
+int runBenchMerge(const std::vector<std::string>& argv) {
+  const auto& specs = mergeOptions();
+  const Args args(specs, argv, true);
+  if (args.helpRequested()) {
+    std::cout << Args::helpText(
+        "pbr bench-merge SHARD.json... [options]",
+        "Joins the JSON reports of the shards of one sweep (pbr bench --shard K/N --json F, one per K from 1 to N) "
+        "into the report the whole sweep would have written: the table on stdout, and the same CSV and JSON as pbr "
+        "bench, configurations in sweep order. Refuses shards of different sweeps, a shard given twice or missing, "
+        "and mixed renderers or builds. Provenance values that differ between shards are listed per shard.",
+        specs);
+    return 0;
+  }
+  if (args.operands().empty()) throw UsageError("expects the JSON reports of a sweep's shards");
+  std::vector<ShardFile> shards;
+  for (const std::string& path : args.operands()) shards.push_back(readShardFile(path));
+  BenchReport merged = mergeShards(shards, args.has("--allow-mixed"));
+  merged.provenance.set("merge_command", processCommandLine());
+  printBenchTable(std::cout, merged);
+  writeOutput(args, "--csv", writeBenchCsv, merged);
+  writeOutput(args, "--json", writeBenchJson, merged);
+  return 0;
+}
+
+}  // namespace pbr
