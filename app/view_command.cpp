@@ -19,6 +19,7 @@ const std::vector<OptionSpec>& viewOptions() {
       spotShareOption(),
       {"--model", "MODEL", "shading model at start: pbr (default) or blinn-phong (key M switches)"},
       {"--culling", "C", "clustered (default) or none at start (key C switches)"},
+      {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping (default fxaa)"},
       {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},
       ev100Option(),
       cameraOption(),
@@ -61,6 +62,7 @@ int runView(const std::vector<std::string>& argv) {
   if (args.has("--view-angle")) options.sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
   options.frame.model = parseShadingModel(args.get("--model", "pbr"));
   options.frame.culling = parseCulling(args.get("--culling", "clustered"));
+  options.frame.aa = parseAntiAliasing(args.get("--aa", "fxaa"));
   options.size = args.getSize("--size", options.size);
   options.paused = args.has("--paused");
   const int frames = args.getInt("--frames", 0, 1, 1 << 30);
