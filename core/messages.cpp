@@ -1,5 +1,6 @@
 #include "core/messages.hpp"
 
+#include <cstdio>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -14,6 +15,12 @@ std::string oneLine(const std::string& text) {
   constexpr size_t kMaxChars = 400;
   if (line.size() > kMaxChars) line = line.substr(0, kMaxChars - 3) + "...";
   return line;
+}
+
+std::string fixedDecimals(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, v);
+  return text;
 }
 
 void warnOnce(const std::string& message) {

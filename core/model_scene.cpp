@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 
 #include <glm/geometric.hpp>
@@ -11,6 +10,7 @@
 
 #include "core/exposure.hpp"
 #include "core/light_meter.hpp"
+#include "core/messages.hpp"
 
 namespace pbr {
 
@@ -20,12 +20,6 @@ glm::vec3 centreOf(const Bounds& b) { return 0.5f * (b.min + b.max); }
 
 // The bounding sphere of the box; the floor keeps a flat or point-sized model from collapsing the view.
 float radiusOf(const Bounds& b) { return std::max(0.5f * glm::length(b.max - b.min), 1e-3f); }
-
-std::string fixed(double v, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 // glTF gives lights in physical units and carries no exposure: the camera is set as an incident-light meter held at
 // the model reads. What the loader invented is brought to that level: the ambient light to look as it does at
@@ -39,8 +33,8 @@ void meterExposure(Scene& scene, const Bounds& bounds) {
   const float level = static_cast<float>(1.0 / exposureFromEv100(ev));
   scene.ambient *= level;
   if (scene.environment) scene.environment->intensity *= 0.25f * level;
-  scene.notes.push_back("the file's lights give " + fixed(lux, lux < 10.0 ? 3 : 0) +
-                        " lux at the model and glTF carries no exposure: EV100 " + fixed(ev, 2) +
+  scene.notes.push_back("the file's lights give " + fixedDecimals(lux, lux < 10.0 ? 3 : 0) +
+                        " lux at the model and glTF carries no exposure: EV100 " + fixedDecimals(ev, 2) +
                         " as an incident-light meter reads it, the default " +
                         (scene.environment ? "sky and ambient light" : "ambient light") +
                         " scaled to match (--ev100 sets another, --exposure multiplies)");

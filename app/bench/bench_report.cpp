@@ -27,8 +27,9 @@ std::string csvField(const std::string& s) {
   return out + "\"";
 }
 
-// Provenance values are single-line by construction, but a command line may hold anything.
-std::string oneLine(std::string s) {
+// Provenance values are single-line by construction, but a command line may hold anything; unlike core's oneLine,
+// nothing is cut: the CSV keeps the whole command.
+std::string withoutLineBreaks(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   std::replace(s.begin(), s.end(), '\r', ' ');
   return s;
@@ -228,14 +229,8 @@ std::string sweepFingerprint(const BenchSettings& settings) {
   return text;
 }
 
-std::string fixedDecimals(double v, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, v);
-  return text;
-}
-
 void writeBenchCsv(std::ostream& out, const BenchReport& report) {
-  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << oneLine(value) << "\n";
+  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << withoutLineBreaks(value) << "\n";
   for (const auto& [key, value] : settingsRecord(report)) out << "# " << key << ": " << value << "\n";
   const std::vector<std::string> passes = reportedPasses(report.results);
   const Record header = csvRecord(BenchResult{}, passes);

@@ -6,12 +6,10 @@
 
 #include "app/bench/bench_shard.hpp"
 #include "app/bench/bench_sweep.hpp"
+#include "core/messages.hpp"
 #include "core/provenance.hpp"
 
 namespace pbr {
-
-// `v` with `decimals` digits after the point, as report cells print numbers.
-std::string fixedDecimals(double v, int decimals);
 
 // Everything `pbr bench` measured, and under which circumstances.
 struct BenchReport {
