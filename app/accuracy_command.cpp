@@ -14,6 +14,7 @@
 #include "app/bench/chart_script.hpp"
 #include "app/accuracy/brdf_slice.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/accuracy/error_map.hpp"
 #include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
@@ -31,25 +32,26 @@ std::string ladderNames() {
 }
 
 const std::vector<OptionSpec>& accuracyOptions() {
+  static const PairCostSettings cost;
+  static const reference::ReferenceOptions referenceDefaults;
   static const std::vector<OptionSpec> specs = {
       {"--scenes", "LIST",
-       "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle (default sphere-grid,"
-       "fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80); textures are removed"},
-      {"--variants", "LIST", "comma-separated variants or all (default): " + ladderNames()},
-      {"--size", "WxH", "frame size of the compared frames in pixels (default 320x180)"},
-      {"--pair-size", "WxH", "frame size of the cost-per-pair measurement (default 1280x720)"},
-      {"--pair-lights", "N",
-       "lights reaching every pixel in the cost-per-pair measurement (default " +
-           std::to_string(PairCostSettings{}.lights) + ")"},
-      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn (default 9)"},
+       "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle; textures are removed",
+       "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80", ""},
+      {"--variants", "LIST", "comma-separated variants or all: " + ladderNames(), "all", ""},
+      {"--size", "WxH", "frame size of the compared frames in pixels", sizeText({320, 180}), ""},
+      {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(cost.size), ""},
+      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
+       std::to_string(cost.lights), ""},
+      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn", "9", ""},
       {"--no-cost", "", "skip the cost-per-pair measurement (the chart needs it)"},
-      {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go (default out/accuracy)"},
+      {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go", "out/accuracy", ""},
       {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
-      {"--slice-size", "AxR", "slice grid: view angles x roughness values (default 90x64)"},
+      {"--slice-size", "AxR", "slice grid: view angles x roughness values", sizeText({90, 64}), ""},
       {"--no-chart", "", "skip the chart (drawn by scripts/plot_accuracy.py with python3-matplotlib)"},
-      {"--threads", "N", "reference renderer threads, 0 for all (default 0)"},
-      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
-      {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+      {"--threads", "N", "reference renderer threads, 0 for all", std::to_string(referenceDefaults.threads), ""},
+      timingOption(),
+      eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
   };
@@ -111,24 +113,23 @@ int runAccuracy(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const std::vector<AccuracyVariant> variants = selectVariants(args.get("--variants", "all"));
-  const std::vector<std::string> sceneSpecs =
-      splitList(args.get("--scenes", "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80"));
+  const std::vector<AccuracyVariant> variants = selectVariants(args.get("--variants"));
+  const std::vector<std::string> sceneSpecs = splitList(args.get("--scenes"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
-  const glm::ivec2 size = args.getSize("--size", {320, 180});
+  const glm::ivec2 size = args.getSize("--size");
   PairCostSettings cost;
-  cost.size = args.getSize("--pair-size", cost.size);
+  cost.size = args.getSize("--pair-size");
   cost.sizeOption = "--pair-size";
-  cost.lights = args.getInt("--pair-lights", cost.lights, 1, 1 << 16);
-  cost.rounds = args.getInt("--rounds", 9, 1, 10000);
+  cost.lights = args.getInt("--pair-lights", 1, 1 << 16);
+  cost.rounds = args.getInt("--rounds", 1, 10000);
   const bool measureCost = !args.has("--no-cost");
-  const std::filesystem::path dir = args.get("--out-dir", "out/accuracy");
+  const std::filesystem::path dir = args.get("--out-dir");
   const bool slices = args.has("--slices");
-  const glm::ivec2 sliceGrid = args.getSize("--slice-size", {90, 64});
+  const glm::ivec2 sliceGrid = args.getSize("--slice-size");
   reference::ReferenceOptions referenceOptions;
-  referenceOptions.threads = args.getInt("--threads", 0, 0, 1024);
-  const std::string timing = args.get("--timing", "auto");
-  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  referenceOptions.threads = args.getInt("--threads", 0, 1024);
+  const std::string timing = args.get("--timing");
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
   chooseTimingMode(timing, "");
   std::vector<AccuracyScene> scenes;
   for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, sceneFileParams(args)));

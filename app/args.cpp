@@ -8,7 +8,16 @@
 
 namespace pbr {
 
-Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv, bool takesOperands) {
+std::string sizeText(glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); }
+
+std::string numberText(double value) {
+  std::ostringstream out;
+  out << value;  // %g, six significant digits: every default is a short decimal
+  return out.str();
+}
+
+Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv, bool takesOperands)
+    : specs_(specs) {
   for (size_t i = 0; i < argv.size(); ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -49,31 +58,40 @@ Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>&
   }
 }
 
-std::string Args::get(const std::string& name, const std::string& fallback) const {
-  auto it = values_.find(name);
-  return it == values_.end() ? fallback : it->second;
+const OptionSpec& Args::spec(const std::string& name) const {
+  for (const OptionSpec& s : specs_) {
+    if (s.name == name) return s;
+  }
+  throw std::logic_error("the command reads option " + name + ", which its table lacks");
 }
 
-int Args::getInt(const std::string& name, int fallback, int lo, int hi) const {
+std::string Args::get(const std::string& name) const {
   auto it = values_.find(name);
-  if (it == values_.end()) return fallback;
-  const std::string& s = it->second;
+  return it == values_.end() ? spec(name).defaultValue : it->second;
+}
+
+std::string Args::required(const std::string& name) const {
+  std::string value = get(name);
+  if (value.empty()) throw std::logic_error("the command reads option " + name + ", absent and without a default");
+  return value;
+}
+
+int Args::getInt(const std::string& name, int lo, int hi) const {
+  const std::string s = required(name);
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
+  if (*end != '\0' || errno == ERANGE || v < lo || v > hi) {
     throw UsageError(name + " expects an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'");
   }
   return static_cast<int>(v);
 }
 
-float Args::getFloat(const std::string& name, float fallback, float lo, float hi) const {
-  auto it = values_.find(name);
-  if (it == values_.end()) return fallback;
-  const std::string& s = it->second;
+float Args::getFloat(const std::string& name, float lo, float hi) const {
+  const std::string s = required(name);
   char* end = nullptr;
   const float v = std::strtof(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) {
+  if (*end != '\0' || !std::isfinite(v) || v < lo || v > hi) {
     std::ostringstream range;
     range << "[" << lo << ", " << hi << "]";
     throw UsageError(name + " expects a number in " + range.str() + ", got '" + s + "'");
@@ -81,10 +99,8 @@ float Args::getFloat(const std::string& name, float fallback, float lo, float hi
   return v;
 }
 
-glm::ivec2 Args::getSize(const std::string& name, glm::ivec2 fallback) const {
-  auto it = values_.find(name);
-  if (it == values_.end()) return fallback;
-  const std::string& s = it->second;
+glm::ivec2 Args::getSize(const std::string& name) const {
+  const std::string s = required(name);
   int w = 0, h = 0;
   char x = 0, extra = 0;
   std::istringstream in(s);
@@ -94,14 +110,41 @@ glm::ivec2 Args::getSize(const std::string& name, glm::ivec2 fallback) const {
   return {w, h};
 }
 
+namespace {
+
+constexpr size_t kDescriptionColumn = 26;
+constexpr size_t kHelpWidth = 110;
+
+// Breaks a description into lines at spaces, each at most `width` characters unless one word is longer.
+std::vector<std::string> wrapWords(const std::string& text, size_t width) {
+  std::vector<std::string> lines(1);
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    if (!lines.back().empty() && lines.back().size() + 1 + word.size() > width) lines.emplace_back();
+    lines.back() += (lines.back().empty() ? "" : " ") + word;
+  }
+  return lines;
+}
+
+}  // namespace
+
 std::string Args::helpText(const std::string& usage, const std::string& summary, const std::vector<OptionSpec>& specs) {
   std::ostringstream out;
   out << "usage: " << usage << "\n\n" << summary << "\n\noptions:\n";
+  const std::string indent(kDescriptionColumn, ' ');
   for (const OptionSpec& s : specs) {
     std::string left = "  " + s.name + (s.metavar.empty() ? "" : " " + s.metavar);
-    if (left.size() < 26) left.resize(26, ' ');
-    else left += "\n" + std::string(26, ' ');
-    out << left << s.help << "\n";
+    // At least two spaces between an option and its description, which is how both are told apart.
+    if (left.size() + 2 <= kDescriptionColumn) left.resize(kDescriptionColumn, ' ');
+    else left += "\n" + indent;
+    // The no-break space keeps "(default" on the line of the value it introduces; it is made a space again below.
+    std::string help = s.help;
+    if (!s.defaultValue.empty()) help += (help.empty() ? "" : " ") + std::string("(default\x01") + s.defaultValue + ")";
+    if (!s.defaultText.empty()) help += (help.empty() ? "" : " ") + std::string("(default:\x01") + s.defaultText + ")";
+    std::vector<std::string> lines = wrapWords(help, kHelpWidth - kDescriptionColumn);
+    for (std::string& line : lines) std::replace(line.begin(), line.end(), '\x01', ' ');
+    out << left << lines.front() << "\n";
+    for (size_t i = 1; i < lines.size(); ++i) out << indent << lines[i] << "\n";
   }
   out << "  --help                  show this help\n";
   return out.str();

@@ -18,6 +18,7 @@
 #include "app/bench/bench_shard.hpp"
 #include "app/accuracy/pair_cost_report.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/scene_source.hpp"
 #include "app/bench/trace_writer.hpp"
 #include "core/context.hpp"
@@ -27,17 +28,31 @@ namespace pbr {
 
 namespace {
 
+template <typename T, typename Text>
+std::string listText(const std::vector<T>& items, Text text) {
+  std::string out;
+  for (const T& item : items) out += (out.empty() ? "" : ",") + std::string(text(item));
+  return out;
+}
+
 const std::vector<OptionSpec>& benchOptions() {
+  static const BenchSettings sweep;
+  static const PairCostSettings pairCost;
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene to measure (default stress)"},
-      {"--lights", "LIST", "comma-separated light counts (default 64,256,1024,4096,16384)"},
-      {"--culling", "LIST", "culling modes: none, clustered (default both)"},
-      {"--model", "LIST", "shading models: pbr, blinn-phong (default both)"},
-      {"--size", "WxH", "frame size in pixels (default 1280x720)"},
-      {"--warmup", "K", "untimed frames per configuration, at least 1: the first estimates its time (default 5)"},
-      {"--frames", "K", "timed frames per configuration (default 30)"},
+      {"--scene", "NAME", "scene to measure", sweep.scene, ""},
+      {"--lights", "LIST", "comma-separated light counts",
+       listText(sweep.lights, [](int n) { return std::to_string(n); }), ""},
+      {"--culling", "LIST", "culling modes: none, clustered",
+       listText(sweep.culling, [](Culling c) { return toString(c); }), ""},
+      {"--model", "LIST", "shading models: pbr, blinn-phong",
+       listText(sweep.models, [](ShadingModel m) { return toString(m); }), ""},
+      {"--size", "WxH", "frame size in pixels, of the sweep and of --pair-cost", sizeText(sweep.size), ""},
+      {"--warmup", "K", "untimed frames per configuration, at least 1: the first estimates its time",
+       std::to_string(sweep.warmup), ""},
+      {"--frames", "K", "timed frames per configuration", std::to_string(sweep.frames), ""},
       {"--max-seconds", "S",
-       "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds (default 60)"},
+       "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds",
+       numberText(sweep.maxSeconds), ""},
       {"--constant-density", "",
        "scale light radii by sqrt(L0/lights), L0 the smallest of --lights, holding lights x radius^2 (the light "
        "density) constant"},
@@ -45,17 +60,17 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
-      {"--pair-lights", "N",
-       "lights of the --pair-cost frame (default " + std::to_string(PairCostSettings{}.lights) + ")"},
-      {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn (default 7)"},
-      {"--csv", "F", "write the results as CSV (provenance in leading # lines)"},
-      {"--json", "F", "write the results, every timed frame included, as JSON"},
-      {"--trace", "F", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
+      {"--pair-lights", "N", "lights of the --pair-cost frame", std::to_string(pairCost.lights), ""},
+      {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn", std::to_string(pairCost.rounds),
+       ""},
+      {"--csv", "F.csv", "write the results as CSV (provenance in leading # lines)"},
+      {"--json", "F.json", "write the results, every timed frame included, as JSON"},
+      {"--trace", "F.json", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
       {"--shard", "K/N",
        "measure only the K-th of N disjoint parts of the sweep (1 <= K <= N), for N processes or machines; "
-       "pbr bench-merge joins their --json reports (default: the whole sweep)"},
-      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
-      {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+       "pbr bench-merge joins their --json reports", "", "the whole sweep"},
+      timingOption(),
+      eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
   };
@@ -104,26 +119,27 @@ std::vector<T> parseEach(const std::string& option, const std::string& text, T (
 
 BenchSettings parseSettings(const Args& args) {
   BenchSettings s;
-  s.scene = args.get("--scene", s.scene);
-  if (args.has("--lights")) s.lights = parseLightCounts(args.get("--lights", ""));
-  if (args.has("--culling")) s.culling = parseEach("--culling", args.get("--culling", ""), parseCulling);
-  if (args.has("--model")) s.models = parseEach("--model", args.get("--model", ""), parseShadingModel);
-  s.size = args.getSize("--size", s.size);
-  s.warmup = args.getInt("--warmup", s.warmup, 1, 100000);
-  s.frames = args.getInt("--frames", s.frames, 1, 100000);
-  s.maxSeconds = args.getFloat("--max-seconds", static_cast<float>(s.maxSeconds), 0.0f, 1e7f);
+  s.scene = args.get("--scene");
+  s.lights = parseLightCounts(args.get("--lights"));
+  s.culling = parseEach("--culling", args.get("--culling"), parseCulling);
+  s.models = parseEach("--model", args.get("--model"), parseShadingModel);
+  s.size = args.getSize("--size");
+  s.warmup = args.getInt("--warmup", 1, 100000);
+  s.frames = args.getInt("--frames", 1, 100000);
+  s.maxSeconds = args.getFloat("--max-seconds", 0.0f, 1e7f);
   s.constantDensity = args.has("--constant-density");
   s.spotShare = sceneFileParams(args).spotShare;
-  s.timing = args.get("--timing", s.timing);
+  s.timing = args.get("--timing");
   chooseTimingMode(s.timing, "");  // rejects a bad mode before a context is made
   return s;
 }
 
-// Output files are opened before the sweep, so that a bad path fails at once rather than after an hour; each is
-// renamed into place only once all of it is written.
+// Output files are opened before the sweep, so that a bad path or name fails at once rather than after an hour;
+// each is renamed into place only once all of it is written.
 std::unique_ptr<OutputFile> openOutput(const Args& args, const std::string& option) {
   if (!args.has(option)) return nullptr;
-  return std::make_unique<OutputFile>(args.get(option, ""));
+  requireExtension(args.get(option), option == "--csv" ? ".csv" : ".json");
+  return std::make_unique<OutputFile>(args.get(option));
 }
 
 void finishOutput(OutputFile* out, const std::function<void(std::ostream&)>& body) {
@@ -134,19 +150,19 @@ void finishOutput(OutputFile* out, const std::function<void(std::ostream&)>& bod
 
 PairCostSettings parsePairCostSettings(const Args& args) {
   PairCostSettings s;
-  s.size = args.getSize("--size", s.size);
-  s.lights = args.getInt("--pair-lights", s.lights, 1, 1 << 16);
-  s.rounds = args.getInt("--rounds", s.rounds, 1, 10000);
+  s.size = args.getSize("--size");
+  s.lights = args.getInt("--pair-lights", 1, 1 << 16);
+  s.rounds = args.getInt("--rounds", 1, 10000);
   return s;
 }
 
 int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform platform) {
   PairCostReport report;
-  report.variants = selectVariants(args.get("--pair-cost", ""));
+  report.variants = selectVariants(args.get("--pair-cost"));
   report.settings = settings;
   const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
   const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
-  const std::string timingRequest = args.get("--timing", "auto");
+  const std::string timingRequest = args.get("--timing");
   auto context = createHeadlessContext(platform);
   report.settings.timing = chooseTimingMode(timingRequest, context->info().renderer);
   report.provenance = collectProvenance(context->info(), report.settings.timing);
@@ -179,12 +195,12 @@ int runBench(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
   if (args.has("--pair-cost")) {
     for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density", "--shard"}) {
       if (args.has(sweepOnly)) throw UsageError(std::string(sweepOnly) + " belongs to the sweep, not --pair-cost");
     }
-    chooseTimingMode(args.get("--timing", "auto"), "");
+    chooseTimingMode(args.get("--timing"), "");
     return runPairCost(args, parsePairCostSettings(args), platform);
   }
   for (const char* pairOnly : {"--pair-lights", "--rounds"}) {
@@ -194,7 +210,7 @@ int runBench(const std::vector<std::string>& argv) {
   const std::vector<BenchConfig> sweep = sweepConfigs(settings);
   std::optional<BenchShard> shard;
   if (args.has("--shard")) {
-    shard = parseShard(args.get("--shard", ""));
+    shard = parseShard(args.get("--shard"));
     if (static_cast<size_t>(shard->count) > sweep.size()) {
       throw UsageError("--shard " + shard->text() + ": the sweep has " + std::to_string(sweep.size()) +
                        " configurations, too few for " + std::to_string(shard->count) + " shards");

@@ -14,8 +14,8 @@ namespace {
 
 const std::vector<OptionSpec>& mergeOptions() {
   static const std::vector<OptionSpec> specs = {
-      {"--csv", "F", "write the merged sweep as CSV, as pbr bench --csv writes it"},
-      {"--json", "F", "write the merged sweep as JSON, as pbr bench --json writes it"},
+      {"--csv", "F.csv", "write the merged sweep as CSV, as pbr bench --csv writes it"},
+      {"--json", "F.json", "write the merged sweep as JSON, as pbr bench --json writes it"},
       {"--allow-mixed", "",
        "merge shards measured on different renderers or builds (or, with a CPU rasterizer, CPUs); by default "
        "they are refused, their times not being comparable"},
@@ -26,7 +26,7 @@ const std::vector<OptionSpec>& mergeOptions() {
 void writeOutput(const Args& args, const std::string& option, void (*write)(std::ostream&, const BenchReport&),
                  const BenchReport& report) {
   if (!args.has(option)) return;
-  OutputFile out(args.get(option, ""));
+  OutputFile out(args.get(option));
   out.write([&](std::ostream& stream) { write(stream, report); });
   std::printf("wrote %s\n", out.path().c_str());
 }
@@ -47,6 +47,8 @@ int runBenchMerge(const std::vector<std::string>& argv) {
     return 0;
   }
   if (args.operands().empty()) throw UsageError("expects the JSON reports of a sweep's shards");
+  if (args.has("--csv")) requireExtension(args.get("--csv"), ".csv");
+  if (args.has("--json")) requireExtension(args.get("--json"), ".json");
   std::vector<ShardFile> shards;
   for (const std::string& path : args.operands()) shards.push_back(readShardFile(path));
   BenchReport merged = mergeShards(shards, args.has("--allow-mixed"));

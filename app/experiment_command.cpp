@@ -5,6 +5,7 @@
 #include "app/args.hpp"
 #include "app/bench/chart_script.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/experiments/experiments.hpp"
 #include "core/context.hpp"
 
@@ -14,10 +15,10 @@ namespace {
 
 const std::vector<OptionSpec>& experimentOptions() {
   static const std::vector<OptionSpec> specs = {
-      {"--out", "DIR", "folder for the images, NAME.csv and the chart NAME.png (default out/experiments)"},
-      {"--size", "WxH", "frame size (default 640x360)"},
-      {"--frames", "K", "triangles: timed frames per configuration after one warm-up (default 5)"},
-      {"--egl-platform", "P", "auto (default), surfaceless or device"},
+      {"--out", "DIR", "folder for the images, NAME.csv and the chart NAME.png", "out/experiments", ""},
+      {"--size", "WxH", "frame size", sizeText({640, 360}), ""},
+      {"--frames", "K", "triangles: timed frames per configuration after one warm-up", "5", ""},
+      eglPlatformOption(),
   };
   return specs;
 }
@@ -62,10 +63,10 @@ int runExperiment(const std::vector<std::string>& argv) {
   }
   Args args(specs, std::vector<std::string>(argv.begin() + 1, argv.end()));
   if (args.helpRequested()) return runExperiment({"--help"});
-  const std::string outDir = args.get("--out", "out/experiments");
-  const glm::ivec2 size = args.getSize("--size", {640, 360});
-  const int frames = args.getInt("--frames", 5, 1, 1000);
-  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  const std::string outDir = args.get("--out");
+  const glm::ivec2 size = args.getSize("--size");
+  const int frames = args.getInt("--frames", 1, 1000);
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
 
   auto context = createHeadlessContext(platform);
   std::printf("renderer: %s | %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str(),

@@ -5,6 +5,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/scene_source.hpp"
 #include "core/image.hpp"
 #include "reference/brdf_form_names.hpp"
@@ -15,19 +16,21 @@ namespace pbr {
 namespace {
 
 const std::vector<OptionSpec>& referenceOptions() {
+  static const reference::ReferenceOptions referenceDefaults;
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene lit by point lights, without an environment (default sphere-grid)"},
-      {"--lights", "N", "number of point lights (default: the scene's)"},
-      {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view"},
+      {"--scene", "NAME", "scene lit by point lights, without an environment", "sphere-grid", ""},
+      lightsOption("the scene's"),
+      viewAngleOption(),
       spotShareOption(),
-      {"--size", "WxH", "frame size in pixels (default 640x360)"},
+      {"--size", "WxH", "frame size in pixels", sizeText({640, 360}), ""},
       {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (required)"},
-      {"--threads", "N", "worker threads (default: every hardware thread)"},
-      {"--geometry", "G", "meshes (default: the triangles the GPU rasterizes) or analytic (the exact shapes)"},
+      {"--threads", "N", "worker threads, 0 for every hardware thread", std::to_string(referenceDefaults.threads), ""},
+      {"--geometry", "G", "meshes (the triangles the GPU rasterizes) or analytic (the exact shapes)",
+       toString(referenceDefaults.geometry), ""},
       {"--variant", "study|K=V,...", "BRDF forms: study (Hammon, Schlick, Lambert (1 - F(v.h))) or "
                                      "visibility=exact|hammon|separable, ndf=ggx, fresnel=exact|schlick|schlick-sg, "
-                                     "diffuse=lambert-1-f|lambert-1-f-vh|lambert (default: the first of each, "
-                                     "visibility=exact,ndf=ggx,fresnel=exact,diffuse=lambert-1-f)"},
+                                     "diffuse=lambert-1-f|lambert-1-f-vh|lambert", "",
+       toString(referenceDefaults.forms)},
       allowOutsideUrisOption(),
       strictOption(),
   };
@@ -51,19 +54,18 @@ int runReference(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const std::string out = args.get("--hdr", "");
+  const std::string out = args.get("--hdr");
   if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
   hdrFileFormat(out);  // an unknown extension fails before the frame is traced
   SceneParams params = sceneFileParams(args);
   params.defaultEnvironment = DefaultEnvironment::None;  // the reference has no image-based lighting
-  if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 0, 1 << 20);
-  if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
-  const glm::ivec2 size = args.getSize("--size", {640, 360});
+  applySceneShapeOptions(args, params);
+  const glm::ivec2 size = args.getSize("--size");
   reference::ReferenceOptions options;
-  options.threads = args.getInt("--threads", 0, 0, 1024);
-  options.geometry = reference::parseGeometry(args.get("--geometry", "meshes"));
-  options.forms = reference::parseBrdfForms(args.get("--variant", ""));
-  const Scene scene = resolveScene(args.get("--scene", "sphere-grid"), params);
+  options.threads = args.getInt("--threads", 0, 1024);
+  options.geometry = reference::parseGeometry(args.get("--geometry"));
+  options.forms = reference::parseBrdfForms(args.get("--variant"));
+  const Scene scene = resolveScene(args.get("--scene"), params);
 
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);

@@ -6,6 +6,7 @@
 #include "app/bench/bench_report.hpp"
 #include "app/bench/bench_run.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "renderer/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
@@ -17,44 +18,50 @@ namespace pbr {
 namespace {
 
 const std::vector<OptionSpec>& renderOptions() {
+  static const FrameOptions frame;
+  static const RendererConfig renderer;
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME|FILE",
-       "built-in scene (default, sphere-grid, light-wall, fresnel-floor, stress, helmet, helmet-grid, many-lights) "
-       "or scene file (.json, .gltf, .glb)"},
-      {"--model", "MODEL", "shading model: pbr (default) or blinn-phong"},
-      {"--visibility", "V", "PBR Smith visibility: exact (default, height-correlated), hammon or separable"},
+      {"--scene", "NAME|FILE", "built-in scene (" + builtinSceneList() + ") or scene file (.json, .gltf, .glb)",
+       "default", ""},
+      {"--model", "MODEL", "shading model: pbr or blinn-phong", toString(frame.model), ""},
+      {"--visibility", "V", "PBR Smith visibility: exact (height-correlated), hammon or separable", "",
+       std::string(toString(frame.variant.visibility)) + ", or --variant's"},
       {"--variant", "K=V,...|study", "shading variant, PBR: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
                                      "fresnel=schlick|exact|schlick-sg, diffuse=lambert-1-f|lambert|burley|"
-                                     "lambert-1-f-vh (default: the first of each); or, alone, study: the PBR model "
+                                     "lambert-1-f-vh; or, alone, study: the PBR model "
                                      "of the Blinn-Phong-vs-PBR study, GGX, Hammon's visibility, Schlick Fresnel "
-                                     "and Lambert weighted by (1 - F(v.h)); Blinn-Phong: lobe=pow (default) or sg, "
-                                     "the lobe's spherical-Gaussian fit (one exp2 instead of pow)"},
-      {"--hdr-format", "F", "HDR radiance target: rgba16f (default), r11g11b10f or rgba32f"},
-      {"--gbuffer", "P", "G-buffer precision: lean (default, 16 bytes per pixel) or float (unquantised, 44 bytes)"},
-      {"--lights", "N", "number of point lights (default: the scene's; 256 for default)"},
-      {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
+                                     "and Lambert weighted by (1 - F(v.h)); Blinn-Phong: lobe=pow or sg, "
+                                     "the lobe's spherical-Gaussian fit (one exp2 instead of pow)", "",
+       toString(frame.variant) + "," + toString(frame.variant.lobe)},
+      {"--hdr-format", "F", "HDR radiance target: rgba16f, r11g11b10f or rgba32f", toString(renderer.hdrFormat), ""},
+      {"--gbuffer", "P", "G-buffer precision: lean (16 bytes per pixel) or float (unquantised, 44 bytes)",
+       toString(renderer.gbuffer), ""},
+      lightsOption("the scene's; 256 for default"),
+      viewAngleOption(),
       spotShareOption(),
-      {"--culling", "C", "clustered (default) or none (brute force: every light for every pixel)"},
-      {"--tile", "PX", "cluster screen-tile size in pixels (default 64)"},
-      {"--slices", "S", "cluster depth slices, exponential between near and far (default 192)"},
+      {"--culling", "C", "clustered or none (brute force: every light for every pixel)", toString(frame.culling), ""},
+      {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
+      {"--slices", "S", "cluster depth slices, exponential between near and far",
+       std::to_string(renderer.clusters.slices), ""},
       {"--aa", "none|fxaa",
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
-       "never filtered (default fxaa)"},
-      {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices"},
+       "never filtered", toString(kDisplayAntiAliasing), ""},
+      {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices", "none", ""},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
-      {"--size", "WxH", "frame size in pixels (default 1280x720)"},
-      {"--exposure", "X", "exposure multiplier before ACES (default: the scene's, 1)"},
+      {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
+      {"--exposure", "X", "exposure multiplier before ACES", "", "the scene's, 1"},
       ev100Option(),
       cameraOption(),
       environmentOption(),
       environmentIntensityOption(),
-      {"--out", "F.png", "write the final 8-bit sRGB frame as PNG"},
+      {"--out", "F.png|F.jpg", "write the final 8-bit sRGB frame as PNG, or JPEG (quality 95)"},
       {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
-      {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet (default 2)"},
-      {"--frames", "K", "timed frames: median and spread of each pass over them (default 5)"},
-      {"--json", "F", "write the timings (every timed frame), light statistics and provenance as JSON (pbr bench schema)"},
-      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
-      {"--egl-platform", "P", "auto (default), surfaceless (Mesa) or device (first hardware device)"},
+      {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet", "2", ""},
+      {"--frames", "K", "timed frames: median and spread of each pass over them", "5", ""},
+      {"--json", "F.json", "write the timings (every timed frame), light statistics and provenance as JSON (pbr bench "
+                           "schema)"},
+      timingOption(),
+      eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
   };
@@ -138,37 +145,38 @@ int runRender(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const std::string sceneName = args.get("--scene", "default");
-  const ShadingModel model = parseShadingModel(args.get("--model", "pbr"));
-  ShadingVariant variant = parseShadingVariant(args.get("--variant", ""));
-  if (args.has("--visibility")) variant.visibility = parseVisibility(args.get("--visibility", "exact"));
+  const std::string sceneName = args.get("--scene");
+  const ShadingModel model = parseShadingModel(args.get("--model"));
+  ShadingVariant variant = parseShadingVariant(args.get("--variant"));
+  if (args.has("--visibility")) variant.visibility = parseVisibility(args.get("--visibility"));
   RendererConfig rendererConfig;
-  rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format", "rgba16f"));
-  rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer", "lean"));
+  rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format"));
+  rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer"));
   SceneParams sceneParams = sceneFileParams(args);
   sceneParams.defaultEnvironment = defaultEnvironment(args);
-  if (args.has("--lights")) sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
-  if (args.has("--view-angle")) sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
-  const Culling culling = parseCulling(args.get("--culling", "clustered"));
+  applySceneShapeOptions(args, sceneParams);
+  const Culling culling = parseCulling(args.get("--culling"));
   ClusterConfig& clusterConfig = rendererConfig.clusters;
-  clusterConfig.tileSize = args.getInt("--tile", clusterConfig.tileSize, 8, 512);
-  clusterConfig.slices = args.getInt("--slices", clusterConfig.slices, 1, 256);
+  clusterConfig.tileSize = args.getInt("--tile", 8, 512);
+  clusterConfig.slices = args.getInt("--slices", 1, 256);
   const bool stats = args.has("--stats");
-  const AntiAliasing aa = parseAntiAliasing(args.get("--aa", "fxaa"));
-  const ClusterDebugView debugView = parseClusterDebugView(args.get("--debug", "none"));
+  const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
+  const ClusterDebugView debugView = parseClusterDebugView(args.get("--debug"));
   if (debugView != ClusterDebugView::None && culling != Culling::Clustered) {
     throw UsageError("--debug needs --culling clustered");
   }
-  const glm::ivec2 size = args.getSize("--size", {1280, 720});
-  const int warmup = args.getInt("--warmup", 2, 0, 100000);
-  const int frames = args.getInt("--frames", 5, 1, 100000);
-  const std::string outPng = args.get("--out", "");
-  const std::string outHdr = args.get("--hdr", "");
-  const std::string outJson = args.get("--json", "");
-  if (!outPng.empty()) requirePngPath(outPng);
+  const glm::ivec2 size = args.getSize("--size");
+  const int warmup = args.getInt("--warmup", 0, 100000);
+  const int frames = args.getInt("--frames", 1, 100000);
+  const std::string outPng = args.get("--out");
+  const std::string outHdr = args.get("--hdr");
+  const std::string outJson = args.get("--json");
+  // Every output's kind is known from its name before anything renders.
+  if (!outPng.empty()) ldrFileFormat(outPng);
   if (!outHdr.empty()) hdrFileFormat(outHdr);
-  const std::string timing = args.get("--timing", "auto");
-  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform", "auto"));
+  if (!outJson.empty()) requireExtension(outJson, ".json");
+  const std::string timing = args.get("--timing");
+  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
   chooseTimingMode(timing, "");  // reject a bad mode before making a context
 
   Scene scene = resolveScene(sceneName, sceneParams);
@@ -229,7 +237,7 @@ int runRender(const std::vector<std::string>& argv) {
   checkGlError("rendering");
 
   if (pngFile) {
-    pngFile->write([&](std::ostream& out) { writePng(out, ldr); });
+    pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(outPng), ldr); });
     std::printf("wrote %s\n", outPng.c_str());
   }
   if (hdrFile) {

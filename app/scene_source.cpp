@@ -20,33 +20,34 @@ OptionSpec strictOption() {
 
 OptionSpec spotShareOption() {
   return {"--spot-share", "F", "make this share (0-1) of a scene's random lights spot lights, aimed down at random "
-                               "with outer angles of 10-60 degrees (default: the scene's, 0)"};
+                               "with outer angles of 10-60 degrees", "", "the scene's, 0"};
 }
 
 SceneParams sceneFileParams(const Args& args) {
   SceneParams params;
   params.uris = {args.has("--allow-outside-uris")};
   params.strictKeys = args.has("--strict");
-  if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 0.0f, 1.0f);
+  if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 1.0f);
   return params;
 }
 
 OptionSpec ev100Option() {
   return {"--ev100", "EV",
           "physical exposure: the camera's exposure value at ISO 100 (sunny day about 15, indoors 6-8), scaling "
-          "radiance by 1 / (1.2 2^EV) before --exposure (default: the scene camera's; for a glTF model given alone with "
-          "lights, what an incident-light meter reads at the model; else none)"};
+          "radiance by 1 / (1.2 2^EV) before --exposure", "",
+          "the scene camera's; for a glTF model given alone with lights, what an incident-light meter reads at the "
+          "model; else none"};
 }
 
 OptionSpec cameraOption() {
   return {"--camera", "N|auto",
           "view through the scene's glTF camera N (from 0, in node order) or, for a model given alone, auto: "
-          "framed to its bounds (default: the scene file's camera; a model's first camera, else auto)"};
+          "framed to its bounds", "", "the scene file's camera; a model's first camera, else auto"};
 }
 
 void applyCameraOption(const Args& args, Scene& scene) {
   if (!args.has("--camera")) return;
-  const std::string choice = args.get("--camera", "");
+  const std::string choice = args.get("--camera");
   if (choice == "auto") {
     if (!scene.framedCamera) throw UsageError("--camera auto applies to a .gltf or .glb given alone as --scene");
     scene.camera = *scene.framedCamera;
@@ -55,19 +56,20 @@ void applyCameraOption(const Args& args, Scene& scene) {
   if (scene.cameras.empty()) {
     throw UsageError("--camera " + choice + ": the scene has no glTF camera (auto frames a model given alone)");
   }
-  const int index = args.getInt("--camera", 0, 0, static_cast<int>(scene.cameras.size()) - 1);
+  const int index = args.getInt("--camera", 0, static_cast<int>(scene.cameras.size()) - 1);
   scene.camera = scene.cameras[static_cast<size_t>(index)];
 }
 
 OptionSpec environmentOption() {
   return {"--environment", "F.hdr|sky|none",
           "image-based lighting (PBR) and background from a Radiance .hdr or the procedural sky, or none, replacing "
-          "the scene's environment (default: the scene file's; a glTF model, or a scene file that places models and "
-          "has no \"environment\", gets the sky)"};
+          "the scene's environment", "",
+          "the scene file's; a glTF model, or a scene file that places models and has no \"environment\", gets the "
+          "sky"};
 }
 
 OptionSpec environmentIntensityOption() {
-  return {"--environment-intensity", "X", "radiance multiplier of the environment (default: the scene's, 1)"};
+  return {"--environment-intensity", "X", "radiance multiplier of the environment", "", "the scene's, 1"};
 }
 
 DefaultEnvironment defaultEnvironment(const Args& args) {
@@ -77,7 +79,7 @@ DefaultEnvironment defaultEnvironment(const Args& args) {
 // --environment sets intensity 1 and no rotation.
 void applyEnvironmentOptions(const Args& args, Scene& scene) {
   if (args.has("--environment")) {
-    const std::string source = args.get("--environment", "");
+    const std::string source = args.get("--environment");
     if (source.empty()) throw UsageError("--environment needs a .hdr file, \"sky\" or \"none\"");
     if (source == "none") {
       scene.environment.reset();
@@ -90,14 +92,20 @@ void applyEnvironmentOptions(const Args& args, Scene& scene) {
     if (!scene.environment) {
       throw UsageError("--environment-intensity needs an environment (--environment or the scene's)");
     }
-    scene.environment->intensity = args.getFloat("--environment-intensity", 1.0f, 0.0f, 1e6f);
+    scene.environment->intensity = args.getFloat("--environment-intensity", 0.0f, 1e6f);
   }
 }
 
 float applyExposureOptions(const Args& args, Scene& scene) {
-  if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", 0.0f, -kMaxEv100, kMaxEv100);
-  scene.exposure = args.getFloat("--exposure", scene.exposure, 0.0f, 1e6f);
+  if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", -kMaxEv100, kMaxEv100);
+  if (args.has("--exposure")) scene.exposure = args.getFloat("--exposure", 0.0f, 1e6f);
   return scene.displayExposure();
+}
+
+std::string builtinSceneList() {
+  std::string names;
+  for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+  return names;
 }
 
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
@@ -111,9 +119,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
     scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys,
                           params.defaultEnvironment, params.spotShare);
   } else {
-    std::string names;
-    for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
-    throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + names +
+    throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + builtinSceneList() +
                      ") and no such file exists");
   }
   validateScene(scene, nameOrPath);

@@ -10,6 +10,7 @@ namespace pbr {
 // validated. Throws SceneError with a one-line message, or UsageError for --view-angle with a scene other than
 // fresnel-floor.
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
+std::string builtinSceneList();  // "default, sphere-grid, ...", for help texts and messages
 
 // --ev100, taken with --exposure by the commands that show frames, and the exposure the post pass applies once
 // both replace the scene's (Scene::displayExposure).

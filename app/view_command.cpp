@@ -3,6 +3,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/scene_source.hpp"
 #include "app/viewer/viewer.hpp"
 #include "core/image.hpp"
@@ -12,24 +13,28 @@ namespace pbr {
 namespace {
 
 const std::vector<OptionSpec>& viewOptions() {
+  static const ViewerOptions viewer;
   static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME|FILE", "built-in scene or scene file, as for pbr render (default: default)"},
-      {"--lights", "N", "number of point lights (default: the scene's)"},
-      {"--view-angle", "DEG", "fresnel-floor: angle between the floor normal and the view (default 40)"},
+      {"--scene", "NAME|FILE", "built-in scene or scene file, as for pbr render", viewer.sceneName, ""},
+      lightsOption("the scene's"),
+      viewAngleOption(),
       spotShareOption(),
-      {"--model", "MODEL", "shading model at start: pbr (default) or blinn-phong (key M switches)"},
-      {"--culling", "C", "clustered (default) or none at start (key C switches)"},
-      {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping (default fxaa)"},
-      {"--exposure", "X", "exposure multiplier at start (default: the scene's; keys + and -)"},
+      {"--model", "MODEL", "shading model at start: pbr or blinn-phong (key M switches)", toString(viewer.frame.model),
+       ""},
+      {"--culling", "C", "clustered or none at start (key C switches)", toString(viewer.frame.culling), ""},
+      {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
+       toString(kDisplayAntiAliasing), ""},
+      {"--exposure", "X", "exposure multiplier at start (keys + and -)", "", "the scene's, 1"},
       ev100Option(),
       cameraOption(),
       environmentOption(),
       environmentIntensityOption(),
-      {"--size", "WxH", "window size in pixels (default 1280x720)"},
+      {"--size", "WxH", "window size in pixels", sizeText(viewer.size), ""},
       {"--paused", "", "start with the light animation paused (key P toggles)"},
-      {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)"},
-      {"--screenshot", "F.png", "where F12 and the end of a --frames run save the frame"},
-      {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
+      {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)", "",
+       "run until the window is closed"},
+      {"--screenshot", "F.png|F.jpg", "where F12 and the end of a --frames run save the frame"},
+      timingOption(),
       allowOutsideUrisOption(),
       strictOption(),
   };
@@ -55,20 +60,19 @@ int runView(const std::vector<std::string>& argv) {
     return 0;
   }
   ViewerOptions options;
-  options.sceneName = args.get("--scene", "default");
+  options.sceneName = args.get("--scene");
   options.sceneParams = sceneFileParams(args);
   options.sceneParams.defaultEnvironment = defaultEnvironment(args);
-  if (args.has("--lights")) options.sceneParams.lights = args.getInt("--lights", 0, 0, 1 << 20);
-  if (args.has("--view-angle")) options.sceneParams.viewAngleDeg = args.getFloat("--view-angle", 40.0f, 0.0f, 89.0f);
-  options.frame.model = parseShadingModel(args.get("--model", "pbr"));
-  options.frame.culling = parseCulling(args.get("--culling", "clustered"));
-  options.frame.aa = parseAntiAliasing(args.get("--aa", "fxaa"));
-  options.size = args.getSize("--size", options.size);
+  applySceneShapeOptions(args, options.sceneParams);
+  options.frame.model = parseShadingModel(args.get("--model"));
+  options.frame.culling = parseCulling(args.get("--culling"));
+  options.frame.aa = parseAntiAliasing(args.get("--aa"));
+  options.size = args.getSize("--size");
   options.paused = args.has("--paused");
-  const int frames = args.getInt("--frames", 0, 1, 1 << 30);
-  options.screenshot = args.get("--screenshot", "");
-  if (!options.screenshot.empty()) requirePngPath(options.screenshot);
-  options.timing = args.get("--timing", "auto");
+  const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;
+  options.screenshot = args.get("--screenshot");
+  if (!options.screenshot.empty()) ldrFileFormat(options.screenshot);
+  options.timing = args.get("--timing");
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 
   Scene scene = resolveScene(options.sceneName, options.sceneParams);

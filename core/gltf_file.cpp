@@ -1,4 +1,5 @@
 #include "core/gltf_file.hpp"
+#include "core/file_names.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -58,12 +59,6 @@ std::string firstLine(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
   return line.size() <= 160 ? line : line.substr(0, 157) + "...";
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
 }
 
 bool isSupportedExtension(const std::string& name) {

@@ -14,18 +14,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/file_names.hpp"
 #include "core/input_file.hpp"
 #include "core/output_file.hpp"
 
 namespace pbr {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 void appendToStream(void* context, void* data, int size) {
   static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
@@ -40,14 +35,33 @@ HdrFileFormat hdrFileFormat(const std::string& path) {
   throw std::invalid_argument(path + ": HDR captures must end in .exr or .pfm");
 }
 
-void requirePngPath(const std::string& path) {
-  if (lowerExtension(path) != ".png" && !isStreamTarget(path)) throw std::invalid_argument(path + ": captures must end in .png");
+LdrFileFormat ldrFileFormat(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".png" || isStreamTarget(path)) return LdrFileFormat::Png;
+  if (ext == ".jpg" || ext == ".jpeg") return LdrFileFormat::Jpeg;
+  throw std::invalid_argument(path + ": images must end in .png, .jpg or .jpeg");
 }
+
 
 void writePng(std::ostream& out, const ImageRgba8& image) {
   if (!stbi_write_png_to_func(appendToStream, &out, image.width, image.height, 4, image.pixels.data(),
                               image.width * 4)) {
     throw std::runtime_error("could not encode PNG");
+  }
+}
+
+void writeJpeg(std::ostream& out, const ImageRgba8& image) {
+  constexpr int kQuality = 95;
+  if (!stbi_write_jpg_to_func(appendToStream, &out, image.width, image.height, 4, image.pixels.data(), kQuality)) {
+    throw std::runtime_error("could not encode JPEG");
+  }
+}
+
+void writeLdr(std::ostream& out, LdrFileFormat format, const ImageRgba8& image) {
+  if (format == LdrFileFormat::Jpeg) {
+    writeJpeg(out, image);
+  } else {
+    writePng(out, image);
   }
 }
 
@@ -237,6 +251,11 @@ void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image) 
 
 void writePng(const std::string& path, const ImageRgba8& image) {
   writeOutputFile(path, [&](std::ostream& out) { writePng(out, image); });
+}
+
+void writeLdr(const std::string& path, const ImageRgba8& image) {
+  const LdrFileFormat format = ldrFileFormat(path);
+  writeOutputFile(path, [&](std::ostream& out) { writeLdr(out, format, image); });
 }
 
 void writeHdr(const std::string& path, const ImageRgbaF& image) {

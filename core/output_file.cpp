@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <streambuf>
 
+#include "core/file_names.hpp"
+
 namespace pbr {
 
 namespace fs = std::filesystem;
@@ -140,6 +142,12 @@ bool isStreamTarget(const std::string& path) {
 
 void writeOutputFile(const std::string& path, const std::function<void(std::ostream&)>& body) {
   OutputFile(path).write(body);
+}
+
+void requireExtension(const std::string& path, const std::string& extension) {
+  if (lowerExtension(path) != extension && !isStreamTarget(path)) {
+    throw std::invalid_argument(path + ": expected a " + extension + " file");
+  }
 }
 
 }  // namespace pbr

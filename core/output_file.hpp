@@ -41,6 +41,10 @@ class OutputFile {
 // True for an existing device, FIFO or socket: written in place, its name says nothing of the format wanted.
 bool isStreamTarget(const std::string& path);
 
+// Refuses (std::invalid_argument naming the file) an output whose name has another extension than the format it
+// will hold, e.g. ".json"; a stream target is taken as it is.
+void requireExtension(const std::string& path, const std::string& extension);
+
 // Opens, writes through `body` and commits in one go.
 void writeOutputFile(const std::string& path, const std::function<void(std::ostream&)>& body);
 

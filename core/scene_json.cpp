@@ -1,4 +1,5 @@
 #include "core/scene_json.hpp"
+#include "core/file_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -311,12 +312,6 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   }
   root.reportUnknownKeys(strictKeys);
   return scene;
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
 }
 
 }  // namespace

@@ -11,6 +11,8 @@ namespace pbr {
 enum class AntiAliasing { None, Fxaa };
 AntiAliasing parseAntiAliasing(const std::string& name);  // "none" | "fxaa"; throws std::invalid_argument
 const char* toString(AntiAliasing aa);
+// What the commands that write display images (PNGs, the window) use unless told otherwise.
+constexpr AntiAliasing kDisplayAntiAliasing = AntiAliasing::Fxaa;
 
 // RGBA8 display image in (sampled bilinearly), anti-aliased RGBA8 of the same size out.
 class FxaaPass {

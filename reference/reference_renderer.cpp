@@ -58,6 +58,8 @@ Geometry parseGeometry(const std::string& name) {
   throw std::invalid_argument("unknown geometry '" + name + "' (expected meshes or analytic)");
 }
 
+const char* toString(Geometry geometry) { return geometry == Geometry::Meshes ? "meshes" : "analytic"; }
+
 bool ReferenceFrame::interior(int x, int y) const {
   const int w = radiance.width, h = radiance.height;
   const int id = objectIds[size_t(y) * w + x];

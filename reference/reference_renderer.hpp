@@ -30,6 +30,7 @@ enum class Geometry {
 };
 // "meshes" or "analytic"; throws std::invalid_argument otherwise.
 Geometry parseGeometry(const std::string& name);
+const char* toString(Geometry geometry);
 
 // How the reference renders; each field is one independent axis of what is compared.
 struct ReferenceOptions {

@@ -62,6 +62,33 @@ TEST_CASE("cli: render writes PNG, PFM and EXR captures") {
   CHECK(exrBytes.compare(0, 4, "\x76\x2f\x31\x01") == 0);
 }
 
+TEST_CASE("cli: render --out F.jpg writes a JPEG of the frame the PNG holds") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string png = dir.file("f.png"), jpg = dir.file("f.JPG");
+  const std::vector<std::string> frame = {"render", "--size", "160x90", "--lights", "8", "--frames", "1"};
+  std::vector<std::string> toPng = frame, toJpg = frame;
+  toPng.insert(toPng.end(), {"--out", png});
+  toJpg.insert(toJpg.end(), {"--out", jpg});
+  REQUIRE(runPbr(dir, toPng).exitCode == 0);
+  REQUIRE(runPbr(dir, toJpg).exitCode == 0);
+  const std::string bytes = readFile(jpg);
+  REQUIRE(bytes.size() > 3);
+  CHECK(bytes.compare(0, 3, "\xff\xd8\xff") == 0);  // JPEG's start-of-image marker
+  int w = 0, h = 0, n = 0, pw = 0, ph = 0;
+  std::unique_ptr<stbi_uc, void (*)(void*)> lossy(stbi_load(jpg.c_str(), &w, &h, &n, 3), stbi_image_free);
+  std::unique_ptr<stbi_uc, void (*)(void*)> exact(stbi_load(png.c_str(), &pw, &ph, &n, 3), stbi_image_free);
+  REQUIRE(lossy != nullptr);
+  REQUIRE(exact != nullptr);
+  REQUIRE(w == pw);
+  REQUIRE(h == ph);
+  // Quality 95 with 4:2:0 chroma: small errors on average, larger only at the edges of coloured highlights.
+  double sum = 0.0;
+  for (int i = 0; i < w * h * 3; ++i) sum += std::abs(int(lossy.get()[i]) - int(exact.get()[i]));
+  MESSAGE("mean absolute difference JPEG - PNG: " << sum / (w * h * 3) << " levels");
+  CHECK(sum / (w * h * 3) < 2.0);
+}
+
 TEST_CASE("cli: render --scene FILE.json renders the file's scene") {
   PBR_REQUIRE_GL();
   const TempDir dir;

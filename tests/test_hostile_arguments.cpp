@@ -18,11 +18,16 @@ using Run = PbrRun;
 TEST_CASE("hostile outputs: an unknown capture extension fails before rendering with exit 2 naming the file") {
   const TempDir dir;
   const std::vector<std::vector<std::string>> cases = {
-      tinyRender({"--out", dir.file("f.jpg")}),
+      tinyRender({"--out", dir.file("f.gif")}),
       tinyRender({"--hdr", dir.file("f.hdr")}),
       tinyRender({"--hdr", "/dev/full"}),  // a device says nothing of the format
+      tinyRender({"--json", dir.file("f.txt")}),
       {"reference", "--size", "32x18", "--hdr", dir.file("f.png")},
-      {"view", "--frames", "1", "--screenshot", dir.file("f.jpg")},
+      {"view", "--frames", "1", "--screenshot", dir.file("f.bmp")},
+      {"bench", "--lights", "8", "--frames", "1", "--csv", dir.file("f.json")},
+      {"bench", "--lights", "8", "--frames", "1", "--json", dir.file("f.csv")},
+      {"bench", "--lights", "8", "--frames", "1", "--trace", dir.file("f.trace")},
+      {"bench-merge", dir.file("missing.json"), "--csv", dir.file("f.txt")},
   };
   for (const auto& args : cases) {
     const std::string& path = args[args.size() - 1];
@@ -43,12 +48,12 @@ TEST_CASE("hostile outputs: an option missing its value is named, not the option
   };
   const std::vector<Case> cases = {
       {{"render", "--lights", "--size", "160x90"}, "--lights expects a value (N)"},
-      {{"render", "--size", "160x90", "--out"}, "--out expects a value (F.png)"},
-      {{"render", "--out=", "--size", "160x90"}, "--out expects a value (F.png), got an empty one"},
+      {{"render", "--size", "160x90", "--out"}, "--out expects a value (F.png|F.jpg)"},
+      {{"render", "--out=", "--size", "160x90"}, "--out expects a value (F.png|F.jpg), got an empty one"},
       {{"render", "--scene", ""}, "--scene expects a value (NAME|FILE), got an empty one"},
       {{"render", "--lights", "8", "--lights=16"}, "--lights is given more than once"},
       {{"render", "--stats", "--stats"}, "--stats is given more than once"},
-      {{"bench", "--csv", "--json", "b.json"}, "--csv expects a value (F)"},
+      {{"bench", "--csv", "--json", "b.json"}, "--csv expects a value (F.csv)"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.message);

@@ -140,6 +140,6 @@ void Viewer::animateLights(float seconds) {
 
 ImageRgba8 Viewer::screenshot() const { return readbackRgba8(renderer_->ldr()); }
 
-void Viewer::saveScreenshot(const std::string& path) const { writePng(path, screenshot()); }
+void Viewer::saveScreenshot(const std::string& path) const { writeLdr(path, screenshot()); }
 
 }  // namespace pbr
