@@ -90,7 +90,7 @@ std::string gigabytes(uint64_t bytes) {
 uint64_t frameBytesPerPixel(const RendererConfig& config) {
   const uint64_t gbuffer =
       config.gbuffer == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel;
-  const uint64_t ldr = 4;
+  const uint64_t ldr = 2 * 4;  // the display image, and its copy before anti-aliasing (made on first use)
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
   return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums;
