@@ -29,6 +29,11 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--paused", "", "start with the light animation paused (key P toggles)"},
       {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)"},
       {"--screenshot", "F.png", "where F12 and the end of a --frames run save the frame"},
+      {"--screenshot-ui", "", "screenshots show the window with its overlay, not the frame alone"},
+      {"--no-ui", "", "hide the overlay (frame-time graph, light statistics, controls); the title then shows the "
+                      "pass times"},
+      {"--env-dir", "DIR", "folder of .hdr files the overlay offers (default: the environment's folder, else the "
+                           "asset folder's environments/)"},
       {"--timing", "MODE", "auto (default), gpu (timer queries) or serial (glFinish + CPU clock)"},
       allowOutsideUrisOption(),
       strictOption(),
@@ -36,10 +41,12 @@ const std::vector<OptionSpec>& viewOptions() {
   return specs;
 }
 
-const char* kKeys =
-    "\nkeys: drag to orbit, scroll to zoom, W/A/S/D/Q/E fly, M Blinn-Phong/PBR, C clustered/brute force,\n"
-    "V debug view (final, baseColor, normals, roughness, metalness, depth, clusters), +/- exposure,\n"
-    "[/] halve/double the lights, P pause the lights, F12 screenshot, Esc quit\n";
+// The viewer's keys, a line each, after the options.
+std::string keysText() {
+  std::string text = "\nkeys:\n";
+  for (const KeyHelp& key : viewerKeys()) text += "  " + std::string(key.keys) + ": " + key.action + "\n";
+  return text;
+}
 
 }  // namespace
 
@@ -49,9 +56,10 @@ int runView(const std::vector<std::string>& argv) {
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr view [options]",
                                 "Opens a window (GLFW, OpenGL 4.5) rendering the scene continuously through the same "
-                                "renderer as pbr render, with live pass timings in the title.",
+                                "renderer as pbr render, under an overlay of per-pass frame times, light statistics "
+                                "and controls.",
                                 specs)
-              << kKeys;
+              << keysText();
     return 0;
   }
   ViewerOptions options;
@@ -68,6 +76,12 @@ int runView(const std::vector<std::string>& argv) {
   const int frames = args.getInt("--frames", 0, 1, 1 << 30);
   options.screenshot = args.get("--screenshot", "");
   if (!options.screenshot.empty()) requirePngPath(options.screenshot);
+  options.screenshotOverlay = args.has("--screenshot-ui");
+  options.overlay = !args.has("--no-ui");
+  if (options.screenshotOverlay && !options.overlay) {
+    throw UsageError("--screenshot-ui shows the overlay, which --no-ui hides");
+  }
+  options.environmentFolder = args.get("--env-dir", "");
   options.timing = args.get("--timing", "auto");
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 
