@@ -12,8 +12,8 @@ namespace pbr {
 
 std::string environmentFolder(const std::string& chosen, const std::optional<EnvironmentDesc>& current) {
   if (!chosen.empty()) return chosen;
-  if (current && !current->file.empty()) return fs::absolute(current->file).parent_path().string();
-  return (fs::path(assetDir()) / "environments").string();
+  if (current && !current->file.empty()) return fs::absolute(current->file).lexically_normal().parent_path().string();
+  return fs::absolute(fs::path(assetDir()) / "environments").lexically_normal().string();
 }
 
 std::vector<std::string> hdrFiles(const std::string& folder) {

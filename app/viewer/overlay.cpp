@@ -280,9 +280,9 @@ void Overlay::camera(Viewer& viewer) {
   const Camera& c = orbit.camera();
   ImGui::Text("position  %8.3f %8.3f %8.3f", c.position.x, c.position.y, c.position.z);
   ImGui::Text("target    %8.3f %8.3f %8.3f", c.target.x, c.target.y, c.target.z);
-  ImGui::Text("yaw %.1f  pitch %.1f  distance %.3f (deg, deg, units)", glm::degrees(orbit.yaw()),
-              glm::degrees(orbit.pitch()), orbit.distance());
-  ImGui::Text("fov %.1f deg vertical, near %.3g, far %.3g", c.fovYDeg, c.nearPlane, c.farPlane);
+  ImGui::Text("yaw %.1f deg, pitch %.1f deg, distance %.3f", glm::degrees(orbit.yaw()), glm::degrees(orbit.pitch()),
+              orbit.distance());
+  ImGui::Text("fov %.1f deg (vertical), near %.3g, far %.3g", c.fovYDeg, c.nearPlane, c.farPlane);
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::InputText("##scene file", scenePath_, sizeof scenePath_);
   if (ImGui::Button("save as scene JSON")) {
