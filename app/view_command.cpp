@@ -44,7 +44,10 @@ const std::vector<OptionSpec>& viewOptions() {
 // The viewer's keys, a line each, after the options.
 std::string keysText() {
   std::string text = "\nkeys:\n";
-  for (const KeyHelp& key : viewerKeys()) text += "  " + std::string(key.keys) + ": " + key.action + "\n";
+  for (const KeyHelp& key : viewerKeys()) {
+    const std::string keys = key.keys;
+    text += "  " + keys + std::string(keys.size() < 14 ? 14 - keys.size() : 1, ' ') + key.action + "\n";
+  }
   return text;
 }
 

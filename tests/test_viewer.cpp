@@ -16,6 +16,7 @@
 
 #include "app/scene_source.hpp"
 #include "app/viewer/environment_folder.hpp"
+#include "core/assets.hpp"
 #include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
@@ -361,6 +362,20 @@ TEST_CASE("view: a built-in's own light rule is saved as its lights, and the sav
   viewer->saveScene(saved);
   const pbr::Scene reread = pbr::loadSceneFile(saved);
   CHECK(reread.lights.size() == 8);
+  checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
+}
+
+TEST_CASE("view: a glTF model given alone is saved as a scene placing it, and renders the same") {
+  const TempDir dir;
+  const auto viewer = openViewer(kSize, "", pbr::assetPath("BoxTextured/glTF-Embedded/BoxTextured.gltf"));
+  if (!viewer) return;
+  viewer->orbit(-0.5f, 0.3f);
+  const ImageRgba8 shown = show(*viewer);
+  const std::string saved = dir.file("box.json");
+  viewer->saveScene(saved);
+  const pbr::Scene reread = pbr::loadSceneFile(saved);
+  CHECK(reread.gltfFiles.size() == 1);
+  CHECK(reread.environment.has_value());  // the sky the model was given, written out
   checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
 }
 
