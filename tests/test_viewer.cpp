@@ -17,6 +17,7 @@
 #include "app/scene_source.hpp"
 #include "app/viewer/environment_folder.hpp"
 #include "core/assets.hpp"
+#include "core/json_file.hpp"
 #include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
@@ -335,6 +336,7 @@ TEST_CASE("view: a scene saved from the viewer renders headless as the viewer sh
   viewer->orbit(0.6f, -0.2f);
   viewer->zoom(0.8f);
   viewer->setExposure(viewer->frameOptions().exposure * 1.5f);
+  viewer->setLightCount(64);
   const ImageRgba8 shown = show(*viewer);
   const std::string saved = dir.file("saved.json");
   viewer->saveScene(saved);
@@ -347,7 +349,11 @@ TEST_CASE("view: a scene saved from the viewer renders headless as the viewer sh
   }
   CHECK(reread.camera.fovYDeg == c.fovYDeg);
   CHECK(reread.displayExposure() == doctest::Approx(viewer->frameOptions().exposure).epsilon(1e-6));
-  CHECK(reread.lights.size() == viewer->lightCount());
+  CHECK(reread.lights.size() == 64);
+  // The scene's generator stays a generator: its count changes, its lights are not listed.
+  const nlohmann::json document = pbr::readJsonFile(saved);
+  CHECK(document["random_lights"]["count"] == 64);
+  CHECK(document.value("lights", nlohmann::json::array()).size() < 8);
   checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
 }
 

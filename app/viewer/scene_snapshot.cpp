@@ -137,7 +137,8 @@ void writeSceneSnapshot(const std::string& path, const SceneSnapshot& shot) {
       }
     }
     if (document.contains("random_lights") && document["random_lights"].is_object()) {
-      document["random_lights"]["count"] = shot.scene.lights.size();
+      // The count as --lights gave it, which counts the random lights alone, not those the file lists.
+      if (shot.params.lights) document["random_lights"]["count"] = *shot.params.lights;
       if (shot.params.spotShare) document["random_lights"]["spot_share"] = number(*shot.params.spotShare);
     }
   } else {
