@@ -34,6 +34,11 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)", "",
        "run until the window is closed"},
       {"--screenshot", "F.png|F.jpg", "where F12 and the end of a --frames run save the frame"},
+      {"--screenshot-ui", "", "screenshots show the window with its overlay, not the frame alone"},
+      {"--no-ui", "", "hide the overlay (frame-time graph, light statistics, controls); the title then shows the "
+                      "pass times"},
+      {"--env-dir", "DIR", "folder of .hdr files the overlay offers", "",
+       "the environment's folder, else the asset folder's environments/"},
       timingOption(),
       allowOutsideUrisOption(),
       strictOption(),
@@ -41,10 +46,15 @@ const std::vector<OptionSpec>& viewOptions() {
   return specs;
 }
 
-const char* kKeys =
-    "\nkeys: drag to orbit, scroll to zoom, W/A/S/D/Q/E fly, M Blinn-Phong/PBR, C clustered/brute force,\n"
-    "V debug view (final, baseColor, normals, roughness, metalness, depth, clusters), +/- exposure,\n"
-    "[/] halve/double the lights, P pause the lights, F12 screenshot, Esc quit\n";
+// The viewer's keys, a line each, after the options.
+std::string keysText() {
+  std::string text = "\nkeys:\n";
+  for (const KeyHelp& key : viewerKeys()) {
+    const std::string keys = key.keys;
+    text += "  " + keys + std::string(keys.size() < 14 ? 14 - keys.size() : 1, ' ') + key.action + "\n";
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -54,9 +64,10 @@ int runView(const std::vector<std::string>& argv) {
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr view [options]",
                                 "Opens a window (GLFW, OpenGL 4.5) rendering the scene continuously through the same "
-                                "renderer as pbr render, with live pass timings in the title.",
+                                "renderer as pbr render, under an overlay of per-pass frame times, light statistics "
+                                "and controls.",
                                 specs)
-              << kKeys;
+              << keysText();
     return 0;
   }
   ViewerOptions options;
@@ -72,6 +83,12 @@ int runView(const std::vector<std::string>& argv) {
   const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;
   options.screenshot = args.get("--screenshot");
   if (!options.screenshot.empty()) ldrFileFormat(options.screenshot);
+  options.screenshotOverlay = args.has("--screenshot-ui");
+  options.overlay = !args.has("--no-ui");
+  if (options.screenshotOverlay && !options.overlay) {
+    throw UsageError("--screenshot-ui shows the overlay, which --no-ui hides");
+  }
+  options.environmentFolder = args.get("--env-dir");
   options.timing = args.get("--timing");
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 

@@ -8,11 +8,17 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/scene_source.hpp"
+#include "app/viewer/environment_folder.hpp"
+#include "core/assets.hpp"
+#include "core/json_file.hpp"
+#include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
 using pbr::ImageRgba8;
@@ -24,15 +30,18 @@ namespace {
 
 constexpr glm::ivec2 kSize{160, 90};
 
-// A paused viewer of the default scene, so that its lights stay where the headless render has them. Null (and the
-// case failed, unless PBR_ALLOW_NO_GL=1) when no window can be opened.
-std::unique_ptr<Viewer> openViewer(glm::ivec2 size = kSize, const std::string& screenshot = "") {
+// A paused viewer of a scene (the default one unless named), so that its lights stay where the headless render has
+// them, with its overlay. Null (and the case failed, unless PBR_ALLOW_NO_GL=1) when no window can be opened.
+std::unique_ptr<Viewer> openViewer(glm::ivec2 size = kSize, const std::string& screenshot = "",
+                                   const std::string& sceneName = "default", const pbr::SceneParams& params = {}) {
   pbr::ViewerOptions options;
   options.size = size;
   options.screenshot = screenshot;
   options.paused = true;
+  options.sceneName = sceneName;
+  options.sceneParams = params;
   pbr::Scene scene = pbr::resolveScene(options.sceneName, options.sceneParams);
-  options.frame.exposure = scene.exposure;
+  options.frame.exposure = scene.displayExposure();
   try {
     return std::make_unique<Viewer>(options, std::move(scene));
   } catch (const pbr::ContextError& e) {
@@ -221,16 +230,183 @@ TEST_CASE("view: a resized window rebuilds the G-buffer and the cluster grid, an
   CHECK(after.programsCompiled == before.programsCompiled);
 }
 
-TEST_CASE("view: pbr view --frames runs unattended and writes a screenshot matching pbr render") {
-  const TempDir dir;
-  const std::string shot = dir.file("s.png");
-  const pbr::test::PbrRun run =
-      runPbr(dir, {"view", "--frames", "10", "--size", "160x90", "--paused", "--screenshot", shot});
+// `pbr view --frames 10 --paused` at `size` with `extra` arguments, writing its screenshot to `shot`; false when no
+// window could be opened and PBR_ALLOW_NO_GL=1 allows that.
+bool runView(const TempDir& dir, glm::ivec2 size, const std::string& shot, const std::vector<std::string>& extra) {
+  const std::string sizeText = std::to_string(size.x) + "x" + std::to_string(size.y);
+  std::vector<std::string> args = {"view", "--frames", "10", "--size", sizeText, "--paused", "--screenshot", shot};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const pbr::test::PbrRun run = runPbr(dir, args);
   if (run.exitCode == 3 && std::getenv("PBR_ALLOW_NO_GL") && std::strcmp(std::getenv("PBR_ALLOW_NO_GL"), "1") == 0) {
     MESSAGE("no window (" << run.err << "); allowed by PBR_ALLOW_NO_GL=1");
-    return;
+    return false;
   }
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   CHECK(run.out.find("wrote " + shot) != std::string::npos);
-  checkMatches(pbr::readPng(shot), headless(dir, kSize, {}, "fxaa"));
+  return true;
+}
+
+TEST_CASE("view: pbr view --frames runs unattended and writes a screenshot matching pbr render") {
+  const TempDir dir;
+  // The screenshot is the frame alone whether the overlay is shown or hidden.
+  for (const std::vector<std::string>& ui : {std::vector<std::string>{}, {"--no-ui"}}) {
+    CAPTURE(ui.size());
+    const std::string shot = dir.file("s.png");
+    if (!runView(dir, kSize, shot, ui)) return;
+    checkMatches(pbr::readPng(shot), headless(dir, kSize, {}, "fxaa"));
+  }
+}
+
+TEST_CASE("view: --screenshot-ui shows the overlay's panels at the top corners and the frame between them") {
+  const TempDir dir;
+  const glm::ivec2 size{960, 400};
+  const std::string frame = dir.file("frame.png"), window = dir.file("window.png");
+  if (!runView(dir, size, frame, {"--no-ui"}) || !runView(dir, size, window, {"--screenshot-ui"})) return;
+  const ImageRgba8 a = pbr::readPng(frame), b = pbr::readPng(window);
+  REQUIRE(a.width == b.width);
+  REQUIRE(a.height == b.height);
+  const auto region = [](const ImageRgba8& image, int x0, int x1, int y0, int y1) {
+    ImageRgba8 part;
+    part.width = x1 - x0;
+    part.height = y1 - y0;
+    for (int y = y0; y < y1; ++y) {
+      const auto row = image.pixels.begin() + (std::ptrdiff_t(y) * image.width + x0) * 4;
+      part.pixels.insert(part.pixels.end(), row, row + std::ptrdiff_t(part.width) * 4);
+    }
+    return part;
+  };
+  // The panels are 380 pixels wide, 8 from the edges: between them the frame is untouched, under them their
+  // backgrounds, text and graph replace the scene.
+  CHECK(region(a, 400, 560, 0, size.y).pixels == region(b, 400, 560, 0, size.y).pixels);
+  CHECK(compare(region(a, 8, 388, 8, 100), region(b, 8, 388, 8, 100)).mean > 10.0);
+  CHECK(compare(region(a, 572, 952, 8, 100), region(b, 572, 952, 8, 100)).mean > 10.0);
+}
+
+TEST_CASE("view: the overlay runs, graphs every pass and takes the model and culling through the viewer's handlers") {
+  const auto viewer = openViewer();
+  if (!viewer) return;
+  REQUIRE(viewer->overlay() != nullptr);
+  const ImageRgba8 pbrClustered = show(*viewer, 10);
+  CHECK(viewer->framesRendered() == 10);
+  const pbr::PassHistory& history = viewer->passHistory();
+  CHECK(!history.frames().empty());
+  CHECK(history.frames().size() <= 10);
+  for (const char* pass : {"gbuffer", "cluster", "lighting"}) {
+    CAPTURE(pass);
+    CHECK(std::find(history.names().begin(), history.names().end(), pass) != history.names().end());
+  }
+  CHECK(viewer->lightStats().lights == 256);
+  CHECK(viewer->lightStats().clusters > 0);
+
+  // The handlers the overlay's radio buttons and combos call, as the keys do.
+  viewer->setCulling(pbr::Culling::None);
+  CHECK(std::string(toString(viewer->frameOptions().culling)) == "none");
+  CHECK(show(*viewer).pixels == pbrClustered.pixels);
+  viewer->setModel(pbr::ShadingModel::BlinnPhong);
+  CHECK(std::string(toString(viewer->frameOptions().model)) == "blinn-phong");
+  CHECK(compare(show(*viewer), pbrClustered).mean > 5.0);
+  viewer->setModel(pbr::ShadingModel::Pbr);
+  viewer->setCulling(pbr::Culling::Clustered);
+  CHECK(show(*viewer).pixels == pbrClustered.pixels);
+  // Brute force has no clusters to count.
+  viewer->setCulling(pbr::Culling::None);
+  show(*viewer, 1);
+  CHECK(viewer->lightStats().clusters == 0);
+  viewer->setCulling(pbr::Culling::Clustered);
+
+  viewer->setVariant(pbr::parseShadingVariant("ndf=beckmann"));
+  CHECK(show(*viewer).pixels != pbrClustered.pixels);
+  viewer->setVariant({});
+  CHECK(show(*viewer).pixels == pbrClustered.pixels);
+
+  // The overlay's time graph counts a pass once per frame and never more than its window.
+  for (int i = 0; i < 5; ++i) viewer->frame();
+  CHECK(viewer->passHistory().frames().size() <= pbr::PassHistory::kFrames);
+  // What the pass history's last frame holds: each pass at most once.
+  const auto& last = viewer->passHistory().frames().back().passes;
+  for (size_t i = 0; i < last.size(); ++i) {
+    for (size_t j = i + 1; j < last.size(); ++j) CHECK(last[i].first != last[j].first);
+  }
+}
+
+TEST_CASE("view: a scene saved from the viewer renders headless as the viewer shows it") {
+  const TempDir dir;
+  const auto viewer = openViewer();
+  if (!viewer) return;
+  viewer->orbit(0.6f, -0.2f);
+  viewer->zoom(0.8f);
+  viewer->setExposure(viewer->frameOptions().exposure * 1.5f);
+  viewer->setLightCount(64);
+  const ImageRgba8 shown = show(*viewer);
+  const std::string saved = dir.file("saved.json");
+  viewer->saveScene(saved);
+
+  const pbr::Scene reread = pbr::loadSceneFile(saved);
+  const pbr::Camera& c = viewer->camera().camera();
+  for (int i = 0; i < 3; ++i) {
+    CHECK(reread.camera.position[i] == doctest::Approx(c.position[i]).epsilon(1e-6));
+    CHECK(reread.camera.target[i] == doctest::Approx(c.target[i]).epsilon(1e-6));
+  }
+  CHECK(reread.camera.fovYDeg == c.fovYDeg);
+  CHECK(reread.displayExposure() == doctest::Approx(viewer->frameOptions().exposure).epsilon(1e-6));
+  CHECK(reread.lights.size() == 64);
+  // The scene's generator stays a generator: its count changes, its lights are not listed.
+  const nlohmann::json document = pbr::readJsonFile(saved);
+  CHECK(document["random_lights"]["count"] == 64);
+  CHECK(document.value("lights", nlohmann::json::array()).size() < 8);
+  checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
+}
+
+TEST_CASE("view: a built-in's own light rule is saved as its lights, and the saved scene renders the same") {
+  const TempDir dir;
+  pbr::SceneParams params;
+  params.lights = 8;  // sphere-grid's rule: random lights in place of its four corner lights
+  const auto viewer = openViewer(kSize, "", "sphere-grid", params);
+  if (!viewer) return;
+  const ImageRgba8 shown = show(*viewer);
+  const std::string saved = dir.file("grid.json");
+  viewer->saveScene(saved);
+  const pbr::Scene reread = pbr::loadSceneFile(saved);
+  CHECK(reread.lights.size() == 8);
+  checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
+}
+
+TEST_CASE("view: a glTF model given alone is saved as a scene placing it, and renders the same") {
+  const TempDir dir;
+  const auto viewer = openViewer(kSize, "", pbr::assetPath("BoxTextured/glTF-Embedded/BoxTextured.gltf"));
+  if (!viewer) return;
+  viewer->orbit(-0.5f, 0.3f);
+  const ImageRgba8 shown = show(*viewer);
+  const std::string saved = dir.file("box.json");
+  viewer->saveScene(saved);
+  const pbr::Scene reread = pbr::loadSceneFile(saved);
+  CHECK(reread.gltfFiles.size() == 1);
+  CHECK(reread.environment.has_value());  // the sky the model was given, written out
+  checkMatches(shown, headless(dir, kSize, {"--scene", saved}));
+}
+
+TEST_CASE("view: the environment picker lists .hdr files and its choice relights the frame") {
+  const TempDir dir;
+  for (const char* name : {"b.hdr", "a.HDR", "notes.txt"}) std::ofstream(dir.file(name)) << "not an image";
+  std::filesystem::create_directory(dir.file("folder.hdr"));
+  const std::vector<std::string> files = pbr::hdrFiles(dir.file(""));
+  REQUIRE(files.size() == 2);
+  CHECK(std::filesystem::path(files[0]).filename() == "a.HDR");
+  CHECK(std::filesystem::path(files[1]).filename() == "b.hdr");
+  CHECK(pbr::environmentFolder("", std::nullopt).find("environments") != std::string::npos);
+
+  const auto viewer = openViewer();
+  if (!viewer) return;
+  const ImageRgba8 unlit = show(*viewer);
+  CHECK(viewer->setEnvironment("sky").empty());
+  REQUIRE(viewer->scene().environment.has_value());
+  CHECK(compare(show(*viewer), unlit).mean > 2.0);
+  // A file that is no image keeps the sky, and says why naming it.
+  const std::string message = viewer->setEnvironment(files[1]);
+  CHECK(message.find("b.hdr") != std::string::npos);
+  CHECK(viewer->scene().environment.has_value());
+  CHECK(viewer->scene().environment->file.empty());
+  CHECK(viewer->setEnvironment("none").empty());
+  CHECK_FALSE(viewer->scene().environment.has_value());
+  CHECK(show(*viewer).pixels == unlit.pixels);
 }

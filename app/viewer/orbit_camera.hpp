@@ -13,6 +13,9 @@ class OrbitCamera {
   explicit OrbitCamera(const Camera& start);
 
   const Camera& camera() const { return camera_; }
+  float yaw() const { return yaw_; }      // radians about world Y, 0 looking down -Z
+  float pitch() const { return pitch_; }  // radians above the target's horizontal plane
+  float distance() const { return distance_; }
   // Turns about the target; radians, pitch kept off the poles so that `up` stays usable.
   void orbit(float yawDelta, float pitchDelta);
   // Moves the eye towards the target (factor < 1) or away from it (> 1).

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <optional>
 
+#include "app/viewer/overlay.hpp"
+#include "app/viewer/scene_snapshot.hpp"
 #include "core/readback.hpp"
 
 namespace pbr {
@@ -14,6 +18,7 @@ namespace {
 constexpr float kLightOrbitRadiansPerSecond = 0.3f;
 // A slow frame (shader compilation, a software rasterizer) must not jump the camera or the lights.
 constexpr float kMaxStepSeconds = 0.1f;
+constexpr double kStatsIntervalMs = 250.0;  // live to the eye, and the GPU waited for only four times a second
 }  // namespace
 
 const char* toString(ViewerView view) {
@@ -41,8 +46,11 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
   attachPresentSource();
   pendingSize_ = size;
   installCallbacks();
-  lastFrame_ = lastTitle_ = Clock::now();
+  if (options_.overlay) overlay_ = std::make_unique<Overlay>(window_.window());
+  lastFrame_ = lastTitle_ = lastStats_ = Clock::now();
 }
+
+Viewer::~Viewer() = default;
 
 void Viewer::resize(int width, int height) {
   presentSource_.reset();
@@ -58,12 +66,14 @@ void Viewer::attachPresentSource() {
 }
 
 void Viewer::run(int frames) {
-  while (!window_.shouldClose() && (frames <= 0 || framesRendered_ < frames)) frame();
-  checkGlError("the viewer");
-  if (frames > 0 && !options_.screenshot.empty()) {
-    saveScreenshot(options_.screenshot);
-    std::printf("wrote %s\n", options_.screenshot.c_str());
+  const bool shotAtEnd = frames > 0 && !options_.screenshot.empty();
+  while (!window_.shouldClose() && (frames <= 0 || framesRendered_ < frames)) {
+    // The window's picture is taken while the last frame presents; the frame alone is still there afterwards.
+    if (shotAtEnd && options_.screenshotOverlay && framesRendered_ == frames - 1) takeScreenshot(options_.screenshot);
+    frame();
   }
+  checkGlError("the viewer");
+  if (shotAtEnd && !options_.screenshotOverlay) takeScreenshot(options_.screenshot);
 }
 
 void Viewer::frame() {
@@ -89,40 +99,87 @@ void Viewer::frame() {
         static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
   }
   renderer_->renderFrame(frameOptions, profiler_);
-  present();
   ++framesRendered_;
   recordTimings(frameMs);
+  if (overlay_) sampleLightStats();
+  present();
   updateTitle();
+}
+
+void Viewer::sampleLightStats() {
+  const Clock::time_point now = Clock::now();
+  if (std::chrono::duration<double, std::milli>(now - lastStats_).count() < kStatsIntervalMs) return;
+  lastStats_ = now;
+  lightStats_ = renderer_->lightStats();
 }
 
 void Viewer::recordTimings(double frameMs) {
   constexpr size_t kWindow = 60;  // frames in the medians: a second or two at interactive rates
   const FrameOptions& f = options_.frame;
   const glm::ivec2 size = frameSize();
-  const std::string configuration = std::string(toString(f.model)) + toString(f.culling) + toString(view_) +
-                                    std::to_string(lightCount()) + "@" + std::to_string(size.x) + "x" +
-                                    std::to_string(size.y);
+  const std::string configuration = std::string(toString(f.model)) + toString(f.variant) + toString(f.culling) +
+                                    toString(view_) + std::to_string(lightCount()) + "@" + std::to_string(size.x) +
+                                    "x" + std::to_string(size.y) + (f.stats ? " counters " : " ") +
+                                    (scene_.environment ? scene_.environment->file + "|" : "none");
   const int thisFrame = framesRendered_ - 1;
   if (configuration != lastConfiguration_) {
     lastConfiguration_ = configuration;
+    lastStats_ = Clock::time_point{};  // the overlay's light statistics follow a change at once
     warmFrom_ = thisFrame + 2;
     warmTimings_.clear();
     warmFrameMs_.clear();
   }
   if (thisFrame >= warmFrom_) warmFrameMs_.push_back(frameMs);
   for (FrameTiming& t : profiler_.takeResults(false)) {
+    passHistory_.add(t);
     if (t.frame >= warmFrom_) warmTimings_.push_back(std::move(t));
   }
   while (warmTimings_.size() > kWindow) warmTimings_.pop_front();
   while (warmFrameMs_.size() > kWindow) warmFrameMs_.pop_front();
 }
 
+// The overlay is drawn over the blitted frame in the window's own framebuffer, after the profiler's frame has
+// ended: it is in no pass's time and in no screenshot of the frame alone.
 void Viewer::present() {
   const glm::ivec2 size = frameSize();
   const glm::ivec2 target = window_.framebufferSize();
   glBlitNamedFramebuffer(presentSource_->id(), 0, 0, 0, size.x, size.y, 0, 0, target.x, target.y,
                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (overlay_) overlay_->draw(*this);
+  if (!pendingWindowShot_.empty()) {
+    const std::string path = std::move(pendingWindowShot_);
+    pendingWindowShot_.clear();
+    try {
+      writeLdr(path, readWindow());
+      std::printf("wrote %s\n", path.c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pbr view: %s\n", e.what());
+    }
+  }
   window_.swapBuffers();
+}
+
+ImageRgba8 Viewer::readWindow() const {
+  const glm::ivec2 size = window_.framebufferSize();
+  ImageRgba8 image;
+  image.width = size.x;
+  image.height = size.y;
+  image.pixels.resize(size_t(size.x) * size_t(size.y) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  // GL rows run bottom-up; PNG rows top-down. The window has no alpha to speak of: opaque, as the frame is.
+  const size_t row = size_t(size.x) * 4;
+  std::vector<uint8_t> flipped(image.pixels.size());
+  for (int y = 0; y < size.y; ++y) {
+    std::copy_n(image.pixels.begin() + static_cast<std::ptrdiff_t>(size_t(y) * row), row,
+                flipped.begin() + static_cast<std::ptrdiff_t>(size_t(size.y - 1 - y) * row));
+  }
+  for (size_t i = 3; i < flipped.size(); i += 4) flipped[i] = 255;
+  image.pixels = std::move(flipped);
+  return image;
 }
 
 void Viewer::animateLights(float seconds) {
@@ -141,5 +198,50 @@ void Viewer::animateLights(float seconds) {
 ImageRgba8 Viewer::screenshot() const { return readbackRgba8(renderer_->ldr()); }
 
 void Viewer::saveScreenshot(const std::string& path) const { writeLdr(path, screenshot()); }
+
+void Viewer::takeScreenshot(const std::string& path) {
+  if (options_.screenshotOverlay) {
+    pendingWindowShot_ = path;
+    return;
+  }
+  try {
+    saveScreenshot(path);
+    std::printf("wrote %s\n", path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pbr view: %s\n", e.what());
+  }
+}
+
+void Viewer::saveScene(const std::string& path) const {
+  writeSceneSnapshot(path, {options_.sceneName, options_.sceneParams, scene_, camera_.camera(),
+                            options_.frame.exposure});
+}
+
+std::string Viewer::setEnvironment(const std::string& choice) {
+  const std::optional<EnvironmentDesc> previous = scene_.environment;
+  if (choice == "none") {
+    scene_.environment.reset();
+  } else {
+    // The intensity and rotation of the scene's environment stay with a new image; the sky keeps its own.
+    EnvironmentDesc next = previous.value_or(EnvironmentDesc{});
+    next.file = choice == "sky" ? "" : choice;
+    scene_.environment = next;
+  }
+  const glm::ivec2 size = frameSize();
+  presentSource_.reset();
+  renderer_.reset();
+  std::string error;
+  try {
+    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+  } catch (const std::exception& e) {
+    error = e.what();
+    scene_.environment = previous;
+    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+  }
+  attachPresentSource();
+  renderer_->setLights(movedLights_);
+  if (!error.empty()) std::fprintf(stderr, "pbr view: %s\n", error.c_str());
+  return error;
+}
 
 }  // namespace pbr

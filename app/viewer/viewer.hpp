@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/viewer/orbit_camera.hpp"
+#include "app/viewer/pass_history.hpp"
 #include "renderer/renderer.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/window_context.hpp"
@@ -25,14 +26,29 @@ struct ViewerOptions {
   FrameOptions frame;          // model, culling, exposure at start
   bool paused = false;         // light animation
   std::string screenshot;      // F12 and the end of a --frames run write here; empty: F12 numbers its files
+  bool screenshotOverlay = false;  // screenshots show the window, overlay included, rather than the frame alone
   std::string timing = "auto";
+  bool overlay = true;             // the Dear ImGui overlay (--no-ui hides it)
+  std::string environmentFolder;   // the overlay's .hdr picker; empty: the current environment's folder
 };
 
+class Overlay;
+
+// One line per key or gesture of the viewer, as `pbr view --help` and the overlay list them.
+struct KeyHelp {
+  const char* keys;
+  const char* action;
+};
+const std::vector<KeyHelp>& viewerKeys();
+
 // An interactive window over the same Renderer as the headless path: an orbit camera, runtime switches of the
-// shading model, culling and debug view, animated lights, and the frame and pass times in the title.
+// shading model, culling and debug view, animated lights, and an overlay of pass times, light statistics and
+// controls (or, without it, the times in the title). Keys and the overlay's widgets change the view through the
+// same handlers below.
 class Viewer {
  public:
   Viewer(const ViewerOptions& options, Scene scene);
+  ~Viewer();
   Viewer(const Viewer&) = delete;
   Viewer& operator=(const Viewer&) = delete;
 
@@ -42,20 +58,53 @@ class Viewer {
   void frame();
   // The action of one key press (a GLFW key code), as the window's key callback calls it; other keys do nothing.
   void handleKey(int key);
+
+  // The handlers of the keys and the overlay's widgets.
+  void setModel(ShadingModel model) { options_.frame.model = model; }
+  void setVariant(const ShadingVariant& variant) { options_.frame.variant = variant; }
+  void setCulling(Culling culling) { options_.frame.culling = culling; }
+  void setView(ViewerView view) { view_ = view; }
+  void setExposure(float exposure) { options_.frame.exposure = exposure; }
+  void setPaused(bool paused) { options_.paused = paused; }
+  void setGpuCounters(bool on) { options_.frame.stats = on; }
+  // New random lights of the scene's own generator, as `--lights count` would have made them; a scene that cannot
+  // (a file without random_lights) keeps its lights and says why on stderr.
+  void setLightCount(size_t count);
+  // "none", "sky" or a Radiance .hdr file: rebuilds the renderer around the new environment (meshes upload and
+  // programs compile again). A file that cannot be used keeps the old environment; the message is returned.
+  std::string setEnvironment(const std::string& choice);
+  void orbit(float yawDelta, float pitchDelta) { camera_.orbit(yawDelta, pitchDelta); }
+  void zoom(float factor) { camera_.zoom(factor); }
+  // A scene file `pbr render --scene` shows this frame with (scene_snapshot.hpp); throws SceneError when it
+  // cannot be written.
+  void saveScene(const std::string& path) const;
   // Rebuilds what the frame size owns (G-buffer, HDR and LDR targets, cluster grid) at `width` x `height`; the
   // scene's uploads, IBL maps and compiled programs stay.
   void resize(int width, int height);
 
-  ImageRgba8 screenshot() const;  // what the window shows, rows top-down
+  ImageRgba8 screenshot() const;  // the renderer's frame, without the overlay, rows top-down
   void saveScreenshot(const std::string& path) const;
+  // F12 and the end of a --frames run: the frame now, or with screenshotOverlay the window as the next frame
+  // presents it.
+  void takeScreenshot(const std::string& path);
 
   const FrameOptions& frameOptions() const { return options_.frame; }
+  const ViewerOptions& options() const { return options_; }
   ViewerView view() const { return view_; }
   bool lightsPaused() const { return options_.paused; }
   size_t lightCount() const { return scene_.lights.size(); }
+  const Scene& scene() const { return scene_; }
+  const OrbitCamera& camera() const { return camera_; }
   glm::ivec2 frameSize() const { return {renderer_->width(), renderer_->height()}; }
   const Renderer& renderer() const { return *renderer_; }
+  TimingMode timingMode() const { return profiler_.mode(); }
   WindowContext& window() { return window_; }
+  const Overlay* overlay() const { return overlay_.get(); }
+  const PassHistory& passHistory() const { return passHistory_; }
+  // The renderer's light statistics, read at most every quarter second while the overlay shows them: reading
+  // them waits for the GPU.
+  const LightStats& lightStats() const { return lightStats_; }
+  int framesRendered() const { return framesRendered_; }
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -63,11 +112,12 @@ class Viewer {
   void installCallbacks();
   void flyFromHeldKeys(float seconds);
   void animateLights(float seconds);
-  void setLightCount(size_t count);
   void attachPresentSource();
   void present();
+  ImageRgba8 readWindow() const;
   void updateTitle();
   void recordTimings(double frameMs);
+  void sampleLightStats();
 
   ViewerOptions options_;
   WindowContext window_;  // declared first: every GL object below goes while its context still exists
@@ -77,6 +127,7 @@ class Viewer {
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<Framebuffer> presentSource_;  // wraps the renderer's LDR texture for the blit to the window
   Profiler profiler_;
+  std::unique_ptr<Overlay> overlay_;  // after the callbacks it chains to, before the context goes
   ViewerView view_ = ViewerView::Final;
   float lightTime_ = 0.0f;  // seconds of animation so far
   std::vector<PointLight> movedLights_;
@@ -85,9 +136,12 @@ class Viewer {
   glm::dvec2 lastCursor_{0.0};
   int framesRendered_ = 0;
   int screenshotsSaved_ = 0;
-  Clock::time_point lastFrame_, lastTitle_;
-  // Warm frames only: a frame after a change of model, culling, view, light count or size compiles shaders and
-  // resizes lists, so timings restart two frames after any change.
+  std::string pendingWindowShot_;  // saved from the back buffer once the next frame's overlay is drawn
+  Clock::time_point lastFrame_, lastTitle_, lastStats_;
+  PassHistory passHistory_;  // every frame's pass times, warm or not: the graph shows what a change costs
+  LightStats lightStats_;
+  // Warm frames only: a frame after a change of model, variant, culling, view, light count, environment or size
+  // compiles shaders and resizes lists, so timings restart two frames after any change.
   std::deque<FrameTiming> warmTimings_;
   std::deque<double> warmFrameMs_;  // wall time between presented warm frames
   std::string lastConfiguration_;

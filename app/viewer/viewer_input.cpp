@@ -10,6 +10,7 @@
 #include <exception>
 
 #include "app/scene_source.hpp"
+#include "app/viewer/overlay.hpp"
 
 namespace pbr {
 
@@ -25,11 +26,30 @@ Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindo
 
 }  // namespace
 
+const std::vector<KeyHelp>& viewerKeys() {
+  static const std::vector<KeyHelp> keys = {
+      {"drag, scroll", "orbit, zoom"},
+      {"W/A/S/D/Q/E", "fly"},
+      {"M", "Blinn-Phong / PBR"},
+      {"C", "clustered / brute force"},
+      {"V", "debug view: final, baseColor, normals, roughness, metalness, depth, clusters"},
+      {"+ / -", "exposure by half a stop"},
+      {"[ / ]", "halve / double the lights"},
+      {"P", "pause the lights"},
+      {"F12", "screenshot"},
+      {"Esc", "quit"},
+  };
+  return keys;
+}
+
 void Viewer::installCallbacks() {
   GLFWwindow* w = window_.window();
   glfwSetWindowUserPointer(w, this);
+  // The overlay chains these callbacks behind its own and asks for the input that lands on its widgets.
   glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int, int action, int) {
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) viewerOf(window).handleKey(key);
+    Viewer& v = viewerOf(window);
+    if (v.overlay_ && v.overlay_->wantsKeyboard()) return;
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) v.handleKey(key);
   });
   glfwSetFramebufferSizeCallback(w, [](GLFWwindow* window, int width, int height) {
     viewerOf(window).pendingSize_ = {width, height};
@@ -37,7 +57,7 @@ void Viewer::installCallbacks() {
   glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int) {
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
     Viewer& v = viewerOf(window);
-    v.dragging_ = action == GLFW_PRESS;
+    v.dragging_ = action == GLFW_PRESS && !(v.overlay_ && v.overlay_->wantsMouse());
     glfwGetCursorPos(window, &v.lastCursor_.x, &v.lastCursor_.y);
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) {
@@ -46,15 +66,17 @@ void Viewer::installCallbacks() {
     const glm::dvec2 delta = glm::dvec2(x, y) - v.lastCursor_;
     v.lastCursor_ = {x, y};
     // Dragging right turns the scene right, dragging down tilts it towards the viewer.
-    v.camera_.orbit(-static_cast<float>(delta.x) * kOrbitRadiansPerPixel,
-                    static_cast<float>(delta.y) * kOrbitRadiansPerPixel);
+    v.orbit(-static_cast<float>(delta.x) * kOrbitRadiansPerPixel, static_cast<float>(delta.y) * kOrbitRadiansPerPixel);
   });
   glfwSetScrollCallback(w, [](GLFWwindow* window, double, double y) {
-    viewerOf(window).camera_.zoom(std::pow(kZoomPerScrollStep, static_cast<float>(y)));
+    Viewer& v = viewerOf(window);
+    if (v.overlay_ && v.overlay_->wantsMouse()) return;
+    v.zoom(std::pow(kZoomPerScrollStep, static_cast<float>(y)));
   });
 }
 
 void Viewer::flyFromHeldKeys(float seconds) {
+  if (overlay_ && overlay_->wantsKeyboard()) return;
   GLFWwindow* w = window_.window();
   const auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
   const glm::vec3 direction(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
@@ -63,24 +85,24 @@ void Viewer::flyFromHeldKeys(float seconds) {
 }
 
 void Viewer::handleKey(int key) {
-  FrameOptions& f = options_.frame;
+  const FrameOptions& f = options_.frame;
   switch (key) {
     case GLFW_KEY_M:
-      f.model = f.model == ShadingModel::Pbr ? ShadingModel::BlinnPhong : ShadingModel::Pbr;
+      setModel(f.model == ShadingModel::Pbr ? ShadingModel::BlinnPhong : ShadingModel::Pbr);
       break;
     case GLFW_KEY_C:
-      f.culling = f.culling == Culling::Clustered ? Culling::None : Culling::Clustered;
+      setCulling(f.culling == Culling::Clustered ? Culling::None : Culling::Clustered);
       break;
     case GLFW_KEY_V:
-      view_ = view_ == ViewerView::Clusters ? ViewerView::Final : static_cast<ViewerView>(static_cast<int>(view_) + 1);
+      setView(view_ == ViewerView::Clusters ? ViewerView::Final : static_cast<ViewerView>(static_cast<int>(view_) + 1));
       break;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
-      f.exposure *= kExposureStep;
+      setExposure(f.exposure * kExposureStep);
       break;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
-      f.exposure /= kExposureStep;
+      setExposure(f.exposure / kExposureStep);
       break;
     case GLFW_KEY_LEFT_BRACKET:
       setLightCount(std::max<size_t>(lightCount() / 2, 1));
@@ -89,20 +111,12 @@ void Viewer::handleKey(int key) {
       setLightCount(std::min(std::max<size_t>(lightCount() * 2, 1), kMaxLights));
       break;
     case GLFW_KEY_P:
-      options_.paused = !options_.paused;
+      setPaused(!options_.paused);
       break;
-    case GLFW_KEY_F12: {
-      const std::string path = options_.screenshot.empty()
-                                   ? "pbr-view-" + std::to_string(++screenshotsSaved_) + ".png"
-                                   : options_.screenshot;
-      try {
-        saveScreenshot(path);
-        std::printf("wrote %s\n", path.c_str());
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "pbr view: %s\n", e.what());
-      }
+    case GLFW_KEY_F12:
+      takeScreenshot(options_.screenshot.empty() ? "pbr-view-" + std::to_string(++screenshotsSaved_) + ".png"
+                                                 : options_.screenshot);
       break;
-    }
     case GLFW_KEY_ESCAPE:
       glfwSetWindowShouldClose(window_.window(), GLFW_TRUE);
       break;
@@ -111,8 +125,6 @@ void Viewer::handleKey(int key) {
   }
 }
 
-// New random lights of the scene's own generator, as `--lights count` would have made them; a scene that cannot
-// (a file without random_lights) keeps its lights and says why on stderr.
 void Viewer::setLightCount(size_t count) {
   try {
     SceneParams params = options_.sceneParams;

@@ -7,7 +7,6 @@
 
 #include "app/bench/frame_stats.hpp"
 
-
 namespace pbr {
 
 namespace {
@@ -21,6 +20,17 @@ void Viewer::updateTitle() {
   }
   lastTitle_ = now;
   char buffer[96];
+  if (overlay_) {  // the overlay carries the rest
+    std::snprintf(buffer, sizeof buffer, "pbr view | %s", options_.sceneName.c_str());
+    std::string title = buffer;
+    if (!warmFrameMs_.empty()) {
+      std::snprintf(buffer, sizeof buffer, " | %.1f ms",
+                    median(std::vector<double>(warmFrameMs_.begin(), warmFrameMs_.end())));
+      title += buffer;
+    }
+    glfwSetWindowTitle(window_.window(), title.c_str());
+    return;
+  }
   std::string title = "pbr view | warming up |";
   if (!warmTimings_.empty() && !warmFrameMs_.empty()) {
     std::snprintf(buffer, sizeof buffer, "pbr view | %.1f ms (median of %zu warm) |",
