@@ -10,6 +10,7 @@
 #include "renderer/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
+#include "core/frame_capture.hpp"
 #include "core/image.hpp"
 #include "core/output_file.hpp"
 
@@ -58,6 +59,11 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
       {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet", "2", ""},
       {"--frames", "K", "timed frames: median and spread of each pass over them", "5", ""},
+      {"--capture-frame", "K",
+       "mark the K-th frame rendered for graphics debuggers, counting from 1 over every frame of the run (the first, "
+       "the warm-up, the timed ones and the final capture frame, 1 to --warmup + --frames + 2): captured through "
+       "RenderDoc's in-application API when run under RenderDoc (renderdoccmd capture ...), and always wrapped in a "
+       "debug group and marker 'capture frame K'", "", "none"},
       {"--json", "F.json", "write the timings (every timed frame), light statistics and provenance as JSON (pbr bench "
                            "schema)"},
       timingOption(),
@@ -126,6 +132,21 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   }
 }
 
+// 0 without --capture-frame. The run renders at least the first frame, the warm-up, the timed frames and one
+// untimed frame for captures and statistics (warm-up may add frames to size light lists, never fewer), so any K
+// up to their sum exists: a K beyond it is refused before anything is rendered.
+int checkedCaptureFrame(const Args& args, int warmup, int frames) {
+  if (!args.has("--capture-frame")) return 0;
+  const int last = warmup + frames + 2;
+  const int frame = args.getInt("--capture-frame", 1, 1 << 30);
+  if (frame > last) {
+    throw UsageError("--capture-frame " + std::to_string(frame) + " is past the run's last frame, " +
+                     std::to_string(last) + " (the first frame, --warmup " + std::to_string(warmup) + ", --frames " +
+                     std::to_string(frames) + " and the capture frame)");
+  }
+  return frame;
+}
+
 void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
   for (const FrameTiming& f : frames) {
     for (const PassTiming& p : f.passes) std::printf("  %-16s %9.3f ms\n", p.name.c_str(), p.ms);
@@ -168,6 +189,7 @@ int runRender(const std::vector<std::string>& argv) {
   const glm::ivec2 size = args.getSize("--size");
   const int warmup = args.getInt("--warmup", 0, 100000);
   const int frames = args.getInt("--frames", 1, 100000);
+  const int captureFrame = checkedCaptureFrame(args, warmup, frames);
   const std::string outPng = args.get("--out");
   const std::string outHdr = args.get("--hdr");
   const std::string outJson = args.get("--json");
@@ -205,12 +227,17 @@ int runRender(const std::vector<std::string>& argv) {
   Profiler profiler(chooseTimingMode(timing, info.renderer));
   Profiler precomputeProfiler(profiler.mode());
   rendererConfig.precomputeProfiler = &precomputeProfiler;
+  const FrameCapturer capturer;  // before the renderer, which holds on to it
   Renderer renderer(shaders, scene, size.x, size.y, rendererConfig);
   if (renderer.ibl()) {
     std::printf("environment: %s, IBL precomputation (%s):\n",
                 scene.environment->file.empty() ? "procedural sky" : scene.environment->file.c_str(),
                 describe(precomputeProfiler.mode()));
     printPrecomputeTimings(precomputeProfiler.takeResults(true));
+  }
+  if (captureFrame) {
+    renderer.captureFrame(captureFrame, capturer);
+    std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
   FrameOptions options{model, variant, culling, exposure, false, debugView, {}, aa};
   renderer.renderFrame(options, profiler);

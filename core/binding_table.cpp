@@ -17,7 +17,7 @@ ShaderDefines bindingDefines(std::initializer_list<BindingPoint> points) {
                                std::to_string(a->index));
       }
     }
-    defines.push_back({a->define, std::to_string(a->index)});
+    defines.push_back({a->define, std::to_string(a->index), true});
   }
   return defines;
 }

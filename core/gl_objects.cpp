@@ -17,10 +17,18 @@ GLuint ProgramTraits::create() { return glCreateProgram(); }
 void ProgramTraits::destroy(GLuint id) { glDeleteProgram(id); }
 GLuint SamplerTraits::create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
 void SamplerTraits::destroy(GLuint id) { glDeleteSamplers(1, &id); }
-GLuint QueryTraits::create() { GLuint id = 0; glGenQueries(1, &id); return id; }
+GLuint QueryTraits::create() { GLuint id = 0; glCreateQueries(GL_TIMESTAMP, 1, &id); return id; }
 void QueryTraits::destroy(GLuint id) { glDeleteQueries(1, &id); }
 
-Buffer::Buffer(size_t bytes, const void* data, GLbitfield flags) : size_(bytes) {
+void labelObject(GLenum identifier, GLuint id, const std::string& label) {
+  GLint maxLength = 0;
+  glGetIntegerv(GL_MAX_LABEL_LENGTH, &maxLength);
+  const size_t fits = maxLength > 0 ? static_cast<size_t>(maxLength) - 1 : 0;
+  glObjectLabel(identifier, id, -1, label.substr(0, fits).c_str());
+}
+
+Buffer::Buffer(const std::string& label, size_t bytes, const void* data, GLbitfield flags)
+    : handle_(label), size_(bytes) {
   // Zero-sized storage is invalid in GL; one word keeps binding an empty list legal.
   glNamedBufferStorage(id(), static_cast<GLsizeiptr>(bytes ? bytes : 4), bytes ? data : nullptr, flags);
 }
@@ -36,8 +44,8 @@ void Buffer::bindRange(GLenum target, GLuint index, size_t offset, size_t bytes)
   glBindBufferRange(target, index, id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes));
 }
 
-Texture::Texture(GLenum internalFormat, int width, int height, int levels)
-    : format_(internalFormat), width_(width), height_(height) {
+Texture::Texture(const std::string& label, GLenum internalFormat, int width, int height, int levels)
+    : handle_(label), format_(internalFormat), width_(width), height_(height) {
   glTextureStorage2D(id(), levels, internalFormat, width, height);
   glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
   glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, levels > 1 ? GL_LINEAR : GL_NEAREST);
@@ -45,7 +53,8 @@ Texture::Texture(GLenum internalFormat, int width, int height, int levels)
   glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-Sampler::Sampler(GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter) {
+Sampler::Sampler(const std::string& label, GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter)
+    : handle_(label) {
   glSamplerParameteri(id(), GL_TEXTURE_WRAP_S, wrapS);
   glSamplerParameteri(id(), GL_TEXTURE_WRAP_T, wrapT);
   glSamplerParameteri(id(), GL_TEXTURE_MIN_FILTER, minFilter);

@@ -7,12 +7,18 @@
 
 namespace pbr {
 
-// Move-only owner of one GL object name; Traits says how to create and delete it.
+// Names `id` in debuggers and GL debug messages (glObjectLabel; `identifier` is GL_BUFFER, GL_TEXTURE, ...):
+// "gbuffer.normal", "clusters.lightIndices". Cut to the driver's GL_MAX_LABEL_LENGTH, which a longer label would
+// exceed with an error.
+void labelObject(GLenum identifier, GLuint id, const std::string& label);
+
+// Move-only owner of one GL object name; Traits says how to create and delete it, and its kind of label.
+// Every object the project makes is labelled when it is made, so that a capture names all of them.
 template <class Traits>
 class GlHandle {
  public:
-  GlHandle() : id_(Traits::create()) {}
-  explicit GlHandle(GLuint adopt) : id_(adopt) {}
+  explicit GlHandle(const std::string& label) : id_(Traits::create()) { labelObject(Traits::kLabelKind, id_, label); }
+  GlHandle(GLuint adopt, const std::string& label) : id_(adopt) { labelObject(Traits::kLabelKind, id_, label); }
   ~GlHandle() { reset(); }
   GlHandle(const GlHandle&) = delete;
   GlHandle& operator=(const GlHandle&) = delete;
@@ -35,30 +41,37 @@ class GlHandle {
 };
 
 struct BufferTraits {
+  static constexpr GLenum kLabelKind = GL_BUFFER;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct TextureTraits2D {
+  static constexpr GLenum kLabelKind = GL_TEXTURE;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct FramebufferTraits {
+  static constexpr GLenum kLabelKind = GL_FRAMEBUFFER;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct VertexArrayTraits {
+  static constexpr GLenum kLabelKind = GL_VERTEX_ARRAY;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct ProgramTraits {
+  static constexpr GLenum kLabelKind = GL_PROGRAM;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct SamplerTraits {
+  static constexpr GLenum kLabelKind = GL_SAMPLER;
   static GLuint create();
   static void destroy(GLuint id);
 };
 struct QueryTraits {
+  static constexpr GLenum kLabelKind = GL_QUERY;
   static GLuint create();
   static void destroy(GLuint id);
 };
@@ -66,7 +79,7 @@ struct QueryTraits {
 // Immutable-storage buffer (glNamedBufferStorage).
 class Buffer {
  public:
-  Buffer(size_t bytes, const void* data = nullptr, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+  Buffer(const std::string& label, size_t bytes, const void* data = nullptr, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
   GLuint id() const { return handle_.id(); }
   size_t size() const { return size_; }
   void upload(const void* data, size_t bytes, size_t offset = 0);
@@ -81,7 +94,7 @@ class Buffer {
 // Immutable-storage 2D texture with nearest filtering (G-buffer and image targets are fetched per texel).
 class Texture {
  public:
-  Texture(GLenum internalFormat, int width, int height, int levels = 1);
+  Texture(const std::string& label, GLenum internalFormat, int width, int height, int levels = 1);
   GLuint id() const { return handle_.id(); }
   GLenum format() const { return format_; }
   int width() const { return width_; }
@@ -95,6 +108,7 @@ class Texture {
 
 class Framebuffer {
  public:
+  explicit Framebuffer(const std::string& label) : handle_(label) {}
   GLuint id() const { return handle_.id(); }
   void attach(GLenum attachment, const Texture& texture);
   // Throws std::runtime_error naming the incompleteness status.
@@ -106,6 +120,7 @@ class Framebuffer {
 
 class VertexArray {
  public:
+  explicit VertexArray(const std::string& label) : handle_(label) {}
   GLuint id() const { return handle_.id(); }
 
  private:
@@ -114,7 +129,7 @@ class VertexArray {
 
 class Program {
  public:
-  explicit Program(GLuint adopt) : handle_(adopt) {}
+  Program(GLuint adopt, const std::string& label) : handle_(adopt, label) {}
   GLuint id() const { return handle_.id(); }
   void use() const { glUseProgram(handle_.id()); }
 
@@ -125,15 +140,17 @@ class Program {
 // Sampling state (wrap modes, filters) kept apart from the images it applies to; bound per texture unit.
 class Sampler {
  public:
-  Sampler(GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter);
+  Sampler(const std::string& label, GLint wrapS, GLint wrapT, GLint minFilter, GLint magFilter);
   GLuint id() const { return handle_.id(); }
 
  private:
   GlHandle<SamplerTraits> handle_;
 };
 
+// A GL_TIMESTAMP query, made as one (glCreateQueries) so that it exists, and can be labelled, before first use.
 class Query {
  public:
+  explicit Query(const std::string& label) : handle_(label) {}
   GLuint id() const { return handle_.id(); }
 
  private:

@@ -11,9 +11,10 @@ std::atomic<size_t> meshUploads{0};
 
 size_t gpuMeshUploads() { return meshUploads.load(); }
 
-GpuMesh::GpuMesh(const MeshData& data)
-    : vertices_(data.vertices.size() * sizeof(Vertex), data.vertices.data(), 0),
-      indices_(data.indices.size() * sizeof(uint32_t), data.indices.data(), 0),
+GpuMesh::GpuMesh(const MeshData& data, const std::string& label)
+    : vertices_(label + ".vertices", data.vertices.size() * sizeof(Vertex), data.vertices.data(), 0),
+      indices_(label + ".indices", data.indices.size() * sizeof(uint32_t), data.indices.data(), 0),
+      vao_(label),
       indexCount_(static_cast<GLsizei>(data.indices.size())) {
   ++meshUploads;
   const GLuint vao = vao_.id();

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "core/gl_objects.hpp"
 #include "core/mesh.hpp"
@@ -12,7 +13,8 @@ size_t gpuMeshUploads();
 
 class GpuMesh {
  public:
-  explicit GpuMesh(const MeshData& data);
+  // `label` names its buffers and vertex array ("mesh 3" -> "mesh 3.vertices", ...).
+  GpuMesh(const MeshData& data, const std::string& label);
   void draw() const;
 
  private:

@@ -36,9 +36,9 @@ int mipLevelCount(int width, int height) {
 size_t gpuTextureUploads() { return textureUploads.load(); }
 
 GpuTexture::GpuTexture(const TextureData& data)
-    : texture_(data.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, checked(data).width, data.height,
+    : texture_("texture " + data.name, data.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, checked(data).width, data.height,
                mipLevelCount(data.width, data.height)),
-      sampler_(data.wrapS, data.wrapT, data.minFilter, data.magFilter) {
+      sampler_("texture " + data.name + ".sampler", data.wrapS, data.wrapT, data.minFilter, data.magFilter) {
   ++textureUploads;
   // Rows go up from the top of the image, so glTF's uv (0,0), the image's top-left corner, is texel (0,0).
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

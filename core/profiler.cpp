@@ -38,7 +38,7 @@ void Profiler::beginFrame() {
 }
 
 Query& Profiler::nextQuery() {
-  if (current_.used == current_.queries.size()) current_.queries.emplace_back();
+  if (current_.used == current_.queries.size()) current_.queries.emplace_back("profiler.timestamp");
   return current_.queries[current_.used++];
 }
 

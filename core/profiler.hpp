@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/debug_group.hpp"
 #include "core/gl_objects.hpp"
 
 namespace pbr {
@@ -75,16 +76,24 @@ class Profiler {
   std::vector<FrameTiming> done_;
 };
 
-// Times one pass for the lifetime of the object.
+// One pass for the lifetime of the object: a debug group of the pass's name around it, so that every timed pass
+// is a group of the same name in a capture, and, with a profiler, timed (the group encloses the pass's time
+// stamps, its own calls stay outside the time). Without a profiler (untimed work) only the group.
 class ScopedPass {
  public:
-  ScopedPass(Profiler& profiler, const char* name) : profiler_(profiler) { profiler_.beginPass(name); }
-  ~ScopedPass() { profiler_.endPass(); }
+  ScopedPass(Profiler* profiler, const char* name) : group_(name), profiler_(profiler) {
+    if (profiler_) profiler_->beginPass(name);
+  }
+  ScopedPass(Profiler& profiler, const char* name) : ScopedPass(&profiler, name) {}
+  ~ScopedPass() {
+    if (profiler_) profiler_->endPass();
+  }
   ScopedPass(const ScopedPass&) = delete;
   ScopedPass& operator=(const ScopedPass&) = delete;
 
  private:
-  Profiler& profiler_;
+  DebugGroup group_;
+  Profiler* profiler_;
 };
 
 }  // namespace pbr

@@ -11,7 +11,7 @@ template <class T>
 std::vector<T> readback(const Texture& texture, GLenum type) {
   const size_t rowElems = static_cast<size_t>(texture.width()) * 4;
   const size_t bytes = rowElems * texture.height() * sizeof(T);
-  Buffer pbo(bytes, nullptr, GL_MAP_READ_BIT);
+  Buffer pbo("readback.pixels", bytes, nullptr, GL_MAP_READ_BIT);
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo.id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

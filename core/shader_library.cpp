@@ -14,6 +14,16 @@ std::string definesKey(const ShaderDefines& defines) {
   for (const ShaderDefine& d : defines) key += d.name + '=' + d.value + '\n';
   return key;
 }
+
+std::string programLabel(const std::string& files, const ShaderDefines& defines) {
+  std::string chosen;
+  for (const ShaderDefine& d : defines) {
+    if (d.binding || d.value == "0") continue;
+    chosen += (chosen.empty() ? "" : " ") + (d.value == "1" ? d.name : d.name + '=' + d.value);
+  }
+  return chosen.empty() ? files : files + " [" + chosen + "]";
+}
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -121,8 +131,8 @@ GLuint compileStage(GLenum stage, const ExpandedShader& src) {
   return shader;
 }
 
-Program link(const std::vector<GLuint>& shaders, const std::string& what) {
-  Program program(glCreateProgram());
+Program link(const std::vector<GLuint>& shaders, const std::string& what, const ShaderDefines& defines) {
+  Program program(glCreateProgram(), programLabel(what, defines));
   for (GLuint s : shaders) glAttachShader(program.id(), s);
   glLinkProgram(program.id());
   for (GLuint s : shaders) {
@@ -167,12 +177,12 @@ ExpandedShader ShaderLibrary::expandSource(const std::string& name, const std::s
 }
 
 Program ShaderLibrary::compute(const std::string& file, const ShaderDefines& defines) const {
-  return link({compileStage(GL_COMPUTE_SHADER, expand(file, defines))}, file);
+  return link({compileStage(GL_COMPUTE_SHADER, expand(file, defines))}, file, defines);
 }
 
 Program ShaderLibrary::computeFromSource(const std::string& name, const std::string& text,
                                          const ShaderDefines& defines) const {
-  return link({compileStage(GL_COMPUTE_SHADER, expandSource(name, text, defines))}, name);
+  return link({compileStage(GL_COMPUTE_SHADER, expandSource(name, text, defines))}, name, defines);
 }
 
 Program ShaderLibrary::graphics(const std::string& vertexFile, const std::string& fragmentFile,
@@ -185,7 +195,7 @@ Program ShaderLibrary::graphics(const std::string& vertexFile, const std::string
     glDeleteShader(vs);
     throw;
   }
-  return link({vs, fs}, vertexFile + " + " + fragmentFile);
+  return link({vs, fs}, vertexFile + " + " + fragmentFile, defines);
 }
 
 std::string remapShaderLog(const std::string& log, const std::vector<std::string>& files) {

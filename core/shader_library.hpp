@@ -11,10 +11,16 @@ namespace pbr {
 struct ShaderDefine {
   std::string name;
   std::string value;
+  bool binding = false;  // a binding point's index (binding_table.hpp): where, not which permutation
 };
 using ShaderDefines = std::vector<ShaderDefine>;
 // "NAME=value\n" for each define in order: equal keys compile the same source, so it keys program caches.
 std::string definesKey(const ShaderDefines& defines);
+
+// The label a program gets (gl_objects.hpp: labelObject): its files and the defines that choose its permutation,
+// switches on by name, other values as NAME=value, binding points and switches off left out:
+// "lighting/deferred.comp [VISIBILITY_EXACT ... HDR_IMAGE_FORMAT=rgba16f CLUSTERED]".
+std::string programLabel(const std::string& files, const ShaderDefines& defines);
 
 // Compile and link failures, with every log line mapped back to "file:line: message" of the original file.
 class ShaderError : public std::runtime_error {

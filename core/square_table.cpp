@@ -4,6 +4,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "core/debug_group.hpp"
 #include "core/uniform_buffer.hpp"
 
 namespace pbr {
@@ -20,11 +21,12 @@ constexpr GLuint kGroupSize = 8;
 
 }  // namespace
 
-Texture computeSquareTable(const Program& program, GLenum format, int size, int samples) {
+Texture computeSquareTable(const std::string& label, const Program& program, GLenum format, int size, int samples) {
   if (size < 2) throw std::invalid_argument("table size must be >= 2");
   if (samples < 1) throw std::invalid_argument("table samples must be >= 1");
-  Texture table(format, size, size);
-  const UniformBuffer<TableBlock> block({glm::ivec4(size, samples, 0, 0)});
+  const DebugGroup group(label);
+  Texture table(label, format, size, size);
+  const UniformBuffer<TableBlock> block(label + ".sizes", {glm::ivec4(size, samples, 0, 0)});
   block.bind(0);
   program.use();
   glBindImageTexture(0, table.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);

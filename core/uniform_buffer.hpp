@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 #include <type_traits>
 
 #include "core/gl_objects.hpp"
@@ -12,8 +13,8 @@ class UniformBuffer {
   static_assert(sizeof(T) % 16 == 0, "std140 blocks are padded to a multiple of 16 bytes");
 
  public:
-  UniformBuffer() : buffer_(sizeof(T)) {}
-  explicit UniformBuffer(const T& value) : buffer_(sizeof(T), &value) {}
+  explicit UniformBuffer(const std::string& label) : buffer_(label, sizeof(T)) {}
+  UniformBuffer(const std::string& label, const T& value) : buffer_(label, sizeof(T), &value) {}
   void update(const T& value) { buffer_.upload(&value, sizeof(T)); }
   void bind(GLuint binding) const { buffer_.bindBase(GL_UNIFORM_BUFFER, binding); }
 

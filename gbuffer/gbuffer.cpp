@@ -23,10 +23,11 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p)
     : width(w),
       height(h),
       precision(p),
-      baseColor(gbufferFormats(p).baseColor, w, h),
-      normal(gbufferFormats(p).normal, w, h),
-      material(gbufferFormats(p).material, w, h),
-      depth(gbufferFormats(p).depth, w, h) {
+      baseColor("gbuffer.baseColor", gbufferFormats(p).baseColor, w, h),
+      normal("gbuffer.normal", gbufferFormats(p).normal, w, h),
+      material("gbuffer.material", gbufferFormats(p).material, w, h),
+      depth("gbuffer.depth", gbufferFormats(p).depth, w, h),
+      framebuffer("gbuffer") {
   const GLenum f = radiance.format();
   if (radiance.width() != w || radiance.height() != h ||
       (f != GL_RGBA16F && f != GL_R11F_G11F_B10F && f != GL_RGBA32F)) {

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <string>
 #include <type_traits>
 
 #include <glm/mat2x3.hpp>
@@ -84,10 +85,10 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
 
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     : blockStride_(alignedStride()),
-      objectBlocks_(static_cast<size_t>(blockStride_) * scene.objects.size(),
+      objectBlocks_("gbuffer.objectBlocks", static_cast<size_t>(blockStride_) * scene.objects.size(),
                     packObjectBlocks(scene, blockStride_).data(), 0) {
   meshes_.reserve(scene.meshes.size());
-  for (const MeshData& m : scene.meshes) meshes_.emplace_back(m);
+  for (const MeshData& m : scene.meshes) meshes_.emplace_back(m, "mesh " + std::to_string(meshes_.size()));
   textures_.reserve(scene.textures.size());
   for (const TextureData& t : scene.textures) textures_.emplace_back(t);
 

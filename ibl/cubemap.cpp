@@ -18,8 +18,8 @@ size_t bytesPerTexel(GLenum internalFormat) {
   }
 }
 
-Cubemap::Cubemap(GLenum internalFormat, int faceSize, int levels)
-    : format_(internalFormat), faceSize_(faceSize), levels_(levels) {
+Cubemap::Cubemap(const std::string& label, GLenum internalFormat, int faceSize, int levels)
+    : handle_(label), format_(internalFormat), faceSize_(faceSize), levels_(levels) {
   glTextureStorage2D(id(), levels, internalFormat, faceSize, faceSize);
   glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);

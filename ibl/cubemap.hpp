@@ -1,11 +1,13 @@
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "core/gl_objects.hpp"
 
 namespace pbr {
 
 struct CubemapTraits {
+  static constexpr GLenum kLabelKind = GL_TEXTURE;
   static GLuint create();
   static void destroy(GLuint id);
 };
@@ -18,7 +20,7 @@ size_t bytesPerTexel(GLenum internalFormat);
 // the face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS, global state, filters across them).
 class Cubemap {
  public:
-  Cubemap(GLenum internalFormat, int faceSize, int levels);
+  Cubemap(const std::string& label, GLenum internalFormat, int faceSize, int levels);
   GLuint id() const { return handle_.id(); }
   GLenum format() const { return format_; }
   int levels() const { return levels_; }

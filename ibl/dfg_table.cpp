@@ -6,6 +6,8 @@ namespace pbr {
 
 DfgTablePass::DfgTablePass(const ShaderLibrary& shaders) : program_(shaders.compute("ibl/dfg.comp")) {}
 
-Texture DfgTablePass::run(int size, int samples) const { return computeSquareTable(program_, GL_RG16F, size, samples); }
+Texture DfgTablePass::run(int size, int samples) const {
+  return computeSquareTable("ibl.dfg", program_, GL_RG16F, size, samples);
+}
 
 }  // namespace pbr

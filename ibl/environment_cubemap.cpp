@@ -68,19 +68,19 @@ EnvironmentCubemapPass::EnvironmentCubemapPass(const ShaderLibrary& shaders)
 
 Cubemap EnvironmentCubemapPass::run(const Environment& environment, int faceSize) const {
   if (faceSize < 1) throw std::invalid_argument("environment cube map face size must be >= 1");
-  Cubemap cubemap(GL_RGBA16F, faceSize, mipLevelCount(faceSize, faceSize));
-  const UniformBuffer<EnvironmentPassBlock> block(passBlock(environment, faceSize));
+  Cubemap cubemap("ibl.environment", GL_RGBA16F, faceSize, mipLevelCount(faceSize, faceSize));
+  const UniformBuffer<EnvironmentPassBlock> block("ibl.environment.block", passBlock(environment, faceSize));
   block.bind(0);
 
   // Linear filtering, wrapping around in longitude; the sampler object overrides the texture's own state.
-  const Sampler equirectSampler(GL_REPEAT, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+  const Sampler equirectSampler("ibl.equirect.sampler", GL_REPEAT, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
   std::optional<Texture> equirect;
   if (environment.isSky()) {
     skyProgram_.use();
   } else {
     const ImageRgbaF& image = environment.equirect();
     // Float32: real suns exceed the half-float range before the intensity scales them.
-    equirect.emplace(GL_RGBA32F, image.width, image.height);
+    equirect.emplace("ibl.equirect", GL_RGBA32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(equirect->id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.pixels.data());
     glBindTextureUnit(0, equirect->id());

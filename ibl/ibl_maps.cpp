@@ -1,9 +1,9 @@
 #include "ibl/ibl_maps.hpp"
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "core/debug_group.hpp"
 #include "core/gpu_texture.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/environment_cubemap.hpp"
@@ -29,11 +29,10 @@ const IblSettings& checked(const IblSettings& s) {
   return s;
 }
 
-// Runs `step` inside a profiler pass when there is a profiler.
+// Runs `step` as a pass: a debug group, and timed when there is a profiler.
 template <class Step>
 auto timed(Profiler* profiler, const char* name, Step&& step) {
-  std::optional<ScopedPass> pass;
-  if (profiler) pass.emplace(*profiler, name);
+  const ScopedPass pass(profiler, name);
   return step();
 }
 
@@ -57,6 +56,7 @@ struct IblMaps::Maps {
 
 IblMaps::Maps IblMaps::precompute(const ShaderLibrary& shaders, const Environment& environment, const IblSettings& s,
                                   Profiler* profiler) {
+  const DebugGroup group("ibl precompute");
   const Passes passes(shaders);
   if (profiler) profiler->beginFrame();
   const Cubemap source =
@@ -78,8 +78,8 @@ IblMaps::IblMaps(Maps&& maps, const IblSettings& settings)
       irradiance_(std::move(maps.irradiance)),
       specular_(std::move(maps.specular)),
       dfg_(std::move(maps.dfg)),
-      specularSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
-      dfgSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
+      specularSampler_("ibl.specular.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
+      dfgSampler_("ibl.dfg.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
 
 EnvironmentMaps IblMaps::maps() const {
   return {irradiance_.id(), specular_.id(), specularSampler_.id(), dfg_.id(), dfgSampler_.id()};

@@ -21,8 +21,8 @@ Buffer IrradianceShPass::run(const Cubemap& environment) const {
   while (environment.faceSize(level) > kMaxProjectedFace && level + 1 < environment.levels()) ++level;
   const GLuint blocks = (static_cast<GLuint>(environment.faceSize(level)) + kBlock - 1) / kBlock;
   const GLuint groups = (blocks + kGroupSize - 1) / kGroupSize;
-  const Buffer partials(size_t{blocks} * blocks * 6 * 9 * sizeof(glm::vec4), nullptr, 0);
-  Buffer coefficients(sizeof(IblBlock), nullptr, 0);
+  const Buffer partials("ibl.irradiance.partials", size_t{blocks} * blocks * 6 * 9 * sizeof(glm::vec4), nullptr, 0);
+  Buffer coefficients("ibl.irradiance", sizeof(IblBlock), nullptr, 0);
 
   projectProgram_.use();
   glBindImageTexture(0, environment.id(), level, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA16F);

@@ -35,11 +35,11 @@ Cubemap SpecularPrefilterPass::run(const Cubemap& environment, int levels, int s
     throw std::invalid_argument("the environment cube map needs its full mip chain");
   }
   if (samples < 1) throw std::invalid_argument("specular samples must be >= 1");
-  Cubemap prefiltered(GL_RGBA16F, size, levels);
+  Cubemap prefiltered("ibl.specular", GL_RGBA16F, size, levels);
   glCopyImageSubData(environment.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, prefiltered.id(), GL_TEXTURE_CUBE_MAP, 0, 0,
                      0, 0, size, size, 6);
 
-  UniformBuffer<PrefilterPassBlock> block;
+  UniformBuffer<PrefilterPassBlock> block("ibl.specular.block");
   block.bind(0);
   program_.use();
   glBindTextureUnit(0, environment.id());

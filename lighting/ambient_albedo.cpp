@@ -9,7 +9,8 @@ const Texture& AmbientAlbedoTables::table(const ShaderDefines& variantDefines) {
   auto it = tables_.find(key);
   if (it != tables_.end()) return it->second;
   const Program program = shaders_.compute("lighting/ambient_albedo.comp", variantDefines);
-  return tables_.emplace(key, computeSquareTable(program, GL_RGBA32F, kSize, kSamples)).first->second;
+  const std::string label = programLabel("lighting.ambientAlbedo", variantDefines);
+  return tables_.emplace(key, computeSquareTable(label, program, GL_RGBA32F, kSize, kSamples)).first->second;
 }
 
 }  // namespace pbr

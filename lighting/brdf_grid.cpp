@@ -9,7 +9,7 @@ std::vector<glm::vec4> evaluateBrdfGrid(const ShaderLibrary& shaders, const Shad
   const Program program =
       shaders.compute("lighting/brdf_grid.comp", concat(shaderDefines(variant), bindingDefines({kBrdfGridSsbo})));
   const size_t cells = size_t(angles) * roughnesses;
-  Buffer values(cells * sizeof(glm::vec4), nullptr, 0);
+  Buffer values("brdfGrid.values", cells * sizeof(glm::vec4), nullptr, 0);
   program.use();
   // Uniform locations 0 and 1 of brdf_grid.comp.
   glProgramUniform2ui(program.id(), 0, GLuint(angles), GLuint(roughnesses));

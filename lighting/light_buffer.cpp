@@ -39,7 +39,7 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
   std::vector<GpuLight> packed(windows * kLightWindowMax, GpuLight{});
   for (size_t i = 0; i < lights.size(); ++i) packed[i] = toGpuLight(lights[i]);
   const size_t bytes = packed.size() * sizeof(GpuLight);
-  if (!buffer_ || buffer_->size() < bytes) buffer_ = std::make_unique<Buffer>(bytes);
+  if (!buffer_ || buffer_->size() < bytes) buffer_ = std::make_unique<Buffer>("lights.points", bytes);
   buffer_->upload(packed.data(), bytes);
   count_ = static_cast<unsigned>(lights.size());
 
@@ -51,7 +51,7 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
   std::vector<GpuSpotCone> cones(packed.size(), GpuSpotCone(0.0f));
   for (size_t i = 0; i < lights.size(); ++i) cones[i] = toGpuSpotCone(lights[i]);
   const size_t coneBytes = cones.size() * sizeof(GpuSpotCone);
-  if (!cones_ || cones_->size() < coneBytes) cones_ = std::make_unique<Buffer>(coneBytes);
+  if (!cones_ || cones_->size() < coneBytes) cones_ = std::make_unique<Buffer>("lights.spotCones", coneBytes);
   cones_->upload(cones.data(), coneBytes);
 }
 

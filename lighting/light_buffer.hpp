@@ -68,7 +68,7 @@ class LightBuffer {
   bool hasSpots_ = false;
   unsigned count_ = 0;
   unsigned directionalCount_ = 0;
-  UniformBuffer<DirectionalLightBlock> directionalBlock_{DirectionalLightBlock{}};
+  UniformBuffer<DirectionalLightBlock> directionalBlock_{"lights.directional", DirectionalLightBlock{}};
 };
 
 }  // namespace pbr

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/debug_group.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
@@ -26,8 +27,8 @@ uint64_t maskWords(uint32_t lights) { return (uint64_t(lights) + 31) / 32; }
 uint64_t summaryWords(uint32_t lights) { return (maskWords(lights) + 31) / 32; }
 
 // A storage buffer of `bytes` (at least one word, so that it can be bound), all zero.
-std::unique_ptr<Buffer> zeroedBuffer(uint64_t bytes) {
-  auto buffer = std::make_unique<Buffer>(std::max<uint64_t>(bytes, 4), nullptr, 0);
+std::unique_ptr<Buffer> zeroedBuffer(const char* label, uint64_t bytes) {
+  auto buffer = std::make_unique<Buffer>(label, std::max<uint64_t>(bytes, 4), nullptr, 0);
   const uint32_t zero = 0;
   glClearNamedBufferData(buffer->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   return buffer;
@@ -61,7 +62,7 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       clearProgram_(programs.compute("lighting/cluster_clear.comp", lightingBindingDefines())),
-      status_(sizeof(ClusterStatus), nullptr, 0) {
+      status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   maxBlockBytes_ = static_cast<uint64_t>(std::max<GLint64>(maxBlock, 4));
@@ -94,10 +95,11 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   blockData_.dims = glm::uvec4(dims_, tile);
   blockData_.slicing = glm::vec4(nearPlane, farPlane, scale, -scale * std::log(nearPlane));
   blockData_.counts = glm::uvec4(0, clusters, 0, 0);
-  headers_ = std::make_unique<Buffer>(clusters * sizeof(ClusterHeader), nullptr, 0);
-  cursors_ = std::make_unique<Buffer>(clusters * sizeof(uint32_t), nullptr, 0);
+  headers_ = std::make_unique<Buffer>("clusters.headers", clusters * sizeof(ClusterHeader), nullptr, 0);
+  cursors_ = std::make_unique<Buffer>("clusters.cursors", clusters * sizeof(uint32_t), nullptr, 0);
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
-  occupancy_ = std::make_unique<Buffer>((clusters + tiles) * kOccupancyWords * sizeof(uint32_t), nullptr, 0);
+  const uint64_t occupancyBytes = (clusters + tiles) * kOccupancyWords * sizeof(uint32_t);
+  occupancy_ = std::make_unique<Buffer>("clusters.occupancy", occupancyBytes, nullptr, 0);
   // The masks' layout depends on the tile count: new ones start empty.
   tileMasks_.reset();
   tileWords_.reset();
@@ -123,7 +125,7 @@ void LightClusters::ensureCapacity(uint64_t entries) {
   if (entries <= capacity_) return;
   while (glGetError() != GL_NO_ERROR) {
   }
-  auto grown = std::make_unique<Buffer>(entries * sizeof(uint32_t), nullptr, 0);
+  auto grown = std::make_unique<Buffer>("clusters.lightIndices", entries * sizeof(uint32_t), nullptr, 0);
   if (glGetError() == GL_OUT_OF_MEMORY) {
     if (!warnedLimit_) {
       std::fprintf(stderr, "clusters: out of GPU memory growing the light index list to %.1f MiB; clusters that do "
@@ -150,12 +152,14 @@ void LightClusters::ensureLightBuffers(uint32_t lights, bool spotLights) {
                              "buffer (" + mebibytes(maxBlockBytes_) + "): use fewer lights, a smaller frame or a "
                              "larger --tile");
   }
-  if (!viewLights_ || viewLights_->size() < viewBytes) viewLights_ = std::make_unique<Buffer>(viewBytes, nullptr, 0);
-  if (spotLights && (!viewCones_ || viewCones_->size() < 2 * viewBytes)) {
-    viewCones_ = std::make_unique<Buffer>(2 * viewBytes, nullptr, 0);
+  if (!viewLights_ || viewLights_->size() < viewBytes) {
+    viewLights_ = std::make_unique<Buffer>("clusters.viewLights", viewBytes, nullptr, 0);
   }
-  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = zeroedBuffer(maskBytes);
-  if (!tileWords_ || tileWords_->size() < summaryBytes) tileWords_ = zeroedBuffer(summaryBytes);
+  if (spotLights && (!viewCones_ || viewCones_->size() < 2 * viewBytes)) {
+    viewCones_ = std::make_unique<Buffer>("clusters.viewCones", 2 * viewBytes, nullptr, 0);
+  }
+  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = zeroedBuffer("clusters.tileMasks", maskBytes);
+  if (!tileWords_ || tileWords_->size() < summaryBytes) tileWords_ = zeroedBuffer("clusters.tileWords", summaryBytes);
 }
 
 void LightClusters::growFromPastDemand() {
@@ -184,7 +188,9 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
   blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
-  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) visible_ = zeroedBuffer(lights.count() * 4ull);
+  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) {
+    visible_ = zeroedBuffer("clusters.visibleLights", lights.count() * 4ull);
+  }
   const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
   glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
 
@@ -202,22 +208,32 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightVisibleSsbo.index);
   glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
 
-  occupancyProgram_.use();
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8), groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  {
+    const DebugGroup group("cluster occupancy");
+    occupancyProgram_.use();
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8),
+                      groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   // Spot lights' cones take permutations of their own, compiled the first time a frame has them.
   if (lights.hasSpotLights() && !spotPrograms_) spotPrograms_ = assignPrograms(programs_, true);
   const AssignPrograms& pass = lights.hasSpotLights() ? *spotPrograms_ : pointPrograms_;
   if (lights.hasSpotLights()) viewCones_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewConesSsbo.index);
-  pass.lights->use();
-  glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  dispatchAssign(*(stats ? pass.countStats : pass.count), lights.count());
+  {
+    const DebugGroup group("cluster lights");
+    pass.lights->use();
+    glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  dispatchAssign("cluster count", *(stats ? pass.countStats : pass.count), lights.count());
   const Program& scan = stats ? scanStatsProgram_ : scanProgram_;
-  scan.use();
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  {
+    const DebugGroup group("cluster scan");
+    scan.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   // Without a past frame of this grid and light count to size the list from, a list too small would shade its
   // clusters by brute force: with a million lights, minutes. Such a frame waits for its own demand instead.
   if (lights.count() != sizedFor_) {
@@ -225,6 +241,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
     const uint32_t before = capacity_;
     growTo(readStatus().demand);
     if (capacity_ != before) {
+      const DebugGroup group("cluster scan (list grown)");
       blockData_.counts.z = capacity_;
       block_.update(blockData_);
       indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
@@ -233,15 +250,20 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
-  dispatchAssign(*pass.fill, lights.count());
-  clearProgram_.use();
-  glDispatchCompute(groupsFor(tiles * summaryWords(lights.count()), 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  dispatchAssign("cluster fill", *pass.fill, lights.count());
+  {
+    const DebugGroup group("cluster clear");
+    clearProgram_.use();
+    glDispatchCompute(groupsFor(tiles * summaryWords(lights.count()), 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
 
   PendingStatus& slot = pending_[pendingNext_];
   pendingNext_ = (pendingNext_ + 1) % pending_.size();
   if (slot.fence) glDeleteSync(slot.fence);
-  if (!slot.buffer) slot.buffer = std::make_unique<Buffer>(sizeof(ClusterStatus), nullptr, 0);
+  if (!slot.buffer) {
+    slot.buffer = std::make_unique<Buffer>("clusters.status.readback", sizeof(ClusterStatus), nullptr, 0);
+  }
   glCopyNamedBufferSubData(status_.id(), slot.buffer->id(), 0, 0, sizeof(ClusterStatus));
   slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
@@ -249,7 +271,8 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
 // The count or fill pass over the lights in chunks of kAssignChunkLights, in ascending order; one workgroup per
 // tile and 8 slices (cluster_assign.comp). At least one chunk, so that a frame without lights still writes its
 // (empty) headers.
-void LightClusters::dispatchAssign(const Program& program, uint32_t lights) {
+void LightClusters::dispatchAssign(const char* name, const Program& program, uint32_t lights) {
+  const DebugGroup group(name);
   program.use();
   const uint32_t chunks = std::max(1u, (lights + kAssignChunkLights - 1) / kAssignChunkLights);
   for (uint32_t c = 0; c < chunks; ++c) {

@@ -79,7 +79,8 @@ class LightClusters {
   void ensureLightBuffers(uint32_t lights, bool spotLights);
 
   ClusterConfig config_;
-  void dispatchAssign(const Program& program, uint32_t lights);
+  // `name`: the debug group the dispatches are in.
+  void dispatchAssign(const char* name, const Program& program, uint32_t lights);
 
   ProgramCache& programs_;
   // The passes that read lights: cluster_lights.comp and cluster_assign.comp's count (without, with stats) and
@@ -92,7 +93,7 @@ class LightClusters {
   AssignPrograms pointPrograms_;
   std::optional<AssignPrograms> spotPrograms_;
   const Program &scanProgram_, &scanStatsProgram_, &clearProgram_;
-  UniformBuffer<ClusterBlock> block_;
+  UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for

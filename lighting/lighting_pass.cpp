@@ -93,7 +93,9 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   }
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
-    if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) pairStats_ = std::make_unique<Buffer>(pairGroups_ * 8, nullptr, 0);
+    if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) {
+      pairStats_ = std::make_unique<Buffer>("lighting.pairStats", pairGroups_ * 8, nullptr, 0);
+    }
     const uint32_t zero = 0;
     glClearNamedBufferData(pairStats_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     pairStats_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightingStatsSsbo.index);

@@ -63,7 +63,7 @@ class LightingPass {
   explicit LightingPass(ProgramCache& programs)
       : programs_(programs),
         ambientAlbedo_(programs.library()),
-        ambientSampler_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR),
+        ambientSampler_("lighting.ambientAlbedo.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR),
         lightWindow_(lightWindowLights()) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
@@ -91,7 +91,7 @@ class LightingPass {
   uint32_t lightsPerDispatch(bool clustered) const { return clustered ? kLightsPerDispatch : lightWindow_; }
 
   ProgramCache& programs_;  // permutations compiled on first use
-  UniformBuffer<LightingBlock> block_;
+  UniformBuffer<LightingBlock> block_{"lighting.block"};
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
   Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;

@@ -14,7 +14,7 @@ const char* toString(AntiAliasing aa) { return aa == AntiAliasing::Fxaa ? "fxaa"
 
 FxaaPass::FxaaPass(ProgramCache& programs)
     : programs_(programs),
-      bilinear_(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
+      bilinear_("fxaa.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {}
 
 void FxaaPass::render(const Texture& display, const Texture& out) {
   programs_.compute("post/fxaa.comp").use();

@@ -32,7 +32,7 @@ class PostPass {
 
  private:
   const Program& program_;
-  UniformBuffer<PostBlock> block_;
+  UniformBuffer<PostBlock> block_{"post.block"};
 };
 
 }  // namespace pbr

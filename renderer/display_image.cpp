@@ -14,8 +14,8 @@ ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance
   const int w = radiance.width, h = radiance.height;
   ProgramCache programs(shaders);
   PostPass post(programs);
-  Texture hdr(GL_RGBA32F, w, h);
-  Texture ldr(GL_RGBA8, w, h);
+  Texture hdr("displayImage.radiance", GL_RGBA32F, w, h);
+  Texture ldr("displayImage.display", GL_RGBA8, w, h);
   ImageRgba8 out;
   using R = FrameResource;
   const PassList passes = {
@@ -33,7 +33,10 @@ ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance
       {"readback", {R::Display}, {R::Capture}, [&] { out = readbackRgba8(ldr); }},
   };
   checkPassList(passes);
-  for (const FramePass& pass : passes) pass.run();
+  for (const FramePass& pass : passes) {
+    const ScopedPass scope(nullptr, pass.name.c_str());  // untimed: a debug group only
+    pass.run();
+  }
   return out;
 }
 

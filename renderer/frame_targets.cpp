@@ -18,18 +18,22 @@ int checkedWidth(int width, int height, const RendererConfig& config) {
 FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererConfig& config)
     : width(checkedWidth(w, h, config)),
       height(h),
-      hdr(glInternalFormat(config.hdrFormat), w, h),
+      hdr("frame.radiance", glInternalFormat(config.hdrFormat), w, h),
       gbuffer(w, h, hdr, config.gbuffer),
-      ldr(GL_RGBA8, w, h),
+      ldr("frame.display", GL_RGBA8, w, h),
       clusters(programs, config.clusters) {}
 
 const Texture& FrameTargets::partialRadiance() {
-  if (!partialRadiance_) partialRadiance_ = std::make_unique<Texture>(GL_RGBA32F, width, height);
+  if (!partialRadiance_) {
+    partialRadiance_ = std::make_unique<Texture>("frame.partialRadiance", GL_RGBA32F, width, height);
+  }
   return *partialRadiance_;
 }
 
 const Texture& FrameTargets::beforeAntiAliasing() {
-  if (!beforeAntiAliasing_) beforeAntiAliasing_ = std::make_unique<Texture>(GL_RGBA8, width, height);
+  if (!beforeAntiAliasing_) {
+    beforeAntiAliasing_ = std::make_unique<Texture>("frame.beforeAntiAliasing", GL_RGBA8, width, height);
+  }
   return *beforeAntiAliasing_;
 }
 

@@ -1,5 +1,7 @@
 #include "renderer/renderer.hpp"
 
+#include <optional>
+
 #include "core/gpu_mesh.hpp"
 #include "core/gpu_texture.hpp"
 #include "core/readback.hpp"
@@ -14,7 +16,7 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
       targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config)),
       camera_(scene.camera),
       frameData_(makeFrameBlock(camera_, width, height)),
-      frame_(frameData_) {}
+      frame_("frame.block", frameData_) {}
 
 void Renderer::resize(int width, int height) {
   targets_.reset();  // free the old targets before allocating the new ones
@@ -89,8 +91,15 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   return passes;
 }
 
+void Renderer::captureFrame(int frame, const FrameCapturer& capturer) {
+  captureFrame_ = frame;
+  capturer_ = &capturer;
+}
+
 void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture) {
   const PassList passes = passList(options, capture);
+  std::optional<CapturedFrame> captured;
+  if (++framesRendered_ == captureFrame_ && capturer_) captured.emplace(*capturer_, framesRendered_);
   profiler.beginFrame();
   runPassList(passes, profiler);
   profiler.endFrame();

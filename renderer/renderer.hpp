@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/frame_block.hpp"
+#include "core/frame_capture.hpp"
 #include "core/image.hpp"
 #include "core/profiler.hpp"
 #include "core/scene.hpp"
@@ -88,6 +89,10 @@ class Renderer {
   // still fall back to brute force.
   WarmUpReport warmUp(const FrameOptions& options, Profiler& profiler, int frames);
 
+  // Marks the `frame`-th frame this renderer renders (counting every renderFrame from 1, warm-up frames included)
+  // for graphics debuggers, as `capturer` says (core/frame_capture.hpp). `capturer` must outlive that frame.
+  void captureFrame(int frame, const FrameCapturer& capturer);
+
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
   // changes); new lights replace the light buffer.
   void setCamera(const Camera& camera);
@@ -116,6 +121,9 @@ class Renderer {
   FrameBlock frameData_;
   UniformBuffer<FrameBlock> frame_;
   FrameOptions lastOptions_;
+  int framesRendered_ = 0;
+  int captureFrame_ = 0;
+  const FrameCapturer* capturer_ = nullptr;
 };
 
 }  // namespace pbr

@@ -41,8 +41,8 @@ std::vector<glm::vec4> GlslProbe::run(const std::vector<glm::vec4>& input) const
   if (groups > kMaxGroups) throw std::length_error("GlslProbe: too many elements for one dispatch");
 
   const size_t bytes = input.size() * sizeof(glm::vec4);
-  const Buffer in(bytes, input.data(), 0);
-  const Buffer out(bytes, nullptr, 0);
+  const Buffer in("glslProbe.in", bytes, input.data(), 0);
+  const Buffer out("glslProbe.out", bytes, nullptr, 0);
   in.bindBase(GL_SHADER_STORAGE_BUFFER, kInputBinding);
   out.bindBase(GL_SHADER_STORAGE_BUFFER, kOutputBinding);
   program_.use();

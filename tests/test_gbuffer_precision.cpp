@@ -36,7 +36,7 @@ TEST_CASE("G-buffer precision: the float layout removes the lean layout's quanti
 
 TEST_CASE("G-buffer precision: bytes per pixel of both layouts") {
   PBR_REQUIRE_GL();
-  Texture radiance(GL_RGBA16F, 10, 10);
+  Texture radiance("test.radiance", GL_RGBA16F, 10, 10);
   CHECK(GBuffer(10, 10, radiance).bytes() == 100 * 16);
   CHECK(GBuffer(10, 10, radiance, GBufferPrecision::Float).bytes() == 100 * 44);
   CHECK(std::string(toString(parseGBufferPrecision("float"))) == "float");

@@ -111,7 +111,7 @@ void main() {
 )")) {}
 
   pbr::Cubemap run(const pbr::Cubemap& environment, int sourceLevel, int size) const {
-    pbr::Cubemap out(GL_RGBA16F, size, 1);
+    pbr::Cubemap out("test.convolved", GL_RGBA16F, size, 1);
     program_.use();
     glBindImageTexture(0, environment.id(), sourceLevel, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA16F);
     glBindImageTexture(1, out.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);

@@ -87,7 +87,7 @@ vec4 probe(vec4 v) { return vec4(cubeTexelDirection(ivec3(v.xyz), int(v.w)), 0.0
 
   // A cube map whose texels hold (face, x, y), sampled by the driver along the reference's directions.
   constexpr int kSize = 4;
-  const pbr::Cubemap coded(GL_RGBA32F, kSize, 1);
+  const pbr::Cubemap coded("test.coded", GL_RGBA32F, kSize, 1);
   for (int face = 0; face < 6; ++face) {
     std::vector<glm::vec4> texels;
     for (int y = 0; y < kSize; ++y) {
@@ -95,7 +95,7 @@ vec4 probe(vec4 v) { return vec4(cubeTexelDirection(ivec3(v.xyz), int(v.w)), 0.0
     }
     glTextureSubImage3D(coded.id(), 0, 0, 0, face, kSize, kSize, 1, GL_RGBA, GL_FLOAT, texels.data());
   }
-  const pbr::Sampler nearest(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST, GL_NEAREST);
+  const pbr::Sampler nearest("test.nearest", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST, GL_NEAREST);
   glBindTextureUnit(0, coded.id());
   glBindSampler(0, nearest.id());
   const GlslProbe sampler("cube sampler", R"(

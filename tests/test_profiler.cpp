@@ -25,7 +25,7 @@ double msSince(Clock::time_point start) {
 // GPU work that cannot be skipped: a buffer clear, sized to take a measurable time on a CPU rasterizer too.
 class ClearWork {
  public:
-  ClearWork() : buffer_(size_t{16} << 20, nullptr, 0) {}
+  ClearWork() : buffer_("test.clearWork", size_t{16} << 20, nullptr, 0) {}
   void submit() const {
     const uint32_t value = 0x01020304u;
     glClearNamedBufferData(buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
@@ -51,7 +51,11 @@ GLuint compileStage(GLenum stage, const char* source) {
 // after the call returns, so, as on a real GPU, the work is still pending when the CPU moves on.
 class HeavyDraw {
  public:
-  HeavyDraw() : target_(GL_RGBA8, kSize, kSize), program_(glCreateProgram()) {
+  HeavyDraw()
+      : target_("test.heavyDraw", GL_RGBA8, kSize, kSize),
+        framebuffer_("test.heavyDraw"),
+        vao_("test.heavyDraw"),
+        program_(glCreateProgram(), "test.heavyDraw") {
     const GLuint vs = compileStage(GL_VERTEX_SHADER, R"(#version 450 core
 void main() { gl_Position = vec4(vec2(gl_VertexID == 1, gl_VertexID == 2) * 4.0 - 1.0, 0.0, 1.0); })");
     const GLuint fs = compileStage(GL_FRAGMENT_SHADER, R"(#version 450 core

@@ -37,7 +37,7 @@ std::vector<std::string> lines(const std::string& text) {
 // Runs a one-invocation compute program and returns the uint it stores at binding 0.
 uint32_t dispatchScalar(const pbr::Program& program) {
   const uint32_t sentinel = 0xdeadbeefu;
-  pbr::Buffer out(sizeof(uint32_t), &sentinel);
+  pbr::Buffer out("test.scalar", sizeof(uint32_t), &sentinel);
   out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   program.use();
   glDispatchCompute(1, 1, 1);

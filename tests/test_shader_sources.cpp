@@ -175,3 +175,13 @@ TEST_CASE("shader library: brdf.glsl tests exactly the defines that name the PBR
   }
   CHECK(permutations.size() == variants);
 }
+
+TEST_CASE("shader library: a program's label names its files and the defines that choose its permutation") {
+  // Switches on by name, other values as NAME=value; switches off and binding points are left out.
+  const ShaderDefines defines = concat({{"CLUSTERED", "1"}, {"LIGHTING_STATS", "0"}, {"HDR_IMAGE_FORMAT", "rgba16f"}},
+                                       bindingDefines({kFrameUbo}));
+  CHECK(programLabel("lighting/deferred.comp", defines) ==
+        "lighting/deferred.comp [CLUSTERED HDR_IMAGE_FORMAT=rgba16f]");
+  CHECK(programLabel("post/fxaa.comp", {}) == "post/fxaa.comp");
+  CHECK(programLabel("post/post.comp", bindingDefines({kFrameUbo})) == "post/post.comp");
+}

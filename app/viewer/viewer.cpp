@@ -60,7 +60,7 @@ void Viewer::resize(int width, int height) {
 }
 
 void Viewer::attachPresentSource() {
-  presentSource_ = std::make_unique<Framebuffer>();
+  presentSource_ = std::make_unique<Framebuffer>("viewer.present");
   presentSource_->attach(GL_COLOR_ATTACHMENT0, renderer_->ldr());
   presentSource_->checkComplete();
 }
