@@ -36,10 +36,11 @@ const std::vector<OptionSpec>& viewOptions() {
   return specs;
 }
 
-const char* kKeys =
-    "\nkeys: drag to orbit, scroll to zoom, W/A/S/D/Q/E fly, M Blinn-Phong/PBR, C clustered/brute force,\n"
-    "V debug view (final, baseColor, normals, roughness, metalness, depth, clusters), +/- exposure,\n"
-    "[/] halve/double the lights, P pause the lights, F12 screenshot, Esc quit\n";
+std::string keysHelp() {
+  return "\nkeys: drag to orbit, scroll to zoom, W/A/S/D/Q/E fly, M Blinn-Phong/PBR, C clustered/brute force,\n"
+         "V debug view (final, then " + debugChannelNames(", ") + "),\n"
+         "+/- exposure, [/] halve/double the lights, P pause the lights, F12 screenshot, Esc quit\n";
+}
 
 }  // namespace
 
@@ -51,7 +52,7 @@ int runView(const std::vector<std::string>& argv) {
                                 "Opens a window (GLFW, OpenGL 4.5) rendering the scene continuously through the same "
                                 "renderer as pbr render, with live pass timings in the title.",
                                 specs)
-              << kKeys;
+              << keysHelp();
     return 0;
   }
   ViewerOptions options;

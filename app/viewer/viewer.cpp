@@ -16,18 +16,7 @@ constexpr float kLightOrbitRadiansPerSecond = 0.3f;
 constexpr float kMaxStepSeconds = 0.1f;
 }  // namespace
 
-const char* toString(ViewerView view) {
-  switch (view) {
-    case ViewerView::Final: return "final";
-    case ViewerView::BaseColor: return "baseColor";
-    case ViewerView::Normals: return "normals";
-    case ViewerView::Roughness: return "roughness";
-    case ViewerView::Metalness: return "metalness";
-    case ViewerView::Depth: return "depth";
-    case ViewerView::Clusters: return "clusters";
-  }
-  return "?";
-}
+const char* viewName(const std::optional<DebugChannel>& view) { return view ? toString(*view) : "final"; }
 
 Viewer::Viewer(const ViewerOptions& options, Scene scene)
     : options_(options),
@@ -83,11 +72,7 @@ void Viewer::frame() {
 
   renderer_->setCamera(camera_.camera());
   FrameOptions frameOptions = options_.frame;
-  frameOptions.debugView = view_ == ViewerView::Clusters ? ClusterDebugView::Clusters : ClusterDebugView::None;
-  if (view_ != ViewerView::Final && view_ != ViewerView::Clusters) {
-    frameOptions.gbufferView =
-        static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
-  }
+  frameOptions.debug = view_;
   renderer_->renderFrame(frameOptions, profiler_);
   present();
   ++framesRendered_;
@@ -99,7 +84,7 @@ void Viewer::recordTimings(double frameMs) {
   constexpr size_t kWindow = 60;  // frames in the medians: a second or two at interactive rates
   const FrameOptions& f = options_.frame;
   const glm::ivec2 size = frameSize();
-  const std::string configuration = std::string(toString(f.model)) + toString(f.culling) + toString(view_) +
+  const std::string configuration = std::string(toString(f.model)) + toString(f.culling) + viewName(view_) +
                                     std::to_string(lightCount()) + "@" + std::to_string(size.x) + "x" +
                                     std::to_string(size.y);
   const int thisFrame = framesRendered_ - 1;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,9 +15,8 @@
 
 namespace pbr {
 
-// What the window shows: the final frame, one G-buffer channel, or the lights-per-cluster heat map.
-enum class ViewerView { Final, BaseColor, Normals, Roughness, Metalness, Depth, Clusters };
-const char* toString(ViewerView view);
+// What the window shows: the final frame (no channel) or one of kDebugChannels, as `pbr render --debug`.
+const char* viewName(const std::optional<DebugChannel>& view);  // "final" or the channel's name
 
 struct ViewerOptions {
   std::string sceneName = "default";  // built-in name or scene file, re-resolved when the light count changes
@@ -50,7 +50,8 @@ class Viewer {
   void saveScreenshot(const std::string& path) const;
 
   const FrameOptions& frameOptions() const { return options_.frame; }
-  ViewerView view() const { return view_; }
+  std::optional<DebugChannel> view() const { return view_; }
+  void setView(std::optional<DebugChannel> view) { view_ = view; }
   bool lightsPaused() const { return options_.paused; }
   size_t lightCount() const { return scene_.lights.size(); }
   glm::ivec2 frameSize() const { return {renderer_->width(), renderer_->height()}; }
@@ -77,7 +78,7 @@ class Viewer {
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<Framebuffer> presentSource_;  // wraps the renderer's LDR texture for the blit to the window
   Profiler profiler_;
-  ViewerView view_ = ViewerView::Final;
+  std::optional<DebugChannel> view_;  // the final frame when empty; V steps through kDebugChannels
   float lightTime_ = 0.0f;  // seconds of animation so far
   std::vector<PointLight> movedLights_;
   glm::ivec2 pendingSize_{0};

@@ -71,9 +71,12 @@ void Viewer::handleKey(int key) {
     case GLFW_KEY_C:
       f.culling = f.culling == Culling::Clustered ? Culling::None : Culling::Clustered;
       break;
-    case GLFW_KEY_V:
-      view_ = view_ == ViewerView::Clusters ? ViewerView::Final : static_cast<ViewerView>(static_cast<int>(view_) + 1);
+    case GLFW_KEY_V: {  // final -> each debug channel in turn -> final
+      const auto next = view_ ? std::find(kDebugChannels.begin(), kDebugChannels.end(), *view_) + 1
+                              : kDebugChannels.begin();
+      view_ = next == kDebugChannels.end() ? std::nullopt : std::optional<DebugChannel>(*next);
       break;
+    }
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
       f.exposure *= kExposureStep;
