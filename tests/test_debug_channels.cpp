@@ -395,7 +395,8 @@ TEST_CASE("debug channels: culling efficiency per pixel, brute force below clust
   }
   REQUIRE(surfacePixels > 20000);
   const double bruteMean = bruteSum / surfacePixels;
-  CHECK(bruteMean == doctest::Approx(b.stats.cullingEfficiency()).epsilon(0.005));
+  // Within 0.5 %: 8-bit colours decode to about 0.002 each, and their errors average out over the pixels.
+  CHECK(bruteMean == doctest::Approx(b.stats.cullingEfficiency()).epsilon(0.005).scale(0.0));
   CHECK(clusteredSum / bothPairs > 2.0 * bruteMean);
   CHECK(b.stats.cullingEfficiency() < c.stats.cullingEfficiency());
   checkLegendBar(b.ldr, heatValue);
@@ -431,5 +432,5 @@ TEST_CASE("debug channels: pbr render --debug efficiency writes the heat map who
   }
   REQUIRE(pixels > 10000);
   CHECK(printed > 0.01);
-  CHECK(sum / pixels == doctest::Approx(printed).epsilon(0.005));
+  CHECK(std::abs(sum / pixels - printed) < 0.001);  // printed to 3 decimals
 }
