@@ -47,7 +47,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--aa", "none|fxaa",
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
        "never filtered", toString(kDisplayAntiAliasing), ""},
-      {"--debug", "VIEW", "paint a debug view over the frame: clusters (lights per cluster) or slices", "none", ""},
+      {"--debug", "CHANNEL", "a debug channel with its legend in place of the frame: " + debugChannelNames() +
+                                 " (efficiency: contributing / evaluated light-pixel pairs per pixel; clusters and "
+                                 "slices need --culling clustered)", "", "none, the frame itself"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
       {"--exposure", "X", "exposure multiplier before ACES", "", "the scene's, 1"},
@@ -182,9 +184,11 @@ int runRender(const std::vector<std::string>& argv) {
   clusterConfig.slices = args.getInt("--slices", 1, 256);
   const bool stats = args.has("--stats");
   const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
-  const ClusterDebugView debugView = parseClusterDebugView(args.get("--debug"));
-  if (debugView != ClusterDebugView::None && culling != Culling::Clustered) {
-    throw UsageError("--debug needs --culling clustered");
+  std::optional<DebugChannel> debug;
+  if (args.has("--debug")) debug = parseDebugChannel(args.get("--debug"));
+  // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.
+  if (debug && needsClusterGrid(*debug) && culling != Culling::Clustered) {
+    throw UsageError(std::string("--debug ") + toString(*debug) + " needs --culling clustered");
   }
   const glm::ivec2 size = args.getSize("--size");
   const int warmup = args.getInt("--warmup", 0, 100000);
@@ -239,7 +243,7 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure, false, debugView, {}, aa};
+  FrameOptions options{model, variant, culling, exposure, false, debug, aa};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

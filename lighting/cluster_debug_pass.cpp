@@ -1,25 +1,23 @@
 #include "lighting/cluster_debug_pass.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
-ClusterDebugView parseClusterDebugView(const std::string& name) {
-  if (name == "none") return ClusterDebugView::None;
-  if (name == "clusters") return ClusterDebugView::Clusters;
-  if (name == "slices") return ClusterDebugView::Slices;
-  throw std::invalid_argument("unknown debug view '" + name + "' (expected clusters or slices)");
-}
-
-void ClusterDebugPass::render(ClusterDebugView view, const LightClusters& clusters, const Texture& depth,
-                              const UniformBuffer<FrameBlock>& frame, const Texture& ldr) {
-  if (view == ClusterDebugView::None) return;
-  const bool slices = view == ClusterDebugView::Slices;
+void ClusterDebugPass::render(DebugChannel channel, const LightClusters& clusters, const Texture& depth,
+                              const UniformBuffer<FrameBlock>& frame, const UniformBuffer<LegendBlock>& legend,
+                              const Texture& ldr) {
+  if (!needsClusterGrid(channel)) {
+    throw std::logic_error(std::string("the cluster debug pass does not draw ") + toString(channel));
+  }
+  const bool slices = channel == DebugChannel::Slices;
   programs_.compute("lighting/cluster_debug.comp",
                     concat({{"DEBUG_SLICES", slices ? "1" : "0"}}, lightingBindingDefines())).use();
   frame.bind(kFrameUbo.index);
+  legend.bind(lighting_binding::kLegendUbo.index);
   clusters.bindForLighting();
   glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
   glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);

@@ -1,43 +1,51 @@
 #include "lighting/gbuffer_debug_pass.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 
-const char* toString(GBufferChannel channel) {
+namespace {
+
+// The named define that selects the channel in lighting/gbuffer_debug.comp; null for the other channels.
+const char* channelDefine(DebugChannel channel) {
   switch (channel) {
-    case GBufferChannel::BaseColor: return "baseColor";
-    case GBufferChannel::Normal: return "normals";
-    case GBufferChannel::Roughness: return "roughness";
-    case GBufferChannel::Metalness: return "metalness";
-    case GBufferChannel::Depth: return "depth";
+    case DebugChannel::BaseColor: return "GBUFFER_CHANNEL_BASE_COLOR";
+    case DebugChannel::Normal: return "GBUFFER_CHANNEL_NORMAL";
+    case DebugChannel::Roughness: return "GBUFFER_CHANNEL_ROUGHNESS";
+    case DebugChannel::Metalness: return "GBUFFER_CHANNEL_METALNESS";
+    case DebugChannel::Occlusion: return "GBUFFER_CHANNEL_OCCLUSION";
+    case DebugChannel::Emission: return "GBUFFER_CHANNEL_EMISSION";
+    case DebugChannel::Depth: return "GBUFFER_CHANNEL_DEPTH";
+    case DebugChannel::Clusters:
+    case DebugChannel::Slices:
+    case DebugChannel::Efficiency: return nullptr;
   }
-  return "?";
+  return nullptr;
 }
 
-// The named define that selects the channel in lighting/gbuffer_debug.comp.
-const char* channelDefine(GBufferChannel channel) {
-  switch (channel) {
-    case GBufferChannel::BaseColor: return "GBUFFER_CHANNEL_BASE_COLOR";
-    case GBufferChannel::Normal: return "GBUFFER_CHANNEL_NORMAL";
-    case GBufferChannel::Roughness: return "GBUFFER_CHANNEL_ROUGHNESS";
-    case GBufferChannel::Metalness: return "GBUFFER_CHANNEL_METALNESS";
-    case GBufferChannel::Depth: return "GBUFFER_CHANNEL_DEPTH";
-  }
-  return "GBUFFER_CHANNEL_DEPTH";
+}  // namespace
+
+bool isGBufferChannel(DebugChannel channel) { return channelDefine(channel) != nullptr; }
+
+ShaderDefines GBufferDebugPass::permutation(DebugChannel channel) {
+  const char* define = channelDefine(channel);
+  if (!define) throw std::logic_error(std::string("the G-buffer debug pass does not draw ") + toString(channel));
+  return {{define, "1"}};
 }
 
-void GBufferDebugPass::render(GBufferChannel channel, const GBuffer& gbuffer, const UniformBuffer<FrameBlock>& frame,
-                              const Texture& ldr) {
-  programs_.compute("lighting/gbuffer_debug.comp", concat({{channelDefine(channel), "1"}}, lightingBindingDefines())).use();
+void GBufferDebugPass::render(DebugChannel channel, const GBuffer& gbuffer, const UniformBuffer<FrameBlock>& frame,
+                              const UniformBuffer<LegendBlock>& legend, const Texture& ldr) {
+  programs_.compute("lighting/gbuffer_debug.comp", concat(permutation(channel), lightingBindingDefines())).use();
   frame.bind(kFrameUbo.index);
+  legend.bind(lighting_binding::kLegendUbo.index);
   glBindTextureUnit(lighting_binding::kBaseColorUnit.index, gbuffer.baseColor.id());
   glBindTextureUnit(lighting_binding::kNormalUnit.index, gbuffer.normal.id());
   glBindTextureUnit(lighting_binding::kMaterialUnit.index, gbuffer.material.id());
   glBindTextureUnit(lighting_binding::kDepthUnit.index, gbuffer.depth.id());
-  glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glDispatchCompute(static_cast<GLuint>((ldr.width() + 7) / 8), static_cast<GLuint>((ldr.height() + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

@@ -8,11 +8,11 @@ namespace pbr {
 ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
   // Built and checked once: the lighting pass asks for its program every frame.
-  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
+  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
                          kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterViewLightsSsbo, kClusterTileMasksSsbo, kClusterTileWordsSsbo, kClusterOccupancySsbo,
                          kClusterCursorSsbo, kClusterViewConesSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
-                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
+                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
   return defines;
 }
 

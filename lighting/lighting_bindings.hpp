@@ -11,6 +11,7 @@ constexpr BindingPoint kClusterUbo{"CLUSTER_UBO", BindingKind::UniformBuffer, 4}
 constexpr BindingPoint kLightWindowUbo{"LIGHT_WINDOW_UBO", BindingKind::UniformBuffer, 6};
 constexpr BindingPoint kDirectionalLightUbo{"DIRECTIONAL_LIGHT_UBO", BindingKind::UniformBuffer, 7};
 constexpr BindingPoint kSpotWindowUbo{"SPOT_WINDOW_UBO", BindingKind::UniformBuffer, 8};
+constexpr BindingPoint kLegendUbo{"LEGEND_UBO", BindingKind::UniformBuffer, 9};  // debug views' legend text
 constexpr BindingPoint kLightSsbo{"LIGHT_SSBO", BindingKind::StorageBuffer, 0};
 constexpr BindingPoint kClusterSsbo{"CLUSTER_SSBO", BindingKind::StorageBuffer, 1};
 constexpr BindingPoint kLightIndexSsbo{"LIGHT_INDEX_SSBO", BindingKind::StorageBuffer, 2};
@@ -32,6 +33,8 @@ constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit
 // The lighting pass's radiance target, and its running sum over light chunks (LightingPass::render).
 constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 0};
 constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};
+// Per-pixel light-pixel pair counts, written by the lighting pass and read by the efficiency debug view.
+constexpr BindingPoint kPairCountImage{"PAIR_COUNT_IMAGE", BindingKind::ImageUnit, 2};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding

@@ -44,6 +44,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"HDR_MAX", maximum});
   defines.push_back({"CLUSTERED", flag(clustered)});
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
+  defines.push_back({"LIGHTING_PAIR_IMAGE", flag(o.pairCounts != nullptr)});
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
@@ -107,6 +108,10 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  if (options.pairCounts) {
+    glBindImageTexture(lighting_binding::kPairCountImage.index, options.pairCounts->id(), 0, GL_FALSE, 0,
+                       GL_READ_WRITE, GL_RG32UI);
+  }
   if (chunked) {
     glBindImageTexture(lighting_binding::kPartialRadianceImage.index, partialRadiance->id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);

@@ -40,6 +40,9 @@ struct LightingOptions {
   // PBR only: image-based lighting from these maps replaces `ambient`, and pixels without geometry show the
   // environment. Null: uniform ambient light.
   const EnvironmentMaps* environment = nullptr;
+  // Non-null: the pass also counts each pixel's light-pixel pairs into this RG32UI image of the frame's size
+  // (evaluated, contributing), what the efficiency debug view shows.
+  const Texture* pairCounts = nullptr;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops

@@ -93,7 +93,8 @@ uint64_t frameBytesPerPixel(const RendererConfig& config) {
   const uint64_t ldr = 2 * 4;  // the display image, and its copy before anti-aliasing (made on first use)
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
-  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums;
+  const uint64_t pairCounts = 8;    // RG32UI, made for the efficiency debug channel
+  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts;
 }
 
 std::vector<GLenum> frameFormats(const RendererConfig& config) {

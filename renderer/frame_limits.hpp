@@ -17,7 +17,8 @@ struct FrameLimits {
 };
 
 // Bytes per pixel a Renderer holds for a frame: the G-buffer, HDR and LDR targets (the LDR twice, for the image
-// anti-aliasing reads), the running sums of chunked lighting, and one capture of each
+// anti-aliasing reads), the running sums of chunked lighting, the efficiency channel's pair counts, and one capture
+// of each
 // (read-back buffer plus the image copied out of it). Textures are counted against host memory because the
 // software rasterizer keeps them there and a discrete GPU's driver shadows read-backs in it.
 uint64_t frameBytesPerPixel(const RendererConfig& config);

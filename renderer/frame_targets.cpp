@@ -37,4 +37,9 @@ const Texture& FrameTargets::beforeAntiAliasing() {
   return *beforeAntiAliasing_;
 }
 
+const Texture& FrameTargets::pairCounts() {
+  if (!pairCounts_) pairCounts_ = std::make_unique<Texture>("frame.pairCounts", GL_RG32UI, width, height);
+  return *pairCounts_;
+}
+
 }  // namespace pbr

@@ -28,9 +28,11 @@ struct FrameTargets {
   const Texture& partialRadiance();
   // The tone-mapped RGBA8 frame before anti-aliasing, which writes `ldr`: made on first use.
   const Texture& beforeAntiAliasing();
+  // RG32UI light-pixel pairs of each pixel (evaluated, contributing) for the efficiency debug view: made on first use.
+  const Texture& pairCounts();
 
  private:
-  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_;
+  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_;
 };
 
 }  // namespace pbr

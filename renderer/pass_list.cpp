@@ -30,6 +30,7 @@ const char* toString(FrameResource resource) {
     case FrameResource::GBuffer: return "gbuffer";
     case FrameResource::Radiance: return "radiance";
     case FrameResource::ClusterLists: return "cluster lists";
+    case FrameResource::PairCounts: return "pair counts";
     case FrameResource::Display: return "display";
     case FrameResource::Capture: return "capture";
   }

@@ -10,7 +10,9 @@ namespace pbr {
 // What the frame's passes read and write. The first four are inputs of the frame (the scene's uploaded geometry
 // and materials, its lights, its image-based lighting maps, the camera's frame block); the others are targets a
 // pass must write before another may read them.
-enum class FrameResource { Geometry, Lights, Environment, Camera, GBuffer, Radiance, ClusterLists, Display, Capture };
+enum class FrameResource {
+  Geometry, Lights, Environment, Camera, GBuffer, Radiance, ClusterLists, PairCounts, Display, Capture
+};
 const char* toString(FrameResource resource);
 
 // One entry of the frame's pass list: a name (its profiler scope), what it reads and writes, and the work.

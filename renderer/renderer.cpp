@@ -36,6 +36,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   FrameTargets& t = *targets_;
   const bool clustered = options.culling == Culling::Clustered;
   const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
+  // The cluster views need the grid that only clustered culling builds: without it the frame shows no debug view.
+  const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug));
+  const bool emission = debug && *options.debug == DebugChannel::Emission;
+  const bool efficiency = debug && *options.debug == DebugChannel::Efficiency;
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
@@ -47,19 +51,27 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   std::vector<R> lightingReads = {R::GBuffer, R::Radiance, R::Lights, R::Camera};
   if (clustered) lightingReads.push_back(R::ClusterLists);
   if (ibl) lightingReads.push_back(R::Environment);
-  passes.push_back({"lighting", lightingReads, {R::Radiance}, [this, &t, options, clustered, ibl] {
-                      const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
-                                                    t.gbuffer.depth};
-                      const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
-                      const LightingOptions lighting{options.model, options.variant, sceneData_.ambient, options.stats,
-                                                     ibl ? &maps : nullptr};
-                      const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
-                      const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
-                      scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
-                                             clustered ? &t.clusters : nullptr, partial);
-                    }});
-  // A G-buffer view replaces the display image: nothing to anti-alias.
-  const bool antiAliased = options.aa == AntiAliasing::Fxaa && !options.gbufferView;
+  std::vector<R> lightingWrites = {R::Radiance};
+  if (efficiency) lightingWrites.push_back(R::PairCounts);
+  // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
+  // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
+  if (!emission) {
+    passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency] {
+                        const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
+                                                      t.gbuffer.depth};
+                        const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
+                        const LightingOptions lighting{options.model, options.variant, sceneData_.ambient,
+                                                       options.stats, ibl ? &maps : nullptr,
+                                                       efficiency ? &t.pairCounts() : nullptr};
+                        const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
+                        const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
+                        scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
+                                               clustered ? &t.clusters : nullptr, partial);
+                      }});
+  }
+  // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster
+  // views are painted after anti-aliasing, so that their legend is never filtered.
+  const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || needsClusterGrid(*options.debug));
   passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
                       const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
                       scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr});
@@ -67,17 +79,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (antiAliased) {
     passes.push_back({"aa", {R::Display}, {R::Display}, [this, &t] { scene_.fxaa.render(t.beforeAntiAliasing(), t.ldr); }});
   }
-  if (clustered && options.debugView != ClusterDebugView::None) {
-    passes.push_back({"debug", {R::ClusterLists, R::GBuffer, R::Camera, R::Display}, {R::Display},
-                      [this, &t, view = options.debugView] {
-                        scene_.clusterDebug.render(view, t.clusters, t.gbuffer.depth, frame_, t.ldr);
-                      }});
-  }
-  if (options.gbufferView) {
-    passes.push_back({"gbuffer view", {R::GBuffer, R::Camera}, {R::Display}, [this, &t, channel = *options.gbufferView] {
-                        scene_.gbufferDebug.render(channel, t.gbuffer, frame_, t.ldr);
-                      }});
-  }
+  if (debug) passes.push_back(debugPass(*options.debug));
   if (capture.ldr || capture.hdr) {
     std::vector<R> reads;
     if (capture.ldr) reads.push_back(R::Display);
@@ -94,6 +96,31 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
 void Renderer::captureFrame(int frame, const FrameCapturer& capturer) {
   captureFrame_ = frame;
   capturer_ = &capturer;
+}
+
+FramePass Renderer::debugPass(DebugChannel channel) {
+  using R = FrameResource;
+  FrameTargets& t = *targets_;
+  std::vector<R> reads;
+  if (channel == DebugChannel::Emission) {
+    reads = {R::Display, R::Camera};
+  } else if (isGBufferChannel(channel)) {
+    reads = {R::GBuffer, R::Camera};
+  } else if (needsClusterGrid(channel)) {
+    reads = {R::ClusterLists, R::GBuffer, R::Camera, R::Display};
+  } else {
+    reads = {R::PairCounts, R::Camera};
+  }
+  return {"debug", reads, {R::Display}, [this, &t, channel] {
+            scene_.debugLegend.update(makeLegendBlock(legendText(channel, frameData_, t.clusters.dims().z)));
+            if (isGBufferChannel(channel)) {
+              scene_.gbufferDebug.render(channel, t.gbuffer, frame_, scene_.debugLegend, t.ldr);
+            } else if (needsClusterGrid(channel)) {
+              scene_.clusterDebug.render(channel, t.clusters, t.gbuffer.depth, frame_, scene_.debugLegend, t.ldr);
+            } else {
+              scene_.efficiencyDebug.render(t.pairCounts(), frame_, scene_.debugLegend, t.ldr);
+            }
+          }};
 }
 
 void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture) {

@@ -10,6 +10,7 @@
 #include "core/scene.hpp"
 #include "core/shader_library.hpp"
 #include "core/uniform_buffer.hpp"
+#include "lighting/debug_channel.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
 #include "renderer/renderer_config.hpp"
@@ -23,9 +24,10 @@ struct FrameOptions {
   Culling culling = Culling::Clustered;
   float exposure = 1.0f;
   bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
-  ClusterDebugView debugView = ClusterDebugView::None;  // painted over the final frame (clustered only)
-  std::optional<GBufferChannel> gbufferView;            // replaces the final frame with one G-buffer channel
-  AntiAliasing aa = AntiAliasing::None;                  // of the display image, before any debug view
+  // A debug channel in place of the final frame, with its legend. Clusters and slices are painted over the
+  // (anti-aliased) frame and need clustered culling; the others replace the frame, which is then not anti-aliased.
+  std::optional<DebugChannel> debug;
+  AntiAliasing aa = AntiAliasing::None;  // of the display image, before any debug view
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -112,6 +114,9 @@ class Renderer {
   int height() const { return targets_->height; }
 
  private:
+  // The "debug" pass of the list: what the channel reads, and the work.
+  FramePass debugPass(DebugChannel channel);
+
   const Scene& sceneData_;
   RendererConfig config_;
   int targetBuilds_ = 1;

@@ -22,7 +22,8 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       post(programs),
       fxaa(programs),
       clusterDebug(programs),
-      gbufferDebug(programs) {
+      gbufferDebug(programs),
+      efficiencyDebug(programs) {
   lights.upload(scene.lights, scene.directionalLights);
 }
 

@@ -7,6 +7,7 @@
 #include "gbuffer/gbuffer_pass.hpp"
 #include "ibl/ibl_maps.hpp"
 #include "lighting/cluster_debug_pass.hpp"
+#include "lighting/efficiency_debug_pass.hpp"
 #include "lighting/gbuffer_debug_pass.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/lighting_pass.hpp"
@@ -33,6 +34,8 @@ struct SceneResources {
   FxaaPass fxaa;
   ClusterDebugPass clusterDebug;
   GBufferDebugPass gbufferDebug;
+  EfficiencyDebugPass efficiencyDebug;
+  UniformBuffer<LegendBlock> debugLegend{"debug.legend"};  // the text of the debug channel's legend, set by the frame that shows it
 };
 
 }  // namespace pbr

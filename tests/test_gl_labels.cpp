@@ -166,7 +166,7 @@ TEST_CASE("labels: every GL object a renderer makes is labelled, the G-buffer, c
   FrameOptions options;
   options.stats = true;
   options.aa = AntiAliasing::Fxaa;
-  options.debugView = ClusterDebugView::Clusters;
+  options.debug = DebugChannel::Clusters;
   ImageRgba8 ldr;
   renderer.renderFrame(options, profiler, {&ldr, nullptr});
   options.model = ShadingModel::BlinnPhong;
@@ -250,7 +250,7 @@ TEST_CASE("debug groups: a frame is one group per pass, named and ordered as its
   Profiler profiler(TimingMode::Serializing);
   FrameOptions options;
   options.aa = AntiAliasing::Fxaa;
-  options.debugView = ClusterDebugView::Slices;
+  options.debug = DebugChannel::Slices;
   ImageRgba8 ldr;
   const FrameCapture capture{&ldr, nullptr};
   renderer.renderFrame(options, profiler, capture);  // compiles and sizes: not what is checked

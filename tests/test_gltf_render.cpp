@@ -413,7 +413,7 @@ TEST_CASE("gltf render: KHR_texture_transform moves, turns and scales the base c
   const pbr::Scene scene = quadScene(path);
   REQUIRE(scene.lights.empty());  // the HDR frame is the emission alone
   pbr::FrameOptions baseColorView = options();
-  baseColorView.gbufferView = pbr::GBufferChannel::BaseColor;
+  baseColorView.debug = pbr::DebugChannel::BaseColor;
   const pbr::test::RenderedFrame f = pbr::test::renderScene(scene, kSize, baseColorView, 1);
   const auto decode = [](uint8_t code) {
     const double c = code / 255.0;

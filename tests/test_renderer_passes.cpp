@@ -34,16 +34,29 @@ TEST_CASE("pass list: the renderer declares each configuration's passes in order
   CHECK((clustered[2].reads == std::vector<R>{R::GBuffer, R::Radiance, R::Lights, R::Camera, R::ClusterLists}));
 
   options.culling = Culling::None;
-  options.gbufferView = GBufferChannel::Normal;
+  options.debug = DebugChannel::Normal;
+  options.aa = AntiAliasing::Fxaa;  // a channel that replaces the frame is not anti-aliased
   ImageRgba8 ldr;
   CHECK(names(renderer.passList(options, {&ldr, nullptr})) ==
-        std::vector<std::string>{"gbuffer", "lighting", "post", "gbuffer view", "readback"});
+        std::vector<std::string>{"gbuffer", "lighting", "post", "debug", "readback"});
+  // Without the cluster grid the cluster views are left out.
+  options.debug = DebugChannel::Slices;
+  CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "lighting", "post", "aa"});
+  // The efficiency view reads the lighting pass's per-pixel pair counts, brute force too.
+  options.debug = DebugChannel::Efficiency;
+  const PassList efficiency = renderer.passList(options);
+  CHECK(names(efficiency) == std::vector<std::string>{"gbuffer", "lighting", "post", "debug"});
+  CHECK((efficiency[1].writes == std::vector<R>{R::Radiance, R::PairCounts}));
+  CHECK((efficiency[3].reads == std::vector<R>{R::PairCounts, R::Camera}));
+  // Emission is post's picture of the radiance the geometry pass wrote: no lighting pass.
+  options.debug = DebugChannel::Emission;
+  CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "post", "debug"});
 
+  // The cluster views are painted over the anti-aliased frame, so that their legend is not filtered.
   options.culling = Culling::Clustered;
-  options.gbufferView.reset();
-  options.debugView = ClusterDebugView::Slices;
+  options.debug = DebugChannel::Slices;
   CHECK(names(renderer.passList(options)) ==
-        std::vector<std::string>{"gbuffer", "cluster", "lighting", "post", "debug"});
+        std::vector<std::string>{"gbuffer", "cluster", "lighting", "post", "aa", "debug"});
 
   // A scene with an environment: the lighting pass reads the maps, for PBR only.
   Scene lit = scene;

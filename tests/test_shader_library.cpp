@@ -15,6 +15,8 @@
 #include "core/shader_library.hpp"
 #include "gbuffer/gbuffer_bindings.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "lighting/debug_channel.hpp"
+#include "lighting/gbuffer_debug_pass.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "lighting/shading_model.hpp"
@@ -174,12 +176,18 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   // Every model x culling x stats x (light chunking, spot lights) with the standard PBR terms, then every form of
   // every PBR term once.
   DefineSets lighting, ibl;
+  const pbr::Texture pairCounts("test.pairCounts", GL_RG32UI, 1, 1);
   for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
     for (const bool clustered : {false, true}) {
       for (const bool stats : {false, true}) {
         pbr::LightingOptions options;
         options.model = model;
         options.stats = stats;
+        // The per-pixel pair counts of the efficiency view, alone and with the per-workgroup ones.
+        options.pairCounts = &pairCounts;
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        options.pairCounts = nullptr;
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, false, true));
@@ -207,9 +215,10 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_clear.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
-  for (const char* channel : {"GBUFFER_CHANNEL_BASE_COLOR", "GBUFFER_CHANNEL_NORMAL", "GBUFFER_CHANNEL_ROUGHNESS",
-                              "GBUFFER_CHANNEL_METALNESS", "GBUFFER_CHANNEL_DEPTH"}) {
-    checkComputeCompiles("lighting/gbuffer_debug.comp", DefineSets{ShaderDefines{{channel, "1"}}});
+  checkComputeCompiles("lighting/efficiency_debug.comp", DefineSets{ShaderDefines{}});
+  for (const pbr::DebugChannel channel : pbr::kDebugChannels) {
+    if (!pbr::isGBufferChannel(channel)) continue;
+    checkComputeCompiles("lighting/gbuffer_debug.comp", DefineSets{pbr::GBufferDebugPass::permutation(channel)});
   }
   checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}}, pbr::bindingDefines({pbr::kPostUbo}));
   const ShaderLibrary shaders;

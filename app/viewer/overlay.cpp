@@ -200,15 +200,15 @@ void Overlay::controls(Viewer& viewer) {
   ImGui::SameLine();
   if (ImGui::RadioButton("none (brute force)", &culling, 1)) viewer.setCulling(Culling::None);
 
-  if (ImGui::BeginCombo("debug view", toString(viewer.view()))) {
-    for (int i = 0; i <= static_cast<int>(ViewerView::Clusters); ++i) {
-      const ViewerView view = static_cast<ViewerView>(i);
-      if (ImGui::Selectable(toString(view), view == viewer.view())) viewer.setView(view);
+  if (ImGui::BeginCombo("debug view", viewName(viewer.view()))) {
+    if (ImGui::Selectable("final", !viewer.view())) viewer.setView(std::nullopt);
+    for (const DebugChannel channel : kDebugChannels) {
+      if (ImGui::Selectable(toString(channel), viewer.view() == channel)) viewer.setView(channel);
     }
     ImGui::EndCombo();
   }
-  if (viewer.view() == ViewerView::Clusters && f.culling != Culling::Clustered) {
-    ImGui::TextDisabled("(the cluster view needs clustered culling)");
+  if (viewer.view() && needsClusterGrid(*viewer.view()) && f.culling != Culling::Clustered) {
+    ImGui::TextDisabled("(the cluster views need clustered culling)");
   }
 
   // Exposure in stops of the display multiplier, and the camera's EV100 that gives it with the scene's
@@ -298,9 +298,9 @@ void Overlay::camera(Viewer& viewer) {
 
 void Overlay::keys() {
   for (const KeyHelp& key : viewerKeys()) {
-    ImGui::TextUnformatted(key.keys);
+    ImGui::TextUnformatted(key.keys.c_str());
     ImGui::SameLine(110.0f);
-    ImGui::TextWrapped("%s", key.action);
+    ImGui::TextWrapped("%s", key.action.c_str());
   }
 }
 

@@ -21,18 +21,7 @@ constexpr float kMaxStepSeconds = 0.1f;
 constexpr double kStatsIntervalMs = 250.0;  // live to the eye, and the GPU waited for only four times a second
 }  // namespace
 
-const char* toString(ViewerView view) {
-  switch (view) {
-    case ViewerView::Final: return "final";
-    case ViewerView::BaseColor: return "baseColor";
-    case ViewerView::Normals: return "normals";
-    case ViewerView::Roughness: return "roughness";
-    case ViewerView::Metalness: return "metalness";
-    case ViewerView::Depth: return "depth";
-    case ViewerView::Clusters: return "clusters";
-  }
-  return "?";
-}
+const char* viewName(const std::optional<DebugChannel>& view) { return view ? toString(*view) : "final"; }
 
 Viewer::Viewer(const ViewerOptions& options, Scene scene)
     : options_(options),
@@ -93,11 +82,7 @@ void Viewer::frame() {
 
   renderer_->setCamera(camera_.camera());
   FrameOptions frameOptions = options_.frame;
-  frameOptions.debugView = view_ == ViewerView::Clusters ? ClusterDebugView::Clusters : ClusterDebugView::None;
-  if (view_ != ViewerView::Final && view_ != ViewerView::Clusters) {
-    frameOptions.gbufferView =
-        static_cast<GBufferChannel>(static_cast<int>(view_) - static_cast<int>(ViewerView::BaseColor));
-  }
+  frameOptions.debug = view_;
   renderer_->renderFrame(frameOptions, profiler_);
   ++framesRendered_;
   recordTimings(frameMs);
@@ -118,7 +103,7 @@ void Viewer::recordTimings(double frameMs) {
   const FrameOptions& f = options_.frame;
   const glm::ivec2 size = frameSize();
   const std::string configuration = std::string(toString(f.model)) + toString(f.variant) + toString(f.culling) +
-                                    toString(view_) + std::to_string(lightCount()) + "@" + std::to_string(size.x) +
+                                    viewName(view_) + std::to_string(lightCount()) + "@" + std::to_string(size.x) +
                                     "x" + std::to_string(size.y) + (f.stats ? " counters " : " ") +
                                     (scene_.environment ? scene_.environment->file + "|" : "none");
   const int thisFrame = framesRendered_ - 1;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,8 @@
 
 namespace pbr {
 
-// What the window shows: the final frame, one G-buffer channel, or the lights-per-cluster heat map.
-enum class ViewerView { Final, BaseColor, Normals, Roughness, Metalness, Depth, Clusters };
-const char* toString(ViewerView view);
+// What the window shows: the final frame (no channel) or one of kDebugChannels, as `pbr render --debug`.
+const char* viewName(const std::optional<DebugChannel>& view);  // "final" or the channel's name
 
 struct ViewerOptions {
   std::string sceneName = "default";  // built-in name or scene file, re-resolved when the light count changes
@@ -36,8 +36,8 @@ class Overlay;
 
 // One line per key or gesture of the viewer, as `pbr view --help` and the overlay list them.
 struct KeyHelp {
-  const char* keys;
-  const char* action;
+  std::string keys;
+  std::string action;
 };
 const std::vector<KeyHelp>& viewerKeys();
 
@@ -63,7 +63,7 @@ class Viewer {
   void setModel(ShadingModel model) { options_.frame.model = model; }
   void setVariant(const ShadingVariant& variant) { options_.frame.variant = variant; }
   void setCulling(Culling culling) { options_.frame.culling = culling; }
-  void setView(ViewerView view) { view_ = view; }
+  void setView(std::optional<DebugChannel> view) { view_ = view; }
   void setExposure(float exposure) { options_.frame.exposure = exposure; }
   void setPaused(bool paused) { options_.paused = paused; }
   void setGpuCounters(bool on) { options_.frame.stats = on; }
@@ -90,7 +90,7 @@ class Viewer {
 
   const FrameOptions& frameOptions() const { return options_.frame; }
   const ViewerOptions& options() const { return options_; }
-  ViewerView view() const { return view_; }
+  std::optional<DebugChannel> view() const { return view_; }
   bool lightsPaused() const { return options_.paused; }
   size_t lightCount() const { return scene_.lights.size(); }
   const Scene& scene() const { return scene_; }
@@ -128,7 +128,7 @@ class Viewer {
   std::unique_ptr<Framebuffer> presentSource_;  // wraps the renderer's LDR texture for the blit to the window
   Profiler profiler_;
   std::unique_ptr<Overlay> overlay_;  // after the callbacks it chains to, before the context goes
-  ViewerView view_ = ViewerView::Final;
+  std::optional<DebugChannel> view_;  // the final frame when empty; V steps through kDebugChannels
   float lightTime_ = 0.0f;  // seconds of animation so far
   std::vector<PointLight> movedLights_;
   glm::ivec2 pendingSize_{0};

@@ -32,7 +32,7 @@ const std::vector<KeyHelp>& viewerKeys() {
       {"W/A/S/D/Q/E", "fly"},
       {"M", "Blinn-Phong / PBR"},
       {"C", "clustered / brute force"},
-      {"V", "debug view: final, baseColor, normals, roughness, metalness, depth, clusters"},
+      {"V", "debug view: final, then " + debugChannelNames(", ")},
       {"+ / -", "exposure by half a stop"},
       {"[ / ]", "halve / double the lights"},
       {"P", "pause the lights"},
@@ -93,9 +93,12 @@ void Viewer::handleKey(int key) {
     case GLFW_KEY_C:
       setCulling(f.culling == Culling::Clustered ? Culling::None : Culling::Clustered);
       break;
-    case GLFW_KEY_V:
-      setView(view_ == ViewerView::Clusters ? ViewerView::Final : static_cast<ViewerView>(static_cast<int>(view_) + 1));
+    case GLFW_KEY_V: {  // final -> each debug channel in turn -> final
+      const auto next = view_ ? std::find(kDebugChannels.begin(), kDebugChannels.end(), *view_) + 1
+                              : kDebugChannels.begin();
+      setView(next == kDebugChannels.end() ? std::nullopt : std::optional<DebugChannel>(*next));
       break;
+    }
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
       setExposure(f.exposure * kExposureStep);

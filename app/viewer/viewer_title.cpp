@@ -44,9 +44,9 @@ void Viewer::updateTitle() {
   const FrameOptions& f = options_.frame;
   std::snprintf(buffer, sizeof buffer, " ms (%s) | %zu lights | %s %s | %s | exposure %.2f%s",
                 profiler_.mode() == TimingMode::GpuQueries ? "GPU" : "serialized", lightCount(), toString(f.model),
-                toString(f.culling), toString(view_), f.exposure, options_.paused ? " | paused" : "");
+                toString(f.culling), viewName(view_), f.exposure, options_.paused ? " | paused" : "");
   title += buffer;
-  if (view_ == ViewerView::Clusters && f.culling != Culling::Clustered) title += " (needs clustered culling: C)";
+  if (view_ && needsClusterGrid(*view_) && f.culling != Culling::Clustered) title += " (needs clustered culling: C)";
   glfwSetWindowTitle(window_.window(), title.c_str());
 }
 

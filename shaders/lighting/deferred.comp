@@ -1,7 +1,8 @@
 #version 450 core
 // Deferred lighting, one invocation per pixel. CLUSTERED 0 shades every light of the frame (the brute-force
 // reference path); CLUSTERED 1 shades only the lights listed for the pixel's cluster, in the same ascending
-// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup. IBL (PBR
+// order, so both paths produce the same sums. LIGHTING_STATS counts light-pixel pairs per workgroup,
+// LIGHTING_PAIR_IMAGE per pixel (for the efficiency debug view). IBL (PBR
 // only) lights with the environment maps of pbr::IblMaps instead of the uniform ambient radiance. The radiance
 // image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it. LIGHT_CHUNKS splits
 // the light loop over several dispatches: for more list entries than one invocation may loop over, and, shading
@@ -41,6 +42,11 @@ layout(std140, binding = SPOT_WINDOW_UBO) uniform SpotWindow { vec4 windowCones[
 // Per workgroup: light-pixel pairs evaluated, and pairs that contribute (attenuation > 0 and n.l > 0).
 layout(std430, binding = LIGHTING_STATS_SSBO) buffer PairStats { uvec2 groupPairs[]; };
 #endif
+#if LIGHTING_PAIR_IMAGE
+// Per pixel: the same two counts, summed over the dispatches of LIGHT_CHUNKS.
+layout(rg32ui, binding = PAIR_COUNT_IMAGE) uniform uimage2D pairCounts;
+#endif
+#define COUNT_PAIRS (LIGHTING_STATS || LIGHTING_PAIR_IMAGE)
 
 // The radiance target's format (LightingPass::program): the qualifier must match the texture's, and HDR_MAX is
 // its largest finite value, so that a clamp keeps the store from rounding to Inf.
@@ -58,7 +64,7 @@ layout(location = 0) uniform uvec4 lightChunk;
 layout(rgba32f, binding = PARTIAL_RADIANCE_IMAGE) uniform image2D partialRadiance;
 #endif
 
-#if LIGHTING_STATS
+#if COUNT_PAIRS
 bool contributes(Surface s, PointLight light, vec4 cone) {
   float d2;
   vec3 L = directionToLight(s.position, s.normal, light, d2);
@@ -93,7 +99,7 @@ void visitLight(Surface s, uint k) {
   const vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
   gColor += shadeLight(s, light, cone);
-#if LIGHTING_STATS
+#if COUNT_PAIRS
   gContributing += contributes(s, light, cone) ? 1u : 0u;
 #endif
 }
@@ -124,6 +130,9 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   Surface s;
   if (!readSurface(p, s)) {
+#if LIGHTING_PAIR_IMAGE
+    imageStore(pairCounts, p, uvec4(0u));
+#endif
 #if LIGHT_CHUNKS
     if (lightChunk.w == 0u) return;
 #endif
@@ -174,6 +183,13 @@ void main() {
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   atomicAdd(groupPairs[group].x, end - begin);
   atomicAdd(groupPairs[group].y, gContributing);
+#endif
+#if LIGHTING_PAIR_IMAGE
+  uvec2 pairs = uvec2(end - begin, gContributing);
+#if LIGHT_CHUNKS
+  if (lightChunk.z == 0u) pairs += imageLoad(pairCounts, p).xy;
+#endif
+  imageStore(pairCounts, p, uvec4(pairs, 0u, 0u));
 #endif
 #if LIGHT_CHUNKS
   if (lightChunk.w == 0u) {
