@@ -222,10 +222,12 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string directional =
       scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
+  // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
+  const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
+                                                                  : std::string(toString(aa));
   std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s\n", scene.name.c_str(), size.x, size.y,
               scene.lights.size(), directional.c_str(), toString(model),
-              (" (" + describeTerms(model, variant) + ")").c_str(),
-              toString(culling), toString(aa));
+              (" (" + describeTerms(model, variant) + ")").c_str(), toString(culling), shownAa.c_str());
 
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(timing, info.renderer));
