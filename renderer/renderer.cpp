@@ -40,6 +40,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug));
   const bool emission = debug && *options.debug == DebugChannel::Emission;
   const bool efficiency = debug && *options.debug == DebugChannel::Efficiency;
+  // The surface channels draw the G-buffer alone and the efficiency channel the lighting pass's pair counts; both
+  // write every display pixel, so the passes whose output they would replace are left out.
+  const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
+  const bool replacesDisplay = surfaceChannel || efficiency;
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
@@ -55,7 +59,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (efficiency) lightingWrites.push_back(R::PairCounts);
   // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
   // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
-  if (!emission) {
+  if (!emission && !surfaceChannel) {
     passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency] {
                         const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
                                                       t.gbuffer.depth};
@@ -72,10 +76,12 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster
   // views are painted after anti-aliasing, so that their legend is never filtered.
   const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || needsClusterGrid(*options.debug));
-  passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
-                      const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
-                      scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr});
-                    }});
+  if (!replacesDisplay) {
+    passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
+                        const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
+                        scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr});
+                      }});
+  }
   if (antiAliased) {
     passes.push_back({"aa", {R::Display}, {R::Display}, [this, &t] { scene_.fxaa.render(t.beforeAntiAliasing(), t.ldr); }});
   }

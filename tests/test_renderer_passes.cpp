@@ -37,17 +37,18 @@ TEST_CASE("pass list: the renderer declares each configuration's passes in order
   options.debug = DebugChannel::Normal;
   options.aa = AntiAliasing::Fxaa;  // a channel that replaces the frame is not anti-aliased
   ImageRgba8 ldr;
+  // A surface channel draws the G-buffer over every display pixel: neither lighting nor post is run for it.
   CHECK(names(renderer.passList(options, {&ldr, nullptr})) ==
-        std::vector<std::string>{"gbuffer", "lighting", "post", "debug", "readback"});
+        std::vector<std::string>{"gbuffer", "debug", "readback"});
   // Without the cluster grid the cluster views are left out.
   options.debug = DebugChannel::Slices;
   CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "lighting", "post", "aa"});
   // The efficiency view reads the lighting pass's per-pixel pair counts, brute force too.
   options.debug = DebugChannel::Efficiency;
   const PassList efficiency = renderer.passList(options);
-  CHECK(names(efficiency) == std::vector<std::string>{"gbuffer", "lighting", "post", "debug"});
+  CHECK(names(efficiency) == std::vector<std::string>{"gbuffer", "lighting", "debug"});
   CHECK((efficiency[1].writes == std::vector<R>{R::Radiance, R::PairCounts}));
-  CHECK((efficiency[3].reads == std::vector<R>{R::PairCounts, R::Camera}));
+  CHECK((efficiency[2].reads == std::vector<R>{R::PairCounts, R::Camera}));
   // Emission is post's picture of the radiance the geometry pass wrote: no lighting pass.
   options.debug = DebugChannel::Emission;
   CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "post", "debug"});
