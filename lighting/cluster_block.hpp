@@ -10,8 +10,9 @@ struct ClusterBlock {
   glm::uvec4 dims;     // tiles x, tiles y, depth slices, tile size in pixels
   glm::vec4 slicing;   // near, far, slice scale, slice bias
   glm::uvec4 counts;   // lights, clusters, index-list capacity, stats enabled
+  glm::uvec4 window;   // lights of the masks: first, end; mask words per slot, slot capacity
 };
-static_assert(sizeof(ClusterBlock) == 48, "ClusterBlock must match its std140 layout");
+static_assert(sizeof(ClusterBlock) == 64, "ClusterBlock must match its std140 layout");
 
 // std430 mirrors of the per-cluster records in shaders/lighting/clusters.glsl.
 struct ClusterHeader {
@@ -21,8 +22,8 @@ struct ClusterHeader {
 static_assert(sizeof(ClusterHeader) == 8, "ClusterHeader must match its std430 layout");
 // Words per occupancy box in shaders/lighting/clusters.glsl (clusterBoxBase): a view-space AABB as ordered bits.
 constexpr uint32_t kOccupancyWords = 6;
-// One light of cluster_lights.comp's output: its view-space bounding sphere (xyz centre, w radius).
-using ClusterViewLight = glm::vec4;
+// Per cluster and tile, cluster_activate.comp's decoded box: two vec4 (minimum, maximum corner).
+constexpr uint32_t kBoxBytes = 32;
 
 // std430 mirror of `Status` in shaders/lighting/cluster_scan.comp.
 struct ClusterStatus {
@@ -33,7 +34,7 @@ struct ClusterStatus {
   uint32_t overflowed;
   uint32_t capacity;
   uint32_t activeClusters;  // clusters holding a surface
-  uint32_t unused;
+  uint32_t unslotted;       // of those, clusters beyond the masks' slot capacity (shaded by brute force)
 };
 static_assert(sizeof(ClusterStatus) == 32, "ClusterStatus must match its std430 layout");
 

@@ -13,18 +13,19 @@ namespace pbr {
 
 namespace {
 
-ShaderDefines assignDefines(bool spotLights, bool fill, bool stats) {
-  return concat({{"SPOT_LIGHTS", spotLights ? "1" : "0"}, {"ASSIGN_FILL", fill ? "1" : "0"},
-                 {"ASSIGN_STATS", stats ? "1" : "0"}},
+ShaderDefines lightPassDefines(bool spotLights, bool count, bool mark, bool stats, bool big) {
+  return concat({{"SPOT_LIGHTS", spotLights ? "1" : "0"}, {"LIGHT_COUNT", count ? "1" : "0"},
+                 {"LIGHT_MARK", mark ? "1" : "0"}, {"ASSIGN_STATS", stats ? "1" : "0"}, {"BIG_LIGHTS", big ? "1" : "0"}},
                 lightingBindingDefines());
 }
 
 GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
 
-// Words of one tile's light mask (a bit per light), and of its summary (a bit per mask word): clusters.glsl's
-// clusterMaskWords and clusterSummaryWords.
+// Words of one slot's light mask over a window of lights (a bit per light), and of its summary (a bit per mask
+// word): clusters.glsl's slotMaskWords and slotSummaryWords.
 uint64_t maskWords(uint32_t lights) { return (uint64_t(lights) + 31) / 32; }
 uint64_t summaryWords(uint32_t lights) { return (maskWords(lights) + 31) / 32; }
+uint64_t slotBytes(uint32_t lights) { return (maskWords(lights) + summaryWords(lights)) * sizeof(uint32_t); }
 
 // A storage buffer of `bytes` (at least one word, so that it can be bound), all zero.
 std::unique_ptr<Buffer> zeroedBuffer(const char* label, uint64_t bytes) {
@@ -34,21 +35,7 @@ std::unique_ptr<Buffer> zeroedBuffer(const char* label, uint64_t bytes) {
   return buffer;
 }
 
-std::string mebibytes(uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f MiB", bytes / double(1 << 20));
-  return text;
-}
-
 }  // namespace
-
-LightClusters::AssignPrograms LightClusters::assignPrograms(ProgramCache& programs, bool spotLights) {
-  const ShaderDefines lights = concat({{"SPOT_LIGHTS", spotLights ? "1" : "0"}}, lightingBindingDefines());
-  return {&programs.compute("lighting/cluster_lights.comp", lights),
-          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, false, false)),
-          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, false, true)),
-          &programs.compute("lighting/cluster_assign.comp", assignDefines(spotLights, true, false))};
-}
 
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) {
   return nearPlane * std::pow(farPlane / nearPlane, static_cast<float>(slice) / static_cast<float>(slices));
@@ -58,9 +45,10 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
     : config_(config),
       programs_(programs),
       occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
-      pointPrograms_(assignPrograms(programs, false)),
+      activateProgram_(programs.compute("lighting/cluster_activate.comp", lightingBindingDefines())),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
+      fillProgram_(programs.compute("lighting/cluster_fill.comp", lightingBindingDefines())),
       clearProgram_(programs.compute("lighting/cluster_clear.comp", lightingBindingDefines())),
       status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
@@ -78,8 +66,8 @@ LightClusters::~LightClusters() {
 
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
-  for (const auto* b : {&headers_, &cursors_, &occupancy_, &indices_, &visible_, &viewLights_, &viewCones_,
-                        &tileMasks_, &tileWords_}) {
+  for (const auto* b : {&headers_, &cursors_, &occupancy_, &boxes_, &clusterSlots_, &slotClusters_, &indices_,
+                        &visible_, &slotMasks_, &bigLights_}) {
     total += *b ? (*b)->size() : 0;
   }
   return total;
@@ -100,9 +88,11 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
   const uint64_t occupancyBytes = (clusters + tiles) * kOccupancyWords * sizeof(uint32_t);
   occupancy_ = std::make_unique<Buffer>("clusters.occupancy", occupancyBytes, nullptr, 0);
-  // The masks' layout depends on the tile count: new ones start empty.
-  tileMasks_.reset();
-  tileWords_.reset();
+  boxes_ = std::make_unique<Buffer>("clusters.boxes", (clusters + tiles) * kBoxBytes, nullptr, 0);
+  clusterSlots_ = std::make_unique<Buffer>("clusters.slots", clusters * sizeof(uint32_t), nullptr, 0);
+  slotClusters_.reset();
+  slotCapacity_ = 0;
+  expectedActive_ = 0;
   block_.update(blockData_);
   sizedFor_ = kNotSized;
   gridKey_ = f.viewport;
@@ -138,28 +128,38 @@ void LightClusters::ensureCapacity(uint64_t entries) {
   capacity_ = static_cast<uint32_t>(entries);
 }
 
-// Grown, never shrunk, and for at least one light, so that the buffers always exist to be bound. The masks are
-// all zero between frames (cluster_clear.comp), whatever light count set them.
-void LightClusters::ensureLightBuffers(uint32_t lights, bool spotLights) {
-  const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
+// Grown, never shrunk, and for at least one light, so that it can be bound.
+void LightClusters::ensureLightBuffers(uint32_t lights) {
+  const uint64_t bytes = 16 + uint64_t(std::max(lights, 1u)) * sizeof(uint32_t);
+  if (!bigLights_ || bigLights_->size() < bytes) bigLights_ = std::make_unique<Buffer>("clusters.bigLights", bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+// A quarter of headroom over the clusters expected to hold a surface, as for the list. All lights in one window
+// when their masks fit the budget; else windows of a multiple of 1024 lights (the fill's chunks start on summary
+// words), at least 1024, with fewer slots if even those do not fit. The masks are all zero between windows
+// (cluster_clear.comp), whatever layout set them, so a buffer is only ever replaced by a larger one.
+bool LightClusters::planMasks(uint32_t lights, uint32_t expectedActive) {
+  const uint32_t clusters = blockData_.counts.y;
+  const uint64_t budget = std::min(config_.maxMaskBytes, maxBlockBytes_);
+  uint64_t capacity = std::min<uint64_t>(clusters, std::max<uint64_t>(64, expectedActive + expectedActive / 4ull));
+  capacity = std::max<uint64_t>(capacity, slotCapacity_);
   lights = std::max(lights, 1u);
-  const uint64_t viewBytes = uint64_t(lights) * sizeof(ClusterViewLight);
-  const uint64_t maskBytes = tiles * maskWords(lights) * sizeof(uint32_t);
-  const uint64_t summaryBytes = tiles * summaryWords(lights) * sizeof(uint32_t);
-  if (maskBytes > maxBlockBytes_) {
-    throw std::runtime_error(std::to_string(lights) + " lights over " + std::to_string(tiles) + " screen tiles need " +
-                             mebibytes(maskBytes) + " of tile masks, more than the OpenGL driver's largest storage "
-                             "buffer (" + mebibytes(maxBlockBytes_) + "): use fewer lights, a smaller frame or a "
-                             "larger --tile");
+  uint64_t window = lights;
+  if (capacity * slotBytes(lights) > budget) {
+    window = std::max<uint64_t>(1024, budget / capacity * 8 * 32 / 33 / 1024 * 1024);
+    capacity = std::min<uint64_t>(capacity, std::max<uint64_t>(1, budget / slotBytes(static_cast<uint32_t>(window))));
   }
-  if (!viewLights_ || viewLights_->size() < viewBytes) {
-    viewLights_ = std::make_unique<Buffer>("clusters.viewLights", viewBytes, nullptr, 0);
+  const bool changed = capacity != slotCapacity_ || window != windowLights_;
+  slotCapacity_ = static_cast<uint32_t>(capacity);
+  windowLights_ = static_cast<uint32_t>(window);
+  const uint64_t maskBytes = capacity * slotBytes(windowLights_);
+  if (!slotMasks_ || slotMasks_->size() < maskBytes) slotMasks_ = zeroedBuffer("clusters.slotMasks", maskBytes);
+  const uint64_t slotBytesTotal = (1 + capacity) * sizeof(uint32_t);
+  if (!slotClusters_ || slotClusters_->size() < slotBytesTotal) {
+    slotClusters_ = std::make_unique<Buffer>("clusters.slotClusters", slotBytesTotal, nullptr, 0);
   }
-  if (spotLights && (!viewCones_ || viewCones_->size() < 2 * viewBytes)) {
-    viewCones_ = std::make_unique<Buffer>("clusters.viewCones", 2 * viewBytes, nullptr, 0);
-  }
-  if (!tileMasks_ || tileMasks_->size() < maskBytes) tileMasks_ = zeroedBuffer("clusters.tileMasks", maskBytes);
-  if (!tileWords_ || tileWords_->size() < summaryBytes) tileWords_ = zeroedBuffer("clusters.tileWords", summaryBytes);
+  blockData_.window = glm::uvec4(0, std::min(lights, windowLights_), maskWords(windowLights_), slotCapacity_);
+  return changed;
 }
 
 void LightClusters::growFromPastDemand() {
@@ -171,6 +171,7 @@ void LightClusters::growFromPastDemand() {
     ClusterStatus s{};
     glGetNamedBufferSubData(p.buffer->id(), 0, sizeof s, &s);
     growTo(s.demand);
+    expectedActive_ = std::max(expectedActive_, s.activeClusters);
   }
 }
 
@@ -183,14 +184,13 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
                            const Texture& depth, bool stats) {
   if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
   growFromPastDemand();
-  ensureLightBuffers(lights.count(), lights.hasSpotLights());
+  const uint32_t count = lights.count();
+  ensureLightBuffers(count);
+  planMasks(count, expectedActive_);
   const uint32_t clusters = blockData_.counts.y;
-  const uint64_t tiles = uint64_t(dims_.x) * dims_.y;
-  blockData_.counts = glm::uvec4(lights.count(), clusters, capacity_, stats ? 1u : 0u);
+  blockData_.counts = glm::uvec4(count, clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
-  if (stats && (!visible_ || visible_->size() < lights.count() * 4ull)) {
-    visible_ = zeroedBuffer("clusters.visibleLights", lights.count() * 4ull);
-  }
+  if (stats && (!visible_ || visible_->size() < count * 4ull)) visible_ = zeroedBuffer("clusters.visibleLights", count * 4ull);
   const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
   glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
 
@@ -200,11 +200,11 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
   cursors_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterCursorSsbo.index);
   occupancy_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterOccupancySsbo.index);
+  boxes_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterBoxesSsbo.index);
+  clusterSlots_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSlotsSsbo.index);
+  bigLights_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kBigLightsSsbo.index);
   indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
   status_.bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterStatusSsbo.index);
-  viewLights_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewLightsSsbo.index);
-  tileMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterTileMasksSsbo.index);
-  tileWords_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterTileWordsSsbo.index);
   if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightVisibleSsbo.index);
   glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
 
@@ -216,46 +216,40 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
                       groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
-  // Spot lights' cones take permutations of their own, compiled the first time a frame has them.
-  if (lights.hasSpotLights() && !spotPrograms_) spotPrograms_ = assignPrograms(programs_, true);
-  const AssignPrograms& pass = lights.hasSpotLights() ? *spotPrograms_ : pointPrograms_;
-  if (lights.hasSpotLights()) viewCones_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterViewConesSsbo.index);
-  {
-    const DebugGroup group("cluster lights");
-    pass.lights->use();
-    glDispatchCompute(groupsFor(lights.count(), 64), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  activate();
+  // Without a past frame of this grid and light count to size from, slots too few would shade the clusters
+  // without one by brute force: such a frame waits for its count of active clusters instead.
+  const bool sizing = count != sizedFor_;
+  if (sizing) {
+    const uint32_t active = readActiveCount();
+    expectedActive_ = std::max(expectedActive_, active);
+    if (active > slotCapacity_ && planMasks(count, expectedActive_)) {
+      block_.update(blockData_);
+      activate();
+    }
   }
-  dispatchAssign("cluster count", *(stats ? pass.countStats : pass.count), lights.count());
-  const Program& scan = stats ? scanStatsProgram_ : scanProgram_;
-  {
-    const DebugGroup group("cluster scan");
-    scan.use();
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
-  // Without a past frame of this grid and light count to size the list from, a list too small would shade its
-  // clusters by brute force: with a million lights, minutes. Such a frame waits for its own demand instead.
-  if (lights.count() != sizedFor_) {
-    sizedFor_ = lights.count();
+  const uint32_t windows = std::max(1u, (count + windowLights_ - 1) / windowLights_);
+  dispatchLights(lights.hasSpotLights(), true, windows == 1, stats, 0, count);
+  dispatchScan(stats);
+  // Likewise the list: a frame without a past one to size it from waits for its own demand.
+  if (sizing) {
+    sizedFor_ = count;
     const uint32_t before = capacity_;
     growTo(readStatus().demand);
     if (capacity_ != before) {
-      const DebugGroup group("cluster scan (list grown)");
       blockData_.counts.z = capacity_;
       block_.update(blockData_);
       indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
-      scan.use();
-      glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      dispatchScan(stats);
     }
   }
-  dispatchAssign("cluster fill", *pass.fill, lights.count());
-  {
-    const DebugGroup group("cluster clear");
-    clearProgram_.use();
-    glDispatchCompute(groupsFor(tiles * summaryWords(lights.count()), 64), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  for (uint32_t w = 0; w < windows; ++w) {
+    const uint32_t begin = w * windowLights_, end = std::min(count, begin + windowLights_);
+    if (windows > 1) {
+      setWindow(begin, end);
+      dispatchLights(lights.hasSpotLights(), false, true, false, begin, end);
+    }
+    fillWindow(end - begin, w == 0, w + 1 == windows);
   }
 
   PendingStatus& slot = pending_[pendingNext_];
@@ -268,19 +262,71 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
 
-// The count or fill pass over the lights in chunks of kAssignChunkLights, in ascending order; one workgroup per
-// tile and 8 slices (cluster_assign.comp). At least one chunk, so that a frame without lights still writes its
-// (empty) headers.
-void LightClusters::dispatchAssign(const char* name, const Program& program, uint32_t lights) {
-  const DebugGroup group(name);
-  program.use();
-  const uint32_t chunks = std::max(1u, (lights + kAssignChunkLights - 1) / kAssignChunkLights);
-  for (uint32_t c = 0; c < chunks; ++c) {
-    const uint32_t begin = c * kAssignChunkLights, end = std::min(lights, begin + kAssignChunkLights);
-    glProgramUniform4ui(program.id(), 0, begin, end, c == 0 ? 1u : 0u, c + 1 == chunks ? 1u : 0u);
-    glDispatchCompute(dims_.x * dims_.y, groupsFor(dims_.z, 8), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+void LightClusters::activate() {
+  const DebugGroup group("cluster activate");
+  slotClusters_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotClustersSsbo.index);
+  slotMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksSsbo.index);
+  const uint32_t zero = 0;
+  glClearNamedBufferSubData(slotClusters_->id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  activateProgram_.use();
+  glDispatchCompute(groupsFor(uint64_t(blockData_.counts.y) + uint64_t(dims_.x) * dims_.y, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+uint32_t LightClusters::readActiveCount() const {
+  uint32_t active = 0;
+  glGetNamedBufferSubData(slotClusters_->id(), 0, sizeof active, &active);
+  return active;
+}
+
+void LightClusters::setWindow(uint32_t begin, uint32_t end) {
+  blockData_.window.x = begin;
+  blockData_.window.y = end;
+  block_.update(blockData_);
+}
+
+void LightClusters::dispatchLights(bool spotLights, bool count, bool mark, bool stats, uint32_t begin, uint32_t end) {
+  const DebugGroup group(count ? "cluster lights" : "cluster lights (window)");
+  const uint32_t reset[4] = {0, 1, 1, 0};
+  glNamedBufferSubData(bigLights_->id(), 0, sizeof reset, reset);
+  const Program& inline_ = programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, false));
+  inline_.use();
+  glProgramUniform4ui(inline_.id(), 0, begin, end, 0, 0);
+  glDispatchCompute(groupsFor(end - begin, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true)).use();
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bigLights_->id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void LightClusters::dispatchScan(bool stats) {
+  const DebugGroup group("cluster scan");
+  (stats ? scanStatsProgram_ : scanProgram_).use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// In chunks of kAssignChunkLights, in ascending order, and at least one, so that a frame without lights still
+// runs its (empty) fill; then the clear of the window's masks.
+void LightClusters::fillWindow(uint32_t windowLights, bool first, bool last) {
+  const uint32_t groups = groupsFor(slotCapacity_, 64);
+  {
+    const DebugGroup group("cluster fill");
+    fillProgram_.use();
+    const uint32_t chunks = std::max(1u, (windowLights + kAssignChunkLights - 1) / kAssignChunkLights);
+    for (uint32_t c = 0; c < chunks; ++c) {
+      const uint32_t begin = c * kAssignChunkLights, end = std::min(windowLights, begin + kAssignChunkLights);
+      glProgramUniform4ui(fillProgram_.id(), 0, begin, end, first && c == 0 ? 1u : 0u, last && c + 1 == chunks ? 1u : 0u);
+      glDispatchCompute(groups, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
   }
+  const DebugGroup group("cluster clear");
+  clearProgram_.use();
+  glDispatchCompute(groupsFor(uint64_t(slotCapacity_) * summaryWords(windowLights_), 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void LightClusters::bindForLighting() const {
@@ -309,8 +355,11 @@ std::vector<std::vector<uint32_t>> LightClusters::readLists() const {
 
 bool LightClusters::growToDemand() {
   const uint32_t before = capacity_;
-  growTo(readStatus().demand);
-  return capacity_ > before;
+  const ClusterStatus status = readStatus();
+  growTo(status.demand);
+  const bool moreSlots = status.unslotted > 0 && status.activeClusters > expectedActive_;
+  expectedActive_ = std::max(expectedActive_, status.activeClusters);
+  return capacity_ > before || moreSlots;
 }
 
 ClusterStatus LightClusters::readStatus() const {

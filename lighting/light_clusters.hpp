@@ -2,7 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <optional>
+
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -23,21 +23,26 @@ struct ClusterConfig {
   int slices = 192;
   // Most memory the light index list may take; past it, the clusters that do not fit are shaded by brute force.
   uint64_t maxIndexBytes = 512ull << 20;
+  // Most memory the clusters' light masks may take (a bit per light for each cluster holding a surface); past
+  // it, lights are assigned in windows, each costing another light pass.
+  uint64_t maxMaskBytes = 256ull << 20;
 };
 
 // Depth-slice boundaries of the exponential slicing, shared by the GPU grid and its CPU documentation:
 // slice k covers [near (far/near)^(k/S), near (far/near)^((k+1)/S)].
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices);
 
-// Lights per dispatch of the count and fill passes: their loops stay under llvmpipe's 65535 iterations per
-// invocation (cluster_assign.comp) at any light count.
+// Lights per dispatch of the fill pass: its loops stay under llvmpipe's 65535 iterations per invocation
+// (cluster_fill.comp) at any light count.
 constexpr uint32_t kAssignChunkLights = 131072;
 
 // Clustered light culling, per frame: the view-space boxes of the surfaces each cluster and each screen tile
-// hold (from the depth buffer), each light in view space setting its bit in the masks of the tiles its projected
-// sphere reaches and whose box it touches (cost: lights x tiles touched), a count pass testing each cluster that
-// holds a surface against its tile's lights only, a prefix sum into list offsets and a fill pass writing one
-// global, sorted light-index list, and a pass clearing the mask words set. The list is sized from the measured
+// hold (from the depth buffer) and a slot for each cluster holding one; each light, in view space, testing the
+// clusters of the tiles its projected sphere reaches and of the slices its depth spans, counting itself in those
+// whose box it touches and setting its bit in their masks (cost: lights x clusters they can reach); a prefix sum
+// into list offsets; a fill pass writing one global light-index list, each cluster's part in light order from its
+// mask; and a pass clearing the mask words set. Masks over more lights than their memory budget holds are built
+// and filled in windows of lights, after a light pass that only counts. The list is sized from the measured
 // demand: the first frame of a grid and light count waits for its own; later frames read it a few frames late,
 // so as never to wait, and one whose demand exceeds the list's capacity shades the clusters that do not fit by
 // brute force (exact, just slower) while the list grows for the next frame.
@@ -49,8 +54,7 @@ class LightClusters {
   LightClusters& operator=(const LightClusters&) = delete;
 
   // Culls `lights` into the clusters holding the surfaces of `depth` (the G-buffer's reversed-Z depth) for this
-  // frame; `frameData` is what `frame` holds. Throws std::runtime_error when the tile masks for this many lights
-  // would exceed the driver's largest storage buffer.
+  // frame; `frameData` is what `frame` holds.
   void assign(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
               const Texture& depth, bool stats);
   // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
@@ -58,8 +62,9 @@ class LightClusters {
 
   // This frame's status; waits for the GPU (use at the end of a run or in stats mode).
   ClusterStatus readStatus() const;
-  // Grows the list at once to this frame's measured demand (waits for the GPU: for warm-up, not timed frames).
-  // False when it did not grow: the demand fits, or the list is at its memory limit or out of memory.
+  // Grows the list and the masks' slots at once to this frame's measured demand (waits for the GPU: for warm-up,
+  // not timed frames). False when neither grew: the demand fits, or the list is at its memory limit or out of
+  // memory.
   bool growToDemand();
 
   // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
@@ -76,31 +81,34 @@ class LightClusters {
   void growFromPastDemand();
   void growTo(uint32_t demand);
   void ensureCapacity(uint64_t entries);
-  void ensureLightBuffers(uint32_t lights, bool spotLights);
+  void ensureLightBuffers(uint32_t lights);
+  // Slot capacity and window from the active clusters expected, within the masks' budget; false when unchanged.
+  bool planMasks(uint32_t lights, uint32_t expectedActive);
+  void activate();
+  // cluster_lights.comp over lights [begin, end): counting hits, marking masks or both; then the lights it
+  // queued as too large for one invocation, through an indirect dispatch.
+  void dispatchLights(bool spotLights, bool count, bool mark, bool stats, uint32_t begin, uint32_t end);
+  void dispatchScan(bool stats);
+  // The fill and clear passes over the current window; `first`/`last`: whether it is the frame's first/last.
+  void fillWindow(uint32_t windowLights, bool first, bool last);
+  void setWindow(uint32_t begin, uint32_t end);
+  uint32_t readActiveCount() const;
 
   ClusterConfig config_;
-  // `name`: the debug group the dispatches are in.
-  void dispatchAssign(const char* name, const Program& program, uint32_t lights);
-
   ProgramCache& programs_;
-  // The passes that read lights: cluster_lights.comp and cluster_assign.comp's count (without, with stats) and
-  // fill, for frames of point lights and for frames with spot lights.
-  struct AssignPrograms {
-    const Program *lights, *count, *countStats, *fill;
-  };
-  static AssignPrograms assignPrograms(ProgramCache& programs, bool spotLights);
-  const Program& occupancyProgram_;
-  AssignPrograms pointPrograms_;
-  std::optional<AssignPrograms> spotPrograms_;
-  const Program &scanProgram_, &scanStatsProgram_, &clearProgram_;
+  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_, &fillProgram_,
+      &clearProgram_;
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for
   glm::vec4 gridKey2_{0.0f};
-  std::unique_ptr<Buffer> headers_, cursors_, occupancy_, indices_, visible_, viewLights_, tileMasks_, tileWords_;
-  std::unique_ptr<Buffer> viewCones_;  // two vec4 per light (clusters.glsl), while frames have spot lights
+  std::unique_ptr<Buffer> headers_, cursors_, occupancy_, boxes_, clusterSlots_, slotClusters_, indices_, visible_;
+  std::unique_ptr<Buffer> slotMasks_, bigLights_;
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  uint32_t slotCapacity_ = 0;   // clusters with masks (slots); more active ones are shaded by brute force
+  uint32_t windowLights_ = 0;   // lights per mask window
+  uint32_t expectedActive_ = 0; // the most clusters holding a surface seen on this grid
   Buffer status_;
   uint32_t capacity_ = 0;
   // The light count whose demand sized the list on this grid; another count sizes it within its first frame.

@@ -10,8 +10,8 @@ ShaderDefines lightingBindingDefines() {
   // Built and checked once: the lighting pass asks for its program every frame.
   static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
                          kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
-                         kClusterViewLightsSsbo, kClusterTileMasksSsbo, kClusterTileWordsSsbo, kClusterOccupancySsbo,
-                         kClusterCursorSsbo, kClusterViewConesSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
+                         kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
+                         kClusterCursorSsbo, kSlotMasksSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
                          kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
   return defines;
 }

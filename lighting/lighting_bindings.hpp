@@ -19,12 +19,13 @@ constexpr BindingPoint kLightVisibleSsbo{"LIGHT_VISIBLE_SSBO", BindingKind::Stor
 constexpr BindingPoint kSpotConeSsbo{"SPOT_CONE_SSBO", BindingKind::StorageBuffer, 4};
 constexpr BindingPoint kClusterStatusSsbo{"CLUSTER_STATUS_SSBO", BindingKind::StorageBuffer, 5};
 constexpr BindingPoint kLightingStatsSsbo{"LIGHTING_STATS_SSBO", BindingKind::StorageBuffer, 6};
-constexpr BindingPoint kClusterViewLightsSsbo{"CLUSTER_VIEW_LIGHTS_SSBO", BindingKind::StorageBuffer, 7};
-constexpr BindingPoint kClusterTileMasksSsbo{"CLUSTER_TILE_MASKS_SSBO", BindingKind::StorageBuffer, 8};
-constexpr BindingPoint kClusterTileWordsSsbo{"CLUSTER_TILE_WORDS_SSBO", BindingKind::StorageBuffer, 9};
+constexpr BindingPoint kClusterBoxesSsbo{"CLUSTER_BOXES_SSBO", BindingKind::StorageBuffer, 7};
+constexpr BindingPoint kClusterSlotsSsbo{"CLUSTER_SLOTS_SSBO", BindingKind::StorageBuffer, 8};
+constexpr BindingPoint kSlotClustersSsbo{"SLOT_CLUSTERS_SSBO", BindingKind::StorageBuffer, 9};
 constexpr BindingPoint kClusterOccupancySsbo{"CLUSTER_OCCUPANCY_SSBO", BindingKind::StorageBuffer, 10};
 constexpr BindingPoint kClusterCursorSsbo{"CLUSTER_CURSOR_SSBO", BindingKind::StorageBuffer, 11};
-constexpr BindingPoint kClusterViewConesSsbo{"CLUSTER_VIEW_CONES_SSBO", BindingKind::StorageBuffer, 12};
+constexpr BindingPoint kSlotMasksSsbo{"SLOT_MASKS_SSBO", BindingKind::StorageBuffer, 12};
+constexpr BindingPoint kBigLightsSsbo{"BIG_LIGHTS_SSBO", BindingKind::StorageBuffer, 13};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.
 constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};

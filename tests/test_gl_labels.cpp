@@ -194,7 +194,7 @@ TEST_CASE("labels: every GL object a renderer makes is labelled, the G-buffer, c
   }
   // The enumeration sees the renderer: at least the objects named here, and many more.
   CHECK(objects.size() > 40);
-  for (const char* name : {"clusters.lightIndices", "clusters.headers", "clusters.block", "clusters.tileMasks",
+  for (const char* name : {"clusters.lightIndices", "clusters.headers", "clusters.block", "clusters.slotMasks",
                            "clusters.visibleLights", "lights.points", "lights.directional", "frame.block",
                            "frame.radiance", "frame.beforeAntiAliasing", "gbuffer.objectBlocks", "mesh 0.vertices",
                            "mesh 0", "lighting.pairStats", "post.block", "fxaa.sampler", "ibl.dfg",
@@ -206,7 +206,9 @@ TEST_CASE("labels: every GL object a renderer makes is labelled, the G-buffer, c
     return std::count_if(labels.begin(), labels.end(), [&](const std::string& l) { return l.rfind(prefix, 0) == 0; });
   };
   CHECK(program("lighting/deferred.comp [") >= 2);  // PBR clustered, Blinn-Phong brute force
-  CHECK(program("lighting/cluster_assign.comp") == 3);  // count, count with statistics, fill: three labels
+  // The light pass in one invocation per light and in one workgroup per large light.
+  CHECK(program("lighting/cluster_lights.comp") == 2);
+  CHECK(program("lighting/cluster_fill.comp") == 1);
   CHECK(program("gbuffer/gbuffer.vert + gbuffer/gbuffer.frag") >= 1);
   CHECK(labels.count("post/fxaa.comp"));
   CHECK(program("lighting.ambientAlbedo [") == 0);  // IBL replaces the ambient table
@@ -262,7 +264,7 @@ TEST_CASE("debug groups: a frame is one group per pass, named and ordered as its
   CHECK(groupsAtDepth(log.messages(), 0) == passes);
   // The cluster pass's six compute passes, as README's pipeline lists them.
   CHECK(groupsInside(log.messages(), "cluster") ==
-        std::vector<std::string>{"cluster occupancy", "cluster lights", "cluster count", "cluster scan",
+        std::vector<std::string>{"cluster occupancy", "cluster activate", "cluster lights", "cluster scan",
                                  "cluster fill", "cluster clear"});
   const size_t pushes = std::count_if(log.messages().begin(), log.messages().end(),
                                       [](const DebugMessage& m) { return m.type == GL_DEBUG_TYPE_PUSH_GROUP; });

@@ -209,10 +209,12 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   }
   checkComputeCompiles("lighting/deferred.comp", lighting);
   checkComputeCompiles("lighting/deferred.comp", ibl);
-  checkComputeCompiles("lighting/cluster_assign.comp", flagCombinations({"ASSIGN_FILL", "ASSIGN_STATS", "SPOT_LIGHTS"}));
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
-  checkComputeCompiles("lighting/cluster_lights.comp", flagCombinations({"SPOT_LIGHTS"}));
+  checkComputeCompiles("lighting/cluster_lights.comp",
+                       flagCombinations({"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS", "BIG_LIGHTS"}));
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_activate.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_fill.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_clear.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   checkComputeCompiles("lighting/efficiency_debug.comp", DefineSets{ShaderDefines{}});

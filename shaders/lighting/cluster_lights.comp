@@ -1,44 +1,38 @@
 #version 450 core
-// Second pass of light assignment, one invocation per light: the light's view-space sphere (cullSphere; kept for the
-// cluster passes), then the screen tiles it can reach, found from its projected bounds so that the cost is the
-// tiles a light touches, not all of them. A tile gets the light's bit in its mask (and the word's bit in its
-// summary) when the sphere touches the box of the surfaces the tile's pixels see (cluster_occupancy.comp); the
-// cluster passes then test only a tile's lights against its clusters' boxes. Masks are left all zero by
-// cluster_clear.comp after each frame.
+// Third pass of light assignment, one invocation per light: its view-space sphere, the screen tiles its projected
+// bounds can cover and, in each tile whose surface box it touches, the clusters of the depth slices its sphere
+// spans (a slice more each way), each tested against the box of the surfaces it holds (cluster_activate.comp).
+// Cost: lights x the clusters they can reach. A hit counts the light in the cluster's header (LIGHT_COUNT)
+// and/or sets its bit in the cluster's mask (LIGHT_MARK), from which cluster_fill.comp writes the list in light
+// order. A light whose tiles x slices exceed INLINE_CANDIDATES is queued instead and visited by the BIG_LIGHTS
+// build, a workgroup per light sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535
+// iterations (see deferred.comp).
 layout(local_size_x = 64) in;
 
 #include "../common/frame.glsl"
 #include "clusters.glsl"
 #include "lights.glsl"
 
-layout(std430, binding = CLUSTER_VIEW_LIGHTS_SSBO) writeonly buffer ViewLights { vec4 viewLights[]; };
-#if SPOT_LIGHTS
-layout(std430, binding = CLUSTER_VIEW_CONES_SSBO) writeonly buffer ViewCones { vec4 viewCones[]; };
-#endif
-layout(std430, binding = CLUSTER_OCCUPANCY_SSBO) readonly buffer Occupancy { uint occupancy[]; };
-layout(std430, binding = CLUSTER_TILE_MASKS_SSBO) buffer TileMasks { uint tileMasks[]; };
-layout(std430, binding = CLUSTER_TILE_WORDS_SSBO) buffer TileWords { uint tileWords[]; };
+// x: the first light, y: the end of the lights this dispatch visits.
+layout(location = 0) uniform uvec4 lightRange;
 
-// The tiles the sphere's projection may cover: the screen rectangle of its view-space bounding box, widened by
-// a pixel; every tile when the box reaches the eye plane. False when the rectangle misses the screen.
-bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
-  float nearDepth = -sphere.z - sphere.w, farDepth = -sphere.z + sphere.w;
-  vec2 ndcLo = vec2(-1.0), ndcHi = vec2(1.0);
-  if (nearDepth > 1e-6) {
-    vec2 lo = sphere.xy - sphere.w, hi = sphere.xy + sphere.w;
-    ndcLo = min(lo / nearDepth, lo / farDepth) * frame.projParams.xy;
-    ndcHi = max(hi / nearDepth, hi / farDepth) * frame.projParams.xy;
-  }
-  vec2 pixelLo = (ndcLo * 0.5 + 0.5) * frame.viewport.xy - 1.0;
-  vec2 pixelHi = (ndcHi * 0.5 + 0.5) * frame.viewport.xy + 1.0;
-  if (farDepth <= 0.0 || any(lessThan(pixelHi, vec2(0.0))) || any(greaterThanEqual(pixelLo, frame.viewport.xy))) {
-    return false;
-  }
-  vec2 lastTile = vec2(clusterGrid.dims.xy - 1u);
-  first = uvec2(clamp(floor(pixelLo / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
-  last = uvec2(clamp(floor(pixelHi / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
-  return true;
-}
+const uint INLINE_CANDIDATES = 16384u;
+
+layout(std430, binding = CLUSTER_BOXES_SSBO) readonly buffer Boxes { vec4 boxes[]; };
+layout(std430, binding = CLUSTER_SLOTS_SSBO) readonly buffer Slots { uint clusterSlots[]; };
+layout(std430, binding = BIG_LIGHTS_SSBO) buffer BigLights {
+  uvec4 bigDispatch;  // glDispatchComputeIndirect's workgroup counts (x: lights queued), set to (0, 1, 1) before
+  uint bigLights[];
+};
+#if LIGHT_COUNT
+layout(std430, binding = CLUSTER_SSBO) buffer Headers { ClusterHeader headers[]; };
+#if ASSIGN_STATS
+layout(std430, binding = LIGHT_VISIBLE_SSBO) writeonly buffer Visible { uint lightVisible[]; };
+#endif
+#endif
+#if LIGHT_MARK
+layout(std430, binding = SLOT_MASKS_SSBO) buffer SlotMasks { uint slotMasks[]; };
+#endif
 
 // The sphere outside which a light lights nothing: its own, or for a spot light the smallest around the sector
 // of it within the outer cone (Wronski 2017, "Cull that cone!"): about the cap for cones wider than 45 degrees,
@@ -68,56 +62,116 @@ vec4 cullSphere(uint light, out vec3 axis, out float cosOuter) {
 }
 
 uint gLight;
-vec4 gSphere;
+vec4 gSphere;  // view space
 #if SPOT_LIGHTS
 vec4 gApexRange, gAxisCos;  // the view-space cone (clusters.glsl)
 #endif
 uvec2 gFirst;
-uint gColumns, gTiles;
+uint gColumns, gTiles, gSliceFirst, gSliceLast;
+bool gHit;
+
+// The tiles the sphere's projection may cover: the screen rectangle of its view-space bounding box, widened by
+// a pixel; every tile when the box reaches the eye plane. False when the rectangle misses the screen.
+bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
+  float nearDepth = -sphere.z - sphere.w, farDepth = -sphere.z + sphere.w;
+  vec2 ndcLo = vec2(-1.0), ndcHi = vec2(1.0);
+  if (nearDepth > 1e-6) {
+    vec2 lo = sphere.xy - sphere.w, hi = sphere.xy + sphere.w;
+    ndcLo = min(lo / nearDepth, lo / farDepth) * frame.projParams.xy;
+    ndcHi = max(hi / nearDepth, hi / farDepth) * frame.projParams.xy;
+  }
+  vec2 pixelLo = (ndcLo * 0.5 + 0.5) * frame.viewport.xy - 1.0;
+  vec2 pixelHi = (ndcHi * 0.5 + 0.5) * frame.viewport.xy + 1.0;
+  if (farDepth <= 0.0 || any(lessThan(pixelHi, vec2(0.0))) || any(greaterThanEqual(pixelLo, frame.viewport.xy))) {
+    return false;
+  }
+  vec2 lastTile = vec2(clusterGrid.dims.xy - 1u);
+  first = uvec2(clamp(floor(pixelLo / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
+  last = uvec2(clamp(floor(pixelHi / float(clusterGrid.dims.w)), vec2(0.0), lastTile));
+  return true;
+}
+
+// The light's view-space bounds, the tiles and the slices it may reach. False when it reaches nothing: radius 0
+// (distanceAttenuation), or outside the screen.
+bool prepareLight(uint light) {
+  gLight = light;
+  vec3 axis;
+  float cosOuter;
+  vec4 bounds = cullSphere(light, axis, cosOuter);
+  gSphere = vec4((frame.view * vec4(bounds.xyz, 1.0)).xyz, bounds.w);
+#if SPOT_LIGHTS
+  vec4 pr = lights[light].positionRadius;
+  gApexRange = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w * (1.0 + 1e-5));
+  gAxisCos = vec4(mat3(frame.view) * axis, cosOuter);
+#endif
+  uvec2 last;
+  if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, last)) return false;
+  gColumns = last.x - gFirst.x + 1u;
+  gTiles = gColumns * (last.y - gFirst.y + 1u);
+  // A box's depth extent passes its surfaces' slices by its padding and the occupancy pass's 1e-3 of a slice,
+  // far less than a slice: one slice more each way keeps the range conservative.
+  float nearDepth = -gSphere.z - gSphere.w, farDepth = -gSphere.z + gSphere.w;
+  uint first = nearDepth > 0.0 ? depthSlice(nearDepth) : 0u;
+  gSliceFirst = first > 0u ? first - 1u : 0u;
+  gSliceLast = min(depthSlice(farDepth) + 1u, clusterGrid.dims.z - 1u);
+  return true;
+}
+
+void visitCluster(uint cluster) {
+  uint slot = clusterSlots[cluster];
+  if (slot == CLUSTER_INACTIVE) return;
+  vec3 lo = boxes[2u * cluster].xyz, hi = boxes[2u * cluster + 1u].xyz;
+  if (!sphereIntersectsAabb(gSphere.xyz, gSphere.w, lo, hi)) return;
+#if SPOT_LIGHTS
+  if (!coneIntersectsAabb(gApexRange, gAxisCos, lo, hi)) return;
+#endif
+  gHit = true;
+#if LIGHT_COUNT
+  atomicAdd(headers[cluster].count, 1u);
+#endif
+#if LIGHT_MARK
+  uint bit = gLight - clusterGrid.window.x, word = bit / 32u;
+  uint previous = atomicOr(slotMasks[slotMaskBase(slot) + word], 1u << (bit % 32u));
+  if (previous == 0u) atomicOr(slotMasks[slotSummaryBase(slot) + word / 32u], 1u << (word % 32u));
+#endif
+}
 
 void visitTile(uint t) {
   if (t >= gTiles) return;
   uint tile = (gFirst.y + t / gColumns) * clusterGrid.dims.x + gFirst.x + t % gColumns;
-  uint base = tileBoxBase(tile);
-  vec3 lo, hi;
-  if (!occupiedBox(uvec3(occupancy[base], occupancy[base + 1u], occupancy[base + 2u]),
-                   uvec3(occupancy[base + 3u], occupancy[base + 4u], occupancy[base + 5u]), lo, hi) ||
-      !sphereIntersectsAabb(gSphere.xyz, gSphere.w, lo, hi)) {
-    return;
-  }
+  uint box = 2u * tileBoxIndex(tile);
+  if (!sphereIntersectsAabb(gSphere.xyz, gSphere.w, boxes[box].xyz, boxes[box + 1u].xyz)) return;
 #if SPOT_LIGHTS
-  if (!coneIntersectsAabb(gApexRange, gAxisCos, lo, hi)) return;
+  if (!coneIntersectsAabb(gApexRange, gAxisCos, boxes[box].xyz, boxes[box + 1u].xyz)) return;
 #endif
-  uint word = gLight / 32u;
-  uint previous = atomicOr(tileMasks[tile * clusterMaskWords() + word], 1u << (gLight % 32u));
-  if (previous == 0u) atomicOr(tileWords[tile * clusterSummaryWords() + word / 32u], 1u << (word % 32u));
+  for (uint s = gSliceFirst; s <= gSliceLast; ++s) visitCluster(s * tileCount() + tile);
+}
+
+void finishLight() {
+#if LIGHT_COUNT && ASSIGN_STATS
+  if (gHit) lightVisible[gLight] = 1u;
+#endif
 }
 
 void main() {
-  gLight = gl_GlobalInvocationID.x;
-  if (gLight >= clusterGrid.counts.x) return;
-  vec3 axis;
-  float cosOuter;
-  vec4 bounds = cullSphere(gLight, axis, cosOuter);
-  gSphere = vec4((frame.view * vec4(bounds.xyz, 1.0)).xyz, bounds.w);
-  viewLights[gLight] = gSphere;
-#if SPOT_LIGHTS
-  vec4 pr = lights[gLight].positionRadius;
-  gApexRange = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w * (1.0 + 1e-5));
-  gAxisCos = vec4(mat3(frame.view) * axis, cosOuter);
-  viewCones[2u * gLight] = gApexRange;
-  viewCones[2u * gLight + 1u] = gAxisCos;
-#endif
-  uvec2 last;
-  // A light of radius 0 reaches nothing (distanceAttenuation).
-  if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, last)) return;
-  gColumns = last.x - gFirst.x + 1u;
-  gTiles = gColumns * (last.y - gFirst.y + 1u);
-  // Four tiles per iteration for llvmpipe's limit of 65535 loop iterations per invocation (see deferred.comp).
+  gHit = false;
+#if BIG_LIGHTS
+  if (!prepareLight(bigLights[gl_WorkGroupID.x])) return;
+  for (uint t = gl_LocalInvocationIndex; t < gTiles; t += gl_WorkGroupSize.x) visitTile(t);
+#else
+  uint light = lightRange.x + gl_GlobalInvocationID.x;
+  if (light >= lightRange.y || !prepareLight(light)) return;
+  if (gTiles * (gSliceLast - gSliceFirst + 1u) > INLINE_CANDIDATES) {
+    bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
+    return;
+  }
+  // Four tiles per iteration, for llvmpipe's iteration limit.
   for (uint t = 0u; t < gTiles; t += 4u) {
     visitTile(t);
     visitTile(t + 1u);
     visitTile(t + 2u);
     visitTile(t + 3u);
   }
+#endif
+  finishLight();
 }

@@ -2,7 +2,7 @@
 // Exclusive prefix sum of the per-cluster light counts into list offsets, in one workgroup: each invocation
 // scans a contiguous chunk serially, the chunk totals are scanned in shared memory (Hillis-Steele), then each
 // chunk adds its base. Also totals the demand for the index list and the cluster statistics. Clusters without
-// surface keep their CLUSTER_INACTIVE offset and count nothing.
+// surface or slot keep their CLUSTER_INACTIVE offset and count nothing; those without slot count as overflowed.
 layout(local_size_x = 1024) in;
 
 #include "clusters.glsl"
@@ -18,8 +18,10 @@ layout(std430, binding = CLUSTER_STATUS_SSBO) writeonly buffer Status {
   uint overflowed;     // clusters whose list does not fit the index list
   uint capacity;       // the index list's capacity this frame
   uint activeClusters; // clusters holding a surface
-  uint unused;
+  uint unslotted;      // of those, clusters past the masks' slot capacity
 } status;
+
+layout(std430, binding = SLOT_CLUSTERS_SSBO) readonly buffer SlotClusters { uint activeCount; };
 
 #if ASSIGN_STATS
 layout(std430, binding = LIGHT_VISIBLE_SSBO) buffer Visible { uint lightVisible[]; };
@@ -30,7 +32,6 @@ shared uint nonEmptyCount;
 shared uint maxCount;
 shared uint visibleCount;
 shared uint overflowCount;
-shared uint activeCount;
 
 void main() {
   uint t = gl_LocalInvocationIndex;
@@ -42,21 +43,18 @@ void main() {
     maxCount = 0u;
     visibleCount = 0u;
     overflowCount = 0u;
-    activeCount = 0u;
   }
-  uint sum = 0u, localNonEmpty = 0u, localMax = 0u, localActive = 0u;
+  uint sum = 0u, localNonEmpty = 0u, localMax = 0u;
   for (uint i = begin; i < end; ++i) {
     uint c = headers[i].count;
     sum = addSaturated(sum, c);
     localNonEmpty += c > 0u ? 1u : 0u;
     localMax = max(localMax, c);
-    localActive += headers[i].offset == CLUSTER_INACTIVE ? 0u : 1u;
   }
   partial[t] = sum;
   barrier();
   atomicAdd(nonEmptyCount, localNonEmpty);
   atomicMax(maxCount, localMax);
-  atomicAdd(activeCount, localActive);
   for (uint stride = 1u; stride < 1024u; stride <<= 1u) {
     uint add = t >= stride ? partial[t - stride] : 0u;
     barrier();
@@ -86,12 +84,14 @@ void main() {
 #endif
   barrier();
   if (t == 1023u) {
+    uint unslotted = activeCount - min(activeCount, slotCapacity());
     status.demand = partial[1023];
     status.nonEmpty = nonEmptyCount;
     status.maxPerCluster = maxCount;
     status.visibleLights = visibleCount;
-    status.overflowed = overflowCount;
+    status.overflowed = overflowCount + unslotted;
     status.capacity = clusterGrid.counts.z;
     status.activeClusters = activeCount;
+    status.unslotted = unslotted;
   }
 }

@@ -3,6 +3,7 @@ layout(std140, binding = CLUSTER_UBO) uniform ClusterBlock {
   uvec4 dims;     // tiles x, tiles y, depth slices, tile size in pixels
   vec4 slicing;   // near, far, slice scale, slice bias: slice = floor(log(depth) * scale + bias)
   uvec4 counts;   // lights in the frame, clusters, index-list capacity, stats enabled
+  uvec4 window;   // the lights whose bits the masks hold: first, end; mask words per slot, slot capacity
 } clusterGrid;
 
 // Per cluster (mirrored by lighting/cluster_block.hpp): where its light indices start in the index list, and how many there are.
@@ -19,16 +20,25 @@ const uint CLUSTER_INACTIVE = 0xFFFFFFFFu;
 uint clusterCount() { return clusterGrid.counts.y; }
 uint tileCount() { return clusterGrid.dims.x * clusterGrid.dims.y; }
 
-// One tile's light mask (cluster_lights.comp): word w, bit b for light 32 w + b; and its summary, one bit per
-// mask word that has any bit set, so that a tile's lights are found without reading its empty words.
-uint clusterMaskWords() { return (clusterGrid.counts.x + 31u) / 32u; }
-uint clusterSummaryWords() { return (clusterMaskWords() + 31u) / 32u; }
+// A cluster's slot (cluster_activate.comp), CLUSTER_INACTIVE where it holds no surface; clusters with slots
+// below the slot capacity have a light mask over the lights of the current window (window.x to window.y): word
+// w, bit b for light window.x + 32 w + b; and a summary, a bit per mask word that has any bit set, so that the
+// fill pass finds its lights without reading empty words.
+uint slotMaskWords() { return clusterGrid.window.z; }
+uint slotSummaryWords() { return (slotMaskWords() + 31u) / 32u; }
+uint slotCapacity() { return clusterGrid.window.w; }
+// Both live in one buffer: every slot's mask, then every slot's summary.
+uint slotMaskBase(uint slot) { return slot * slotMaskWords(); }
+uint slotSummaryBase(uint slot) { return slotCapacity() * slotMaskWords() + slot * slotSummaryWords(); }
 
 // The occupancy boxes (cluster_occupancy.comp): per cluster, then per tile, the view-space AABB of the surface
 // points its pixels see, as six words: the minimum corner as orderedBits, the maximum corner as ~orderedBits,
 // so that atomicMin keeps both; all ones where no pixel is.
 uint clusterBoxBase(uint cluster) { return 6u * cluster; }
 uint tileBoxBase(uint tile) { return 6u * (clusterCount() + tile); }
+// The same boxes decoded and padded (occupiedBox) by cluster_activate.comp, two vec4 each, clusters then tiles;
+// an empty one inverted so that no sphere touches it.
+uint tileBoxIndex(uint tile) { return clusterCount() + tile; }
 
 // A float as an unsigned integer of the same order (negative below positive), so that integer atomics can keep a
 // float minimum; orderedFloat inverts it.
