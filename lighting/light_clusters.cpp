@@ -49,7 +49,6 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       fillProgram_(programs.compute("lighting/cluster_fill.comp", lightingBindingDefines())),
-      clearProgram_(programs.compute("lighting/cluster_clear.comp", lightingBindingDefines())),
       status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
@@ -67,7 +66,7 @@ LightClusters::~LightClusters() {
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
   for (const auto* b : {&headers_, &cursors_, &occupancy_, &boxes_, &clusterSlots_, &slotClusters_, &indices_,
-                        &visible_, &slotMasks_, &bigLights_}) {
+                        &visible_, &slotMasks_[0], &slotMasks_[1], &bigLights_}) {
     total += *b ? (*b)->size() : 0;
   }
   return total;
@@ -134,26 +133,34 @@ void LightClusters::ensureLightBuffers(uint32_t lights) {
   if (!bigLights_ || bigLights_->size() < bytes) bigLights_ = std::make_unique<Buffer>("clusters.bigLights", bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-// A quarter of headroom over the clusters expected to hold a surface, as for the list. All lights in one window
-// when their masks fit the budget; else windows of a multiple of 1024 lights (the fill's chunks start on summary
-// words), at least 1024, with fewer slots if even those do not fit. The masks are all zero between windows
-// (cluster_clear.comp), whatever layout set them, so a buffer is only ever replaced by a larger one.
+// A quarter of headroom over the clusters expected to hold a surface, as for the list. The slots are split over
+// two buffers (shaders/lighting/slot_masks.glsl), each within the driver's largest storage block and half the
+// budget. All lights in one window when their masks fit; else windows of a multiple of 1024 lights (the fill's
+// chunks start on summary words), at least 1024, with fewer slots if even those do not fit. The masks are all
+// zero between windows (cluster_fill.comp), whatever layout set them, so a buffer is only ever replaced by a
+// larger one.
 bool LightClusters::planMasks(uint32_t lights, uint32_t expectedActive) {
   const uint32_t clusters = blockData_.counts.y;
-  const uint64_t budget = std::min(config_.maxMaskBytes, maxBlockBytes_);
+  const uint64_t perBuffer = std::min(config_.maxMaskBytes / 2, maxBlockBytes_);
   uint64_t capacity = std::min<uint64_t>(clusters, std::max<uint64_t>(64, expectedActive + expectedActive / 4ull));
   capacity = std::max<uint64_t>(capacity, slotCapacity_);
   lights = std::max(lights, 1u);
   uint64_t window = lights;
-  if (capacity * slotBytes(lights) > budget) {
-    window = std::max<uint64_t>(1024, budget / capacity * 8 * 32 / 33 / 1024 * 1024);
-    capacity = std::min<uint64_t>(capacity, std::max<uint64_t>(1, budget / slotBytes(static_cast<uint32_t>(window))));
+  const auto half = [](uint64_t slots) { return (slots + 1) / 2; };
+  if (half(capacity) * slotBytes(lights) > perBuffer) {
+    window = std::max<uint64_t>(1024, perBuffer / half(capacity) * 8 * 32 / 33 / 1024 * 1024);
+    const uint64_t fit = std::max<uint64_t>(1, perBuffer / slotBytes(static_cast<uint32_t>(window)));
+    capacity = std::min(capacity, 2 * fit);
   }
   const bool changed = capacity != slotCapacity_ || window != windowLights_;
   slotCapacity_ = static_cast<uint32_t>(capacity);
   windowLights_ = static_cast<uint32_t>(window);
-  const uint64_t maskBytes = capacity * slotBytes(windowLights_);
-  if (!slotMasks_ || slotMasks_->size() < maskBytes) slotMasks_ = zeroedBuffer("clusters.slotMasks", maskBytes);
+  const uint64_t bufferBytes = half(capacity) * slotBytes(windowLights_);
+  for (size_t i = 0; i < slotMasks_.size(); ++i) {
+    if (!slotMasks_[i] || slotMasks_[i]->size() < bufferBytes) {
+      slotMasks_[i] = zeroedBuffer(i == 0 ? "clusters.slotMasks" : "clusters.slotMasksHigh", bufferBytes);
+    }
+  }
   const uint64_t slotBytesTotal = (1 + capacity) * sizeof(uint32_t);
   if (!slotClusters_ || slotClusters_->size() < slotBytesTotal) {
     slotClusters_ = std::make_unique<Buffer>("clusters.slotClusters", slotBytesTotal, nullptr, 0);
@@ -265,7 +272,8 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
 void LightClusters::activate() {
   const DebugGroup group("cluster activate");
   slotClusters_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotClustersSsbo.index);
-  slotMasks_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksSsbo.index);
+  slotMasks_[0]->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksSsbo.index);
+  slotMasks_[1]->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksHighSsbo.index);
   const uint32_t zero = 0;
   glClearNamedBufferSubData(slotClusters_->id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   activateProgram_.use();
@@ -309,24 +317,17 @@ void LightClusters::dispatchScan(bool stats) {
 }
 
 // In chunks of kAssignChunkLights, in ascending order, and at least one, so that a frame without lights still
-// runs its (empty) fill; then the clear of the window's masks.
+// runs its (empty) fill. The fill leaves the window's masks zero.
 void LightClusters::fillWindow(uint32_t windowLights, bool first, bool last) {
-  const uint32_t groups = groupsFor(slotCapacity_, 64);
-  {
-    const DebugGroup group("cluster fill");
-    fillProgram_.use();
-    const uint32_t chunks = std::max(1u, (windowLights + kAssignChunkLights - 1) / kAssignChunkLights);
-    for (uint32_t c = 0; c < chunks; ++c) {
-      const uint32_t begin = c * kAssignChunkLights, end = std::min(windowLights, begin + kAssignChunkLights);
-      glProgramUniform4ui(fillProgram_.id(), 0, begin, end, first && c == 0 ? 1u : 0u, last && c + 1 == chunks ? 1u : 0u);
-      glDispatchCompute(groups, 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    }
+  const DebugGroup group("cluster fill");
+  fillProgram_.use();
+  const uint32_t chunks = std::max(1u, (windowLights + kAssignChunkLights - 1) / kAssignChunkLights);
+  for (uint32_t c = 0; c < chunks; ++c) {
+    const uint32_t begin = c * kAssignChunkLights, end = std::min(windowLights, begin + kAssignChunkLights);
+    glProgramUniform4ui(fillProgram_.id(), 0, begin, end, first && c == 0 ? 1u : 0u, last && c + 1 == chunks ? 1u : 0u);
+    glDispatchCompute(groupsFor(slotCapacity_, 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
-  const DebugGroup group("cluster clear");
-  clearProgram_.use();
-  glDispatchCompute(groupsFor(uint64_t(slotCapacity_) * summaryWords(windowLights_), 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void LightClusters::bindForLighting() const {

@@ -24,7 +24,8 @@ struct ClusterConfig {
   // Most memory the light index list may take; past it, the clusters that do not fit are shaded by brute force.
   uint64_t maxIndexBytes = 512ull << 20;
   // Most memory the clusters' light masks may take (a bit per light for each cluster holding a surface); past
-  // it, lights are assigned in windows, each costing another light pass.
+  // it, or past twice the driver's largest storage block, lights are assigned in windows, each costing another
+  // light pass.
   uint64_t maxMaskBytes = 256ull << 20;
 };
 
@@ -40,8 +41,8 @@ constexpr uint32_t kAssignChunkLights = 131072;
 // hold (from the depth buffer) and a slot for each cluster holding one; each light, in view space, testing the
 // clusters of the tiles its projected sphere reaches and of the slices its depth spans, counting itself in those
 // whose box it touches and setting its bit in their masks (cost: lights x clusters they can reach); a prefix sum
-// into list offsets; a fill pass writing one global light-index list, each cluster's part in light order from its
-// mask; and a pass clearing the mask words set. Masks over more lights than their memory budget holds are built
+// into list offsets; and a fill pass writing one global light-index list, each cluster's part in light order from
+// its mask, leaving the mask words it read zero. Masks over more lights than their memory budget holds are built
 // and filled in windows of lights, after a light pass that only counts. The list is sized from the measured
 // demand: the first frame of a grid and light count waits for its own; later frames read it a few frames late,
 // so as never to wait, and one whose demand exceeds the list's capacity shades the clusters that do not fit by
@@ -74,6 +75,9 @@ class LightClusters {
 
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }
+  // Lights per mask window (all of them unless the masks exceed their budget), and clusters given masks.
+  uint32_t windowLights() const { return windowLights_; }
+  uint32_t slotCapacity() const { return slotCapacity_; }
   size_t bytes() const;
 
  private:
@@ -89,22 +93,22 @@ class LightClusters {
   // queued as too large for one invocation, through an indirect dispatch.
   void dispatchLights(bool spotLights, bool count, bool mark, bool stats, uint32_t begin, uint32_t end);
   void dispatchScan(bool stats);
-  // The fill and clear passes over the current window; `first`/`last`: whether it is the frame's first/last.
+  // The fill pass over the current window; `first`/`last`: whether it is the frame's first/last.
   void fillWindow(uint32_t windowLights, bool first, bool last);
   void setWindow(uint32_t begin, uint32_t end);
   uint32_t readActiveCount() const;
 
   ClusterConfig config_;
   ProgramCache& programs_;
-  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_, &fillProgram_,
-      &clearProgram_;
+  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_, &fillProgram_;
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for
   glm::vec4 gridKey2_{0.0f};
   std::unique_ptr<Buffer> headers_, cursors_, occupancy_, boxes_, clusterSlots_, slotClusters_, indices_, visible_;
-  std::unique_ptr<Buffer> slotMasks_, bigLights_;
+  std::array<std::unique_ptr<Buffer>, 2> slotMasks_;  // shaders/lighting/slot_masks.glsl
+  std::unique_ptr<Buffer> bigLights_;
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   uint32_t slotCapacity_ = 0;   // clusters with masks (slots); more active ones are shaded by brute force
   uint32_t windowLights_ = 0;   // lights per mask window

@@ -11,7 +11,7 @@ ShaderDefines lightingBindingDefines() {
   static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
                          kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
-                         kClusterCursorSsbo, kSlotMasksSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
+                         kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
                          kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
   return defines;
 }

@@ -262,10 +262,10 @@ TEST_CASE("debug groups: a frame is one group per pass, named and ordered as its
   const std::vector<std::string> passes = names(renderer.passList(options, capture));
   REQUIRE(passes == std::vector<std::string>{"gbuffer", "cluster", "lighting", "post", "aa", "debug", "readback"});
   CHECK(groupsAtDepth(log.messages(), 0) == passes);
-  // The cluster pass's six compute passes, as README's pipeline lists them.
+  // The cluster pass's five compute passes, as README's pipeline lists them.
   CHECK(groupsInside(log.messages(), "cluster") ==
         std::vector<std::string>{"cluster occupancy", "cluster activate", "cluster lights", "cluster scan",
-                                 "cluster fill", "cluster clear"});
+                                 "cluster fill"});
   const size_t pushes = std::count_if(log.messages().begin(), log.messages().end(),
                                       [](const DebugMessage& m) { return m.type == GL_DEBUG_TYPE_PUSH_GROUP; });
   const size_t pops = std::count_if(log.messages().begin(), log.messages().end(),

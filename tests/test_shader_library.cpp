@@ -215,7 +215,6 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_activate.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_fill.comp", DefineSets{ShaderDefines{}});
-  checkComputeCompiles("lighting/cluster_clear.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   checkComputeCompiles("lighting/efficiency_debug.comp", DefineSets{ShaderDefines{}});
   for (const pbr::DebugChannel channel : pbr::kDebugChannels) {

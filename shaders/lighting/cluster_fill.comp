@@ -1,10 +1,12 @@
 #version 450 core
-// Fourth pass of light assignment, after the scan: one invocation per slot writes its cluster's lights, found
+// Last pass of light assignment, after the scan: one invocation per slot writes its cluster's lights, found
 // through the mask's summary words, lowest bit first, at the offset the scan computed, so every list comes out in
 // ascending order: clustered shading sums lights in the same order as the brute-force path and the two agree bit
-// for bit. Dispatched once per chunk of a window's lights, in ascending order, so that no invocation loops past
-// llvmpipe's limit of 65535 iterations: a chunk of 131,072 lights takes at most 128 summary words, 4,096 mask words
-// and 32,768 four-bit steps. The fill keeps its place in `cursors` between dispatches.
+// for bit. It zeroes each mask and summary word it reads, so that the next window or frame starts from empty
+// masks without clearing them whole (a list that does not fit is not written, but its mask is still cleared).
+// Dispatched once per chunk of a window's lights, in ascending order, so that no invocation loops past llvmpipe's
+// limit of 65535 iterations: a chunk of 131,072 lights takes at most 128 summary words, 4,096 mask words and
+// 32,768 four-bit steps. The fill keeps its place in `cursors` between dispatches.
 layout(local_size_x = 64) in;
 
 #include "clusters.glsl"
@@ -18,11 +20,26 @@ layout(std430, binding = SLOT_CLUSTERS_SSBO) readonly buffer SlotClusters {
   uint activeCount;
   uint slotClusters[];
 };
-layout(std430, binding = SLOT_MASKS_SSBO) readonly buffer SlotMasks { uint slotMasks[]; };
+#define SLOT_MASKS_QUALIFIER
+#include "slot_masks.glsl"
 layout(std430, binding = LIGHT_INDEX_SSBO) writeonly buffer Indices { uint lightIndices[]; };
 layout(std430, binding = CLUSTER_CURSOR_SSBO) buffer Cursors { uint cursors[]; };
 
 uint gCursor;
+bool gHigh;
+
+// Reads a word of the slot's buffer (slot_masks.glsl) and leaves it zero.
+uint takeSlotWord(uint i) {
+  uint word;
+  if (gHigh) {
+    word = masksHigh[i];
+    masksHigh[i] = 0u;
+  } else {
+    word = masksLow[i];
+    masksLow[i] = 0u;
+  }
+  return word;
+}
 
 void writeLowestBit(inout uint bits, uint base) {
   if (bits == 0u) return;
@@ -35,20 +52,22 @@ void main() {
   if (slot >= min(activeCount, slotCapacity())) return;
   uint cluster = slotClusters[slot];
   ClusterHeader header = headers[cluster];
-  // A list that does not fit the index buffer is not written: lighting shades that cluster by brute force. Empty
-  // clusters have nothing to write.
-  if (header.count == 0u || !listFits(header)) return;
-  gCursor = fillChunk.z != 0u ? header.offset : cursors[cluster];
+  // A cluster without lights has no bit set. One whose list does not fit the index buffer is shaded by brute
+  // force: its mask is only cleared.
+  if (header.count == 0u) return;
+  bool writes = listFits(header);
+  gHigh = slotIsHigh(slot);
+  if (writes) gCursor = fillChunk.z != 0u ? header.offset : cursors[cluster];
   uint summaryBase = slotSummaryBase(slot), maskBase = slotMaskBase(slot);
   uint summaryEnd = min((fillChunk.y + 1023u) / 1024u, slotSummaryWords());
   for (uint s = fillChunk.x / 1024u; s < summaryEnd; ++s) {
-    uint words = slotMasks[summaryBase + s];
+    uint words = takeSlotWord(summaryBase + s);
     while (words != 0u) {
       uint w = s * 32u + uint(findLSB(words));
       words &= words - 1u;
-      uint bits = slotMasks[maskBase + w];
+      uint bits = takeSlotWord(maskBase + w);
       uint base = clusterGrid.window.x + w * 32u;
-      while (bits != 0u) {
+      while (writes && bits != 0u) {
         writeLowestBit(bits, base);
         writeLowestBit(bits, base);
         writeLowestBit(bits, base);
@@ -56,5 +75,5 @@ void main() {
       }
     }
   }
-  if (fillChunk.w == 0u) cursors[cluster] = gCursor;
+  if (writes && fillChunk.w == 0u) cursors[cluster] = gCursor;
 }

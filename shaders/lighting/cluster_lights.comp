@@ -31,7 +31,11 @@ layout(std430, binding = LIGHT_VISIBLE_SSBO) writeonly buffer Visible { uint lig
 #endif
 #endif
 #if LIGHT_MARK
-layout(std430, binding = SLOT_MASKS_SSBO) buffer SlotMasks { uint slotMasks[]; };
+#define SLOT_MASKS_QUALIFIER
+#include "slot_masks.glsl"
+
+// Sets a bit of the slot's mask word or summary word `i` (slot_masks.glsl); returns the word as it was.
+uint orSlotWord(bool high, uint i, uint bits) { return high ? atomicOr(masksHigh[i], bits) : atomicOr(masksLow[i], bits); }
 #endif
 
 // The sphere outside which a light lights nothing: its own, or for a spot light the smallest around the sector
@@ -131,8 +135,9 @@ void visitCluster(uint cluster) {
 #endif
 #if LIGHT_MARK
   uint bit = gLight - clusterGrid.window.x, word = bit / 32u;
-  uint previous = atomicOr(slotMasks[slotMaskBase(slot) + word], 1u << (bit % 32u));
-  if (previous == 0u) atomicOr(slotMasks[slotSummaryBase(slot) + word / 32u], 1u << (word % 32u));
+  bool high = slotIsHigh(slot);
+  uint previous = orSlotWord(high, slotMaskBase(slot) + word, 1u << (bit % 32u));
+  if (previous == 0u) orSlotWord(high, slotSummaryBase(slot) + word / 32u, 1u << (word % 32u));
 #endif
 }
 

@@ -27,9 +27,6 @@ uint tileCount() { return clusterGrid.dims.x * clusterGrid.dims.y; }
 uint slotMaskWords() { return clusterGrid.window.z; }
 uint slotSummaryWords() { return (slotMaskWords() + 31u) / 32u; }
 uint slotCapacity() { return clusterGrid.window.w; }
-// Both live in one buffer: every slot's mask, then every slot's summary.
-uint slotMaskBase(uint slot) { return slot * slotMaskWords(); }
-uint slotSummaryBase(uint slot) { return slotCapacity() * slotMaskWords() + slot * slotSummaryWords(); }
 
 // The occupancy boxes (cluster_occupancy.comp): per cluster, then per tile, the view-space AABB of the surface
 // points its pixels see, as six words: the minimum corner as orderedBits, the maximum corner as ~orderedBits,
