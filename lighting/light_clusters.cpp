@@ -88,7 +88,9 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   const uint64_t occupancyBytes = (clusters + tiles) * kOccupancyWords * sizeof(uint32_t);
   occupancy_ = std::make_unique<Buffer>("clusters.occupancy", occupancyBytes, nullptr, 0);
   boxes_ = std::make_unique<Buffer>("clusters.boxes", (clusters + tiles) * kBoxBytes, nullptr, 0);
-  clusterSlots_ = std::make_unique<Buffer>("clusters.slots", clusters * sizeof(uint32_t), nullptr, 0);
+  // Per cluster its slot, then per tile its slices with one (clusters.glsl, tileSliceBase).
+  clusterSlots_ = std::make_unique<Buffer>("clusters.slots", (clusters + tiles * ((dims_.z + 31) / 32)) * sizeof(uint32_t),
+                                           nullptr, 0);
   slotClusters_.reset();
   slotCapacity_ = 0;
   expectedActive_ = 0;
@@ -276,6 +278,7 @@ void LightClusters::activate() {
   slotMasks_[1]->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksHighSsbo.index);
   const uint32_t zero = 0;
   glClearNamedBufferSubData(slotClusters_->id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(clusterSlots_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   activateProgram_.use();
   glDispatchCompute(groupsFor(uint64_t(blockData_.counts.y) + uint64_t(dims_.x) * dims_.y, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

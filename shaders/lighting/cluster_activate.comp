@@ -13,7 +13,7 @@ layout(local_size_x = 64) in;
 layout(std430, binding = CLUSTER_SSBO) writeonly buffer Headers { ClusterHeader headers[]; };
 layout(std430, binding = CLUSTER_OCCUPANCY_SSBO) readonly buffer Occupancy { uint occupancy[]; };
 layout(std430, binding = CLUSTER_BOXES_SSBO) writeonly buffer Boxes { vec4 boxes[]; };
-layout(std430, binding = CLUSTER_SLOTS_SSBO) writeonly buffer Slots { uint clusterSlots[]; };
+layout(std430, binding = CLUSTER_SLOTS_SSBO) buffer Slots { uint clusterSlots[]; };  // tile bits zeroed before
 layout(std430, binding = SLOT_CLUSTERS_SSBO) buffer SlotClusters {
   uint activeCount;  // zeroed before the pass
   uint slotClusters[];
@@ -33,5 +33,8 @@ void main() {
   bool slotted = slot < slotCapacity();
   clusterSlots[id] = slotted ? slot : CLUSTER_INACTIVE;
   headers[id] = slotted ? ClusterHeader(0u, 0u) : ClusterHeader(CLUSTER_INACTIVE, 0u);
-  if (slotted) slotClusters[slot] = id;
+  if (!slotted) return;
+  slotClusters[slot] = id;
+  uint tile = id % tileCount(), slice = id / tileCount();
+  atomicOr(clusterSlots[tileSliceBase(tile) + slice / 32u], 1u << (slice % 32u));
 }

@@ -4,10 +4,14 @@
 // spans (a slice more each way), each tested against the box of the surfaces it holds (cluster_activate.comp).
 // Cost: lights x the clusters they can reach. A hit counts the light in the cluster's header (LIGHT_COUNT)
 // and/or sets its bit in the cluster's mask (LIGHT_MARK), from which cluster_fill.comp writes the list in light
-// order. A light whose tiles x slices exceed INLINE_CANDIDATES is queued instead and visited by the BIG_LIGHTS
-// build, a workgroup per light sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535
-// iterations (see deferred.comp).
+// order. In each tile, only the slices whose cluster has a slot are visited (tileSliceBase). A light whose tiles x
+// slices exceed INLINE_CANDIDATES is queued instead and visited by the BIG_LIGHTS build, a workgroup per light
+// sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535 iterations (see deferred.comp).
+#if BIG_LIGHTS
+layout(local_size_x = 256) in;
+#else
 layout(local_size_x = 64) in;
+#endif
 
 #include "../common/frame.glsl"
 #include "clusters.glsl"
@@ -149,7 +153,15 @@ void visitTile(uint t) {
 #if SPOT_LIGHTS
   if (!coneIntersectsAabb(gApexRange, gAxisCos, boxes[box].xyz, boxes[box + 1u].xyz)) return;
 #endif
-  for (uint s = gSliceFirst; s <= gSliceLast; ++s) visitCluster(s * tileCount() + tile);
+  uint base = tileSliceBase(tile);
+  for (uint w = gSliceFirst / 32u; w <= gSliceLast / 32u; ++w) {
+    uint first = max(gSliceFirst, 32u * w) - 32u * w, last = min(gSliceLast, 32u * w + 31u) - 32u * w;
+    uint bits = clusterSlots[base + w] & (0xFFFFFFFFu << first) & (0xFFFFFFFFu >> (31u - last));
+    while (bits != 0u) {
+      visitCluster((32u * w + uint(findLSB(bits))) * tileCount() + tile);
+      bits &= bits - 1u;
+    }
+  }
 }
 
 void finishLight() {
@@ -166,7 +178,8 @@ void main() {
 #else
   uint light = lightRange.x + gl_GlobalInvocationID.x;
   if (light >= lightRange.y || !prepareLight(light)) return;
-  if (gTiles * (gSliceLast - gSliceFirst + 1u) > INLINE_CANDIDATES) {
+  // A tile takes at most (slices / 32 + 2) words and `slices` bits: under twice slices + 1.
+  if (gTiles * 2u * (gSliceLast - gSliceFirst + 2u) > INLINE_CANDIDATES) {
     bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
     return;
   }
