@@ -96,8 +96,8 @@ void printWarmUp(const WarmUpReport& w) {
   }
   std::printf("\n");
   if (w.overflowedClusters) {
-    std::printf("warm-up: the light-index list reached its limit: %u clusters are shaded by brute force in every "
-                "timed frame\n", w.overflowedClusters);
+    std::printf("warm-up: the light-index list or the light masks reached their limit: %u clusters are shaded by "
+                "brute force in every timed frame\n", w.overflowedClusters);
   }
 }
 
@@ -121,8 +121,8 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
                 static_cast<unsigned long long>(s.indexEntries));
     if (s.overflowedClusters) {
-      std::printf("clusters: %u clusters did not fit the light index list and were shaded by brute force\n",
-                  s.overflowedClusters);
+      std::printf("clusters: %u clusters did not fit the light index list or the light masks and were shaded by "
+                  "brute force\n", s.overflowedClusters);
     }
   } else {
     std::printf("\n");

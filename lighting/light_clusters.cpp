@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
-#include <string>
 
 #include "core/debug_group.hpp"
 #include "lighting/lighting_bindings.hpp"
@@ -152,6 +150,12 @@ bool LightClusters::planMasks(uint32_t lights, uint32_t expectedActive) {
   if (half(capacity) * slotBytes(lights) > perBuffer) {
     window = std::max<uint64_t>(1024, perBuffer / half(capacity) * 8 * 32 / 33 / 1024 * 1024);
     const uint64_t fit = std::max<uint64_t>(1, perBuffer / slotBytes(static_cast<uint32_t>(window)));
+    if (2 * fit < expectedActive && !warnedMasks_) {
+      std::fprintf(stderr, "clusters: light masks for %u clusters holding a surface exceed their budget of %.1f MiB; "
+                           "the clusters past %llu are shaded by brute force\n",
+                   expectedActive, 2.0 * perBuffer / (1 << 20), static_cast<unsigned long long>(2 * fit));
+      warnedMasks_ = true;
+    }
     capacity = std::min(capacity, 2 * fit);
   }
   const bool changed = capacity != slotCapacity_ || window != windowLights_;

@@ -120,6 +120,7 @@ class LightClusters {
   uint64_t sizedFor_ = kNotSized;
   uint32_t maxCapacity_ = 0;
   bool warnedLimit_ = false;
+  bool warnedMasks_ = false;
 
   // Status copies read a few frames later, so that sizing the list never waits for the GPU.
   struct PendingStatus {

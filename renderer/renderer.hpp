@@ -40,7 +40,7 @@ struct LightStats {
   uint32_t nonEmptyClusters = 0;
   uint32_t maxPerCluster = 0;
   uint64_t indexEntries = 0;        // entries of the light-index list the frame needed
-  uint32_t overflowedClusters = 0;  // shaded by brute force because the list was full
+  uint32_t overflowedClusters = 0;  // shaded by brute force: the list or the light masks were full
   PairCounts pairs;
   double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
   // Light-pixel pairs that contribute over pairs evaluated.
@@ -57,7 +57,7 @@ struct FrameCapture {
 struct WarmUpReport {
   int frames = 0;            // untimed frames rendered
   int listSizingFrames = 0;  // of those, frames added because a cluster's light list did not fit yet
-  uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list at its limit)
+  uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list or masks at their limit)
 };
 
 // What has been built so far, for checking that a resize rebuilds only what the size owns.
