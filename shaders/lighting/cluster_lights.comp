@@ -5,8 +5,9 @@
 // Cost: lights x the clusters they can reach. A hit counts the light in the cluster's header (LIGHT_COUNT)
 // and/or sets its bit in the cluster's mask (LIGHT_MARK), from which cluster_fill.comp writes the list in light
 // order. In each tile, only the slices whose cluster has a slot are visited (tileSliceBase). A light whose tiles x
-// slices exceed INLINE_CANDIDATES is queued instead and visited by the BIG_LIGHTS build, a workgroup per light
-// sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535 iterations (see deferred.comp).
+// slices could loop past INLINE_CANDIDATES iterations is queued instead and visited by the BIG_LIGHTS build, a
+// workgroup per light sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535 iterations
+// (see deferred.comp).
 #if BIG_LIGHTS
 layout(local_size_x = 256) in;
 #else
