@@ -282,7 +282,10 @@ void LightClusters::activate() {
   slotMasks_[1]->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSlotMasksHighSsbo.index);
   const uint32_t zero = 0;
   glClearNamedBufferSubData(slotClusters_->id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(clusterSlots_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  // The tiles' slice bits, after the clusters' slots (which the pass writes whole).
+  const GLintptr tileBits = GLintptr(blockData_.counts.y) * sizeof(uint32_t);
+  glClearNamedBufferSubData(clusterSlots_->id(), GL_R32UI, tileBits, GLsizeiptr(clusterSlots_->size()) - tileBits,
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   activateProgram_.use();
   glDispatchCompute(groupsFor(uint64_t(blockData_.counts.y) + uint64_t(dims_.x) * dims_.y, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

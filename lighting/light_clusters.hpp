@@ -2,7 +2,6 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -75,9 +74,8 @@ class LightClusters {
 
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }
-  // Lights per mask window (all of them unless the masks exceed their budget), and clusters given masks.
+  // Lights per mask window: all of them unless the masks exceed their budget.
   uint32_t windowLights() const { return windowLights_; }
-  uint32_t slotCapacity() const { return slotCapacity_; }
   size_t bytes() const;
 
  private:

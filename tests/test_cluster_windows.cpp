@@ -68,7 +68,7 @@ TEST_CASE("clusters: masks over their budget are built in windows of lights, wit
   REQUIRE(active > 100);
   REQUIRE(whole.stats.indexEntries > 10000);
 
-  // 200 bytes per active cluster: the 3,000-light masks (392 bytes a slot) do not fit, 1,024-light ones do.
+  // 200 bytes per active cluster: the 3,000-light masks (388 bytes a slot) do not fit, 1,024-light ones do.
   ClusterConfig budget;
   budget.maxMaskBytes = 200ull * active;
   const Assigned windowed = assign(scene, budget);
@@ -81,6 +81,16 @@ TEST_CASE("clusters: masks over their budget are built in windows of lights, wit
   size_t differing = 0;
   for (size_t c = 0; c < whole.lists.size(); ++c) differing += windowed.lists[c] != whole.lists[c] ? 1 : 0;
   CHECK(differing == 0);
+
+  // And the windowed frame equals brute force.
+  FrameOptions options;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, {kWidth, kHeight}, options, 1);
+  options.culling = Culling::Clustered;
+  const test::RenderedFrame frame = test::renderScene(scene, {kWidth, kHeight}, options, 2, budget);
+  CHECK(frame.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(frame.hdr, reference.hdr) <= 1e-5);
+  CHECK(test::countDifferentBytes(frame.ldr, reference.ldr) == 0);
 }
 
 TEST_CASE("clusters: clusters past the masks' slots are shaded by brute force, equal to brute force") {

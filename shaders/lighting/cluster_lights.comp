@@ -126,9 +126,8 @@ bool prepareLight(uint light) {
   return true;
 }
 
+// A cluster with a slot (visitTile finds them through the tile's slice bits).
 void visitCluster(uint cluster) {
-  uint slot = clusterSlots[cluster];
-  if (slot == CLUSTER_INACTIVE) return;
   vec3 lo = boxes[2u * cluster].xyz, hi = boxes[2u * cluster + 1u].xyz;
   if (!sphereIntersectsAabb(gSphere.xyz, gSphere.w, lo, hi)) return;
 #if SPOT_LIGHTS
@@ -139,6 +138,7 @@ void visitCluster(uint cluster) {
   atomicAdd(headers[cluster].count, 1u);
 #endif
 #if LIGHT_MARK
+  uint slot = clusterSlots[cluster];
   uint bit = gLight - clusterGrid.window.x, word = bit / 32u;
   bool high = slotIsHigh(slot);
   uint previous = orSlotWord(high, slotMaskBase(slot) + word, 1u << (bit % 32u));

@@ -25,12 +25,12 @@ uint tileCount() { return clusterGrid.dims.x * clusterGrid.dims.y; }
 // w, bit b for light window.x + 32 w + b; and a summary, a bit per mask word that has any bit set, so that the
 // fill pass finds its lights without reading empty words.
 uint slotMaskWords() { return clusterGrid.window.z; }
+uint slotSummaryWords() { return (slotMaskWords() + 31u) / 32u; }
+uint slotCapacity() { return clusterGrid.window.w; }
 // After the clusters' slots, per screen tile, a bit per depth slice whose cluster has a slot, so that a light
 // visits only the slots among the slices it spans.
 uint tileSliceWords() { return (clusterGrid.dims.z + 31u) / 32u; }
 uint tileSliceBase(uint tile) { return clusterCount() + tile * tileSliceWords(); }
-uint slotSummaryWords() { return (slotMaskWords() + 31u) / 32u; }
-uint slotCapacity() { return clusterGrid.window.w; }
 
 // The occupancy boxes (cluster_occupancy.comp): per cluster, then per tile, the view-space AABB of the surface
 // points its pixels see, as six words: the minimum corner as orderedBits, the maximum corner as ~orderedBits,
