@@ -243,21 +243,46 @@ int runBench(const std::vector<std::string>& argv) {
   report.settings = settings;
   report.shard = shard;
   report.provenance = collectProvenance(context->info(), timing);
+  report.provenance.set("frame_order", "each configuration's first frame, then theirs in turn, a frame each per round");
   const std::string part =
       shard ? " (shard " + shard->text() + " of " + std::to_string(sweep.size()) + ")" : std::string();
   std::fprintf(stderr, "bench: %zu configurations%s on %s, %s\n", configs.size(), part.c_str(),
                context->info().renderer.c_str(), describe(timing));
 
+  // Every configuration keeps its renderer while the sweep takes their frames in turn, a frame each per round,
+  // so that the machine's drift (another tenant, clocks, heat) falls on all alike.
   const ShaderLibrary shaders;
   BenchProgress progress(configs, settings, ::isatty(STDERR_FILENO) == 1);
   const BenchClock::time_point sweepStart = BenchClock::now();
+  std::vector<std::unique_ptr<BenchRun>> runs;
   for (size_t index = 0; index < configs.size(); ++index) {
     const BenchConfig& config = configs[index];
     const size_t li = static_cast<size_t>(
         std::find(settings.lights.begin(), settings.lights.end(), config.lights) - settings.lights.begin());
-    progress.started();
-    BenchResult result = runBenchConfig(shaders, scenes[li], config, settings, timing, sweepStart,
-                                        [&](int done, int frames) { progress.frame(index, done, frames); });
+    runs.push_back(std::make_unique<BenchRun>(shaders, scenes[li], config, timing));
+    runs.back()->probe(settings);
+    progress.rendered(index, runs.back()->frameSeconds());
+    progress.probed(index, runs.back()->partial());
+  }
+  const auto inTurn = [&](const char* phase, int rounds, const std::function<void(BenchRun&)>& frame) {
+    for (int round = 1; round <= rounds; ++round) {
+      progress.round(phase, round, rounds);
+      for (size_t index = 0; index < runs.size(); ++index) {
+        if (runs[index]->skipped()) continue;
+        frame(*runs[index]);
+        progress.rendered(index, runs[index]->frameSeconds());
+      }
+    }
+  };
+  inTurn("warm-up", settings.warmup - 1, [](BenchRun& run) { run.warmUpFrame(); });
+  inTurn("timed", settings.frames, [&](BenchRun& run) {
+    run.timedFrame(std::chrono::duration<double, std::milli>(BenchClock::now() - sweepStart).count());
+  });
+  for (size_t index = 0; index < runs.size(); ++index) {
+    const double frameSeconds = runs[index]->frameSeconds();
+    BenchResult result = runs[index]->finish();
+    runs[index].reset();
+    if (!result.skipped) progress.rendered(index, frameSeconds);
     progress.finished(index, result);
     report.results.push_back(std::move(result));
   }

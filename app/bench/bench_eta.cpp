@@ -20,19 +20,15 @@ double proportional(double seconds, int lights, int target) {
 SweepEta::SweepEta(std::vector<BenchConfig> configs, const BenchSettings& settings)
     : configs_(std::move(configs)),
       framesPerConfig_(settings.warmup + settings.frames + 1),
-      maxSeconds_(settings.maxSeconds) {}
+      maxSeconds_(settings.maxSeconds),
+      frameSeconds_(configs_.size()) {}
 
-void SweepEta::finished(size_t index, const BenchResult& result) {
-  // A skipped configuration rendered one frame, the estimate's.
-  const double seconds = result.skipped ? result.estimatedSeconds : result.elapsedSeconds;
-  measured_.push_back({configs_[index], seconds / framesPerConfig_});
-}
+void SweepEta::measured(size_t index, double frameSeconds) { frameSeconds_.at(index) = frameSeconds; }
 
-double SweepEta::predictedSeconds(const BenchConfig& config, const std::vector<Measured>& measured) const {
-  std::vector<const Measured*> same, any;
-  for (const Measured& m : measured) {
-    any.push_back(&m);
-    if (m.config.culling == config.culling && m.config.model == config.model) same.push_back(&m);
+double SweepEta::predictedSeconds(const BenchConfig& config, const std::vector<const Measured*>& measured) const {
+  std::vector<const Measured*> same, any = measured;
+  for (const Measured* m : measured) {
+    if (m->config.culling == config.culling && m->config.model == config.model) same.push_back(m);
   }
   const auto byDistance = [&](const Measured* a, const Measured* b) {
     return std::abs(a->config.lights - config.lights) < std::abs(b->config.lights - config.lights);
@@ -55,18 +51,21 @@ double SweepEta::predictedSeconds(const BenchConfig& config, const std::vector<M
   return frame * framesPerConfig_ > maxSeconds_ ? frame : frame * framesPerConfig_;
 }
 
-double SweepEta::remainingSeconds(size_t index, int done, double elapsedSeconds) const {
-  const double frame = elapsedSeconds / done;
-  std::vector<Measured> measured = measured_;
-  if (measured.empty()) measured.push_back({configs_[index], frame});
-  double seconds = frame * (framesPerConfig_ - done);
-  for (size_t i = index + 1; i < configs_.size(); ++i) seconds += predictedSeconds(configs_[i], measured);
-  return seconds;
-}
-
-double SweepEta::remainingAfter(size_t index) const {
+double SweepEta::remainingSeconds(const std::vector<int>& framesLeft) const {
+  std::vector<Measured> measured;
+  for (size_t i = 0; i < configs_.size(); ++i) {
+    if (frameSeconds_[i]) measured.push_back({configs_[i], *frameSeconds_[i]});
+  }
+  std::vector<const Measured*> pointers;
+  for (const Measured& m : measured) pointers.push_back(&m);
   double seconds = 0.0;
-  for (size_t i = index + 1; i < configs_.size(); ++i) seconds += predictedSeconds(configs_[i], measured_);
+  for (size_t i = 0; i < configs_.size() && i < framesLeft.size(); ++i) {
+    if (frameSeconds_[i]) {
+      seconds += *frameSeconds_[i] * framesLeft[i];
+    } else if (framesLeft[i] > 0 && !pointers.empty()) {
+      seconds += predictedSeconds(configs_[i], pointers);
+    }
+  }
   return seconds;
 }
 

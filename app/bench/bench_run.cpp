@@ -42,56 +42,88 @@ TimedFrames timeFrames(Renderer& renderer, const FrameOptions& options, Profiler
   return out;
 }
 
-BenchResult runBenchConfig(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config,
-                           const BenchSettings& settings, TimingMode timing, BenchClock::time_point sweepStart,
-                           const FrameProgress& progress) {
-  const BenchClock::time_point start = BenchClock::now();
-  BenchResult r;
-  r.config = config;
-  Renderer renderer(shaders, scene, config.size.x, config.size.y);
-  Profiler profiler(timing);
-  FrameOptions options;
-  options.model = config.model;
-  options.culling = config.culling;
-  options.exposure = scene.displayExposure();
-  const int total = settings.warmup + settings.frames + 1;
+BenchRun::BenchRun(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config, TimingMode timing)
+    : renderer_(std::make_unique<Renderer>(shaders, scene, config.size.x, config.size.y)),
+      profiler_(std::make_unique<Profiler>(timing)) {
+  result_.config = config;
+  options_.model = config.model;
+  options_.culling = config.culling;
+  options_.exposure = scene.displayExposure();
+}
 
-  // The first frame also pays for shader specialization and sizes the cluster lists, so the estimate errs long.
-  const BenchClock::time_point probeStart = BenchClock::now();
-  renderer.renderFrame(options, profiler);
+BenchRun::~BenchRun() = default;
+
+void BenchRun::frame(Profiler& profiler, bool probing) {
+  const BenchClock::time_point start = BenchClock::now();
+  const double cpuStartMs = processCpuMs();
+  renderer_->renderFrame(options_, profiler);
   glFinish();  // with timer queries the frame may still be running
-  const double probeSeconds = msSince(probeStart) * 1e-3;
-  r.estimatedSeconds = probeSeconds * total;
-  progress(1, total);
-  if (r.estimatedSeconds > settings.maxSeconds) {
+  const double wallMs = msSince(start);
+  result_.elapsedSeconds += wallMs * 1e-3;
+  if (!probing) {
+    ++framesAfterProbe_;
+    secondsAfterProbe_ += wallMs * 1e-3;
+  }
+  if (timing_) {
+    timedWallMs_ += wallMs;
+    timedCpuMs_ += processCpuMs() - cpuStartMs;
+  }
+}
+
+void BenchRun::probe(const BenchSettings& settings) {
+  frame(*profiler_, true);
+  probeSeconds_ = result_.elapsedSeconds;
+  const int total = settings.warmup + settings.frames + 1;
+  result_.estimatedSeconds = probeSeconds_ * total;
+  if (result_.estimatedSeconds > settings.maxSeconds) {
     char reason[200];
     std::snprintf(reason, sizeof(reason),
                   "estimated %.1f s (first warm-up frame %.3f s x %d frames) exceeds --max-seconds %g",
-                  r.estimatedSeconds, probeSeconds, total, settings.maxSeconds);
-    r.skipped = true;
-    r.skipReason = reason;
-    r.elapsedSeconds = msSince(start) * 1e-3;
-    return r;
+                  result_.estimatedSeconds, probeSeconds_, total, settings.maxSeconds);
+    result_.skipped = true;
+    result_.skipReason = reason;
+    renderer_.reset();
+    return;
   }
-  renderer.warmUp(options, profiler, settings.warmup - 1);
-  progress(settings.warmup, total);
-  r.timelineStartMs = msSince(sweepStart);
-  TimedFrames timed = timeFrames(renderer, options, profiler, settings.frames,
-                                 [&](int done) { progress(settings.warmup + done, total); });
-  r.frames = std::move(timed.frames);
-  r.processCpuShare = timed.processCpuShare;
-  r.memory = {renderer.gbuffer().bytes(), renderer.clusters().bytes(), renderer.lights().bytes()};
+  // Frames until the light lists fit, as the first frame sized them (Renderer::warmUp).
+  const double before = result_.elapsedSeconds;
+  const BenchClock::time_point start = BenchClock::now();
+  renderer_->warmUp(options_, *profiler_, 0);
+  glFinish();
+  result_.elapsedSeconds = before + msSince(start) * 1e-3;
+}
+
+void BenchRun::warmUpFrame() { frame(*profiler_); }
+
+void BenchRun::timedFrame(double sweepMs) {
+  if (!timing_) {
+    profiler_->takeResults(true);  // the warm-up frames
+    result_.timelineStartMs = sweepMs;
+    timing_ = true;
+  }
+  frame(*profiler_);
+}
+
+double BenchRun::frameSeconds() const {
+  return framesAfterProbe_ > 0 ? secondsAfterProbe_ / framesAfterProbe_ : probeSeconds_;
+}
+
+BenchResult BenchRun::finish() {
+  if (result_.skipped) return std::move(result_);
+  result_.frames = profiler_->takeResults(true);
+  result_.processCpuShare = timedWallMs_ > 0.0 ? timedCpuMs_ / (timedWallMs_ * availableCpus()) : 0.0;
+  result_.memory = {renderer_->gbuffer().bytes(), renderer_->clusters().bytes(), renderer_->lights().bytes()};
 
   // The counters cost time: they come from one more frame, timed by nobody, so they never distort the timings.
-  options.stats = true;
-  Profiler untimed(timing);
-  renderer.renderFrame(options, untimed);
-  r.stats = renderer.lightStats();
-  progress(total, total);
-  checkGlError("benchmarking " + config.label());
-  r.summarize();
-  r.elapsedSeconds = msSince(start) * 1e-3;
-  return r;
+  options_.stats = true;
+  timing_ = false;
+  Profiler untimed(profiler_->mode());
+  frame(untimed, true);
+  result_.stats = renderer_->lightStats();
+  checkGlError("benchmarking " + result_.config.label());
+  result_.summarize();
+  renderer_.reset();
+  return std::move(result_);
 }
 
 }  // namespace pbr

@@ -1,6 +1,7 @@
 #pragma once
 #include <chrono>
 #include <functional>
+#include <memory>
 
 #include "app/bench/bench_sweep.hpp"
 #include "core/shader_library.hpp"
@@ -8,9 +9,6 @@
 namespace pbr {
 
 using BenchClock = std::chrono::steady_clock;
-
-// Called after every frame a configuration renders with the frames done and the most it will render.
-using FrameProgress = std::function<void(int done, int total)>;
 
 // Frames timed after warm-up, and the share of the available CPUs the process used meanwhile.
 struct TimedFrames {
@@ -22,11 +20,45 @@ struct TimedFrames {
 TimedFrames timeFrames(Renderer& renderer, const FrameOptions& options, Profiler& profiler, int frames,
                        const std::function<void(int done)>& afterFrame = {});
 
-// Measures one configuration with a renderer of its own: warm-up frames, of which the first estimates the
-// configuration's time and skips it when that exceeds settings.maxSeconds; timed frames with the camera fixed;
-// then one untimed frame with GPU light statistics. `scene` already holds the configuration's lights.
-BenchResult runBenchConfig(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config,
-                           const BenchSettings& settings, TimingMode timing, BenchClock::time_point sweepStart,
-                           const FrameProgress& progress);
+// One configuration of a sweep with a renderer of its own, which lives until finish() so that the sweep can take
+// the configurations' frames in turn: probe() renders the first warm-up frame, whose time x the frames the
+// configuration renders estimates its time (it also pays for shader specialization and list sizing, so the
+// estimate errs long) and skips it past settings.maxSeconds; warmUpFrame() and timedFrame() render one frame
+// each; finish() renders one untimed frame with GPU light statistics and returns the result. Every call waits for
+// its frame, so that one configuration's frame never overlaps another's.
+class BenchRun {
+ public:
+  BenchRun(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config, TimingMode timing);
+  ~BenchRun();
+  BenchRun(const BenchRun&) = delete;
+  BenchRun& operator=(const BenchRun&) = delete;
+
+  void probe(const BenchSettings& settings);
+  bool skipped() const { return result_.skipped; }
+  // The result so far: the configuration, its estimate or reason to skip, its time so far.
+  const BenchResult& partial() const { return result_; }
+  void warmUpFrame();
+  // `sweepMs`: the time since the start of the sweep, where the first timed frame lies on the trace.
+  void timedFrame(double sweepMs);
+  BenchResult finish();
+
+  // Seconds per frame: the first frame's, then the mean of those since.
+  double frameSeconds() const;
+
+ private:
+  // Renders one frame on `profiler`, adding its wall time to the configuration's (and to its rate unless
+  // `probing`), and its CPU time once timed frames have begun.
+  void frame(Profiler& profiler, bool probing = false);
+
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<Profiler> profiler_;
+  FrameOptions options_;
+  BenchResult result_;
+  double probeSeconds_ = 0.0;
+  int framesAfterProbe_ = 0;
+  double secondsAfterProbe_ = 0.0;
+  bool timing_ = false;  // timed frames have begun
+  double timedWallMs_ = 0.0, timedCpuMs_ = 0.0;
+};
 
 }  // namespace pbr
