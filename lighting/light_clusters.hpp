@@ -72,6 +72,9 @@ class LightClusters {
   // and tools.
   std::vector<std::vector<uint32_t>> readLists() const;
 
+  // The defines of the light pass (cluster_lights.comp) for these choices, without the binding defines.
+  static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big);
+
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }
   // Lights per mask window: all of them unless the masks exceed their budget.

@@ -105,6 +105,23 @@ TEST_CASE("clusters: edge-case lights agree with brute force in both shading mod
   checkClusteredMatchesBruteForce(scene, ShadingModel::BlinnPhong, config);
 }
 
+TEST_CASE("clusters: lights that together pass an invocation's loop budget finish in a workgroup of their own") {
+  PBR_REQUIRE_GL();
+  ClusterConfig config;
+  config.tileSize = 16;  // 10 x 6 tiles
+  Scene scene = clusterScene();
+  // Around the eye, so every tile, reaching slice 115 of 192: 60 tiles x 2 x (116 - 0 + 2) = 14160 candidates
+  // each (cluster_lights.comp), under the 16384 of one light; three of them fill the 49152 of an invocation of
+  // four lights, so its fourth light is visited by the workgroup path.
+  const float depth = clusterSliceDepth(scene.camera.nearPlane, scene.camera.farPlane, 115, config.slices) * 1.01f;
+  for (int i = 0; i < 8; ++i) {
+    scene.lights.push_back({scene.camera.position, depth, {1.0f, 0.2f * i, 0.5f}, 3.0f + i});
+  }
+  const std::vector<PointLight> extra = randomLights(100, 11);
+  scene.lights.insert(scene.lights.end(), extra.begin(), extra.end());
+  checkClusteredMatchesBruteForce(scene, ShadingModel::Pbr, config);
+}
+
 TEST_CASE("clusters: 65536 lights with one cluster touched by every light render without loss") {
   PBR_REQUIRE_GL();
   Scene scene = clusterScene();

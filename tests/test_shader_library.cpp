@@ -17,6 +17,7 @@
 #include "gbuffer/gbuffer_pass.hpp"
 #include "lighting/debug_channel.hpp"
 #include "lighting/gbuffer_debug_pass.hpp"
+#include "lighting/light_clusters.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "lighting/shading_model.hpp"
@@ -210,8 +211,14 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/deferred.comp", lighting);
   checkComputeCompiles("lighting/deferred.comp", ibl);
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
-  checkComputeCompiles("lighting/cluster_lights.comp",
-                       flagCombinations({"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS", "BIG_LIGHTS"}));
+  DefineSets lightPass;
+  const std::vector<std::string> lightPassFlags = {"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS",
+                                                   "BIG_LIGHTS"};
+  for (const ShaderDefines& flags : flagCombinations(lightPassFlags)) {
+    const auto on = [&](size_t i) { return flags[i].value == "1"; };
+    lightPass.push_back(pbr::LightClusters::lightPassPermutation(on(0), on(1), on(2), on(3), on(4)));
+  }
+  checkComputeCompiles("lighting/cluster_lights.comp", lightPass);
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_activate.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_fill.comp", DefineSets{ShaderDefines{}});

@@ -1,13 +1,14 @@
 #version 450 core
-// Third pass of light assignment, one invocation per light: its view-space sphere, the screen tiles its projected
-// bounds can cover and, in each tile whose surface box it touches, the clusters of the depth slices its sphere
-// spans (a slice more each way), each tested against the box of the surfaces it holds (cluster_activate.comp).
-// Cost: lights x the clusters they can reach. A hit counts the light in the cluster's header (LIGHT_COUNT)
-// and/or sets its bit in the cluster's mask (LIGHT_MARK), from which cluster_fill.comp writes the list in light
-// order. In each tile, only the slices whose cluster has a slot are visited (tileSliceBase). A light whose tiles x
-// slices could loop past INLINE_CANDIDATES iterations is queued instead and visited by the BIG_LIGHTS build, a
-// workgroup per light sharing its tiles, so that no invocation loops past llvmpipe's limit of 65535 iterations
-// (see deferred.comp).
+// Third pass of light assignment, LIGHTS_PER_INVOCATION lights per invocation: each light's view-space sphere,
+// the screen tiles its projected bounds can cover and, in each tile whose surface box it touches, the clusters of
+// the depth slices its sphere spans (widened by how far a box may pass its slice, sliceMargin), each tested
+// against the box of the surfaces it holds (cluster_activate.comp). Cost: lights x the clusters they can reach.
+// A hit counts the light in the cluster's header (LIGHT_COUNT) and/or sets its bit in the cluster's mask
+// (LIGHT_MARK), from which cluster_fill.comp writes the list in light order. In each tile, only the slices whose
+// cluster has a slot are visited (tileSliceBase). A light whose tiles x slices could loop past INLINE_CANDIDATES
+// iterations, or past what its invocation's earlier lights left of INVOCATION_CANDIDATES, is queued instead and
+// visited by the BIG_LIGHTS build, a workgroup per light sharing its tiles, so that no invocation loops past
+// llvmpipe's limit of 65535 iterations (see deferred.comp).
 #if BIG_LIGHTS
 layout(local_size_x = 256) in;
 #else
@@ -21,7 +22,8 @@ layout(local_size_x = 64) in;
 // x: the first light, y: the end of the lights this dispatch visits.
 layout(location = 0) uniform uvec4 lightRange;
 
-const uint INLINE_CANDIDATES = 16384u;
+const uint INLINE_CANDIDATES = 16384u;  // per light
+const uint INVOCATION_CANDIDATES = 49152u;  // per invocation, its lights together
 
 layout(std430, binding = CLUSTER_BOXES_SSBO) readonly buffer Boxes { vec4 boxes[]; };
 layout(std430, binding = CLUSTER_SLOTS_SSBO) readonly buffer Slots { uint clusterSlots[]; };
@@ -100,6 +102,15 @@ bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
   return true;
 }
 
+// How far, in slices, a cluster's box may reach past its slice: the occupancy pass's 1e-3 of a slice, and the
+// box's padding (occupiedBox: 1e-4 of its largest coordinate, which inside the view is at most k times the depth
+// of the slice's far end, k = max(1, 1/P00, 1/P11), plus 1e-6, at least the near plane's depth away), doubled.
+float sliceMargin() {
+  float slicesPerLog = clusterGrid.slicing.z;
+  float k = max(1.0, max(1.0 / frame.projParams.x, 1.0 / frame.projParams.y));
+  return 2.0 * (1e-3 + slicesPerLog * (1e-4 * k * exp(1.0 / slicesPerLog) + 1e-6 / clusterGrid.slicing.x));
+}
+
 // The light's view-space bounds, the tiles and the slices it may reach. False when it reaches nothing: radius 0
 // (distanceAttenuation), or outside the screen.
 bool prepareLight(uint light) {
@@ -117,12 +128,9 @@ bool prepareLight(uint light) {
   if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, last)) return false;
   gColumns = last.x - gFirst.x + 1u;
   gTiles = gColumns * (last.y - gFirst.y + 1u);
-  // A box's depth extent passes its surfaces' slices by its padding and the occupancy pass's 1e-3 of a slice,
-  // far less than a slice: one slice more each way keeps the range conservative.
   float nearDepth = -gSphere.z - gSphere.w, farDepth = -gSphere.z + gSphere.w;
-  uint first = nearDepth > 0.0 ? depthSlice(nearDepth) : 0u;
-  gSliceFirst = first > 0u ? first - 1u : 0u;
-  gSliceLast = min(depthSlice(farDepth) + 1u, clusterGrid.dims.z - 1u);
+  gSliceFirst = nearDepth > 0.0 ? clampSlice(floor(sliceCoordinate(nearDepth) - sliceMargin())) : 0u;
+  gSliceLast = clampSlice(floor(sliceCoordinate(farDepth) + sliceMargin()));
   return true;
 }
 
@@ -172,25 +180,33 @@ void finishLight() {
 }
 
 void main() {
-  gHit = false;
 #if BIG_LIGHTS
+  gHit = false;
   if (!prepareLight(bigLights[gl_WorkGroupID.x])) return;
   for (uint t = gl_LocalInvocationIndex; t < gTiles; t += gl_WorkGroupSize.x) visitTile(t);
+  finishLight();
 #else
-  uint light = lightRange.x + gl_GlobalInvocationID.x;
-  if (light >= lightRange.y || !prepareLight(light)) return;
-  // A tile takes at most (slices / 32 + 2) words and `slices` bits: under twice slices + 1.
-  if (gTiles * 2u * (gSliceLast - gSliceFirst + 2u) > INLINE_CANDIDATES) {
-    bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
-    return;
-  }
-  // Four tiles per iteration, for llvmpipe's iteration limit.
-  for (uint t = 0u; t < gTiles; t += 4u) {
-    visitTile(t);
-    visitTile(t + 1u);
-    visitTile(t + 2u);
-    visitTile(t + 3u);
+  // Several lights per invocation: llvmpipe spends about as much starting an invocation as preparing a light.
+  uint first = lightRange.x + gl_GlobalInvocationID.x * LIGHTS_PER_INVOCATION;
+  uint iterations = 0u;
+  for (uint light = first; light < min(first + LIGHTS_PER_INVOCATION, lightRange.y); ++light) {
+    gHit = false;
+    if (!prepareLight(light)) continue;
+    // A tile takes at most (slices / 32 + 2) words and `slices` bits: under twice slices + 1.
+    uint candidates = gTiles * 2u * (gSliceLast - gSliceFirst + 2u);
+    if (candidates > INLINE_CANDIDATES || candidates > INVOCATION_CANDIDATES - iterations) {
+      bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
+      continue;
+    }
+    iterations += candidates;
+    // Four tiles per iteration, for llvmpipe's iteration limit.
+    for (uint t = 0u; t < gTiles; t += 4u) {
+      visitTile(t);
+      visitTile(t + 1u);
+      visitTile(t + 2u);
+      visitTile(t + 3u);
+    }
+    finishLight();
   }
 #endif
-  finishLight();
 }
