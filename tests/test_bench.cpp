@@ -84,10 +84,10 @@ bool isNumber(const std::string& s) {
 }
 
 // Two light counts, both culling modes, tiny frames: a second or less on llvmpipe.
-PbrRun runTinySweep(const TempDir& dir, const std::vector<std::string>& extra = {}) {
+PbrRun runTinySweep(const TempDir& dir, const std::vector<std::string>& extra = {}, int frames = 2) {
   std::vector<std::string> args = {"bench",     "--lights", "16,64",   "--culling", "none,clustered",
                                    "--model",   "pbr",      "--size",  "160x90",    "--warmup",
-                                   "1",         "--frames", "2",       "--csv",     dir.file("bench.csv"),
+                                   "1",         "--frames", std::to_string(frames), "--csv", dir.file("bench.csv"),
                                    "--json",    dir.file("bench.json"), "--trace",  dir.file("trace.json")};
   args.insert(args.end(), extra.begin(), extra.end());
   return pbr::test::runPbr(dir, args);
@@ -202,6 +202,27 @@ TEST_CASE("bench: the trace is Chrome trace-event JSON with one slice per pass p
   REQUIRE(slicesPerThread.size() == 4);
   // Per timed frame: the frame, G-buffer, lighting and post, plus the cluster pass when clustered.
   for (const auto& [tid, slices] : slicesPerThread) CHECK((slices == 2 * 4 || slices == 2 * 5));
+}
+
+TEST_CASE("bench: the sweep takes its configurations' timed frames in turn, a frame each per round") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun run = runTinySweep(dir, {}, 3);
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  const Json trace = Json::parse(pbr::test::readFile(dir.file("trace.json")));
+  std::vector<std::pair<double, int>> frames;  // start, configuration
+  for (const Json& e : trace.at("traceEvents")) {
+    if (e.at("ph") == "X" && e.at("name") == "frame") {
+      frames.emplace_back(e.at("ts").get<double>(), e.at("tid").get<int>());
+    }
+  }
+  std::sort(frames.begin(), frames.end());
+  std::vector<int> order;
+  for (const auto& frame : frames) order.push_back(frame.second);
+  CHECK(order == std::vector<int>{1, 2, 3, 4, 1, 2, 3, 4, 1, 2, 3, 4});
+  const Json report = Json::parse(pbr::test::readFile(dir.file("bench.json")));
+  CHECK(report.at("provenance").at("frame_order").get<std::string>().find("in turn") != std::string::npos);
 }
 
 TEST_CASE("bench: plot_bench.py draws PNG charts from the CSV") {
