@@ -53,14 +53,14 @@ BenchRun::BenchRun(const ShaderLibrary& shaders, const Scene& scene, const Bench
 
 BenchRun::~BenchRun() = default;
 
-void BenchRun::frame(Profiler& profiler, bool probing) {
+void BenchRun::frame(Profiler& profiler, bool rated) {
   const BenchClock::time_point start = BenchClock::now();
   const double cpuStartMs = processCpuMs();
   renderer_->renderFrame(options_, profiler);
   glFinish();  // with timer queries the frame may still be running
   const double wallMs = msSince(start);
   result_.elapsedSeconds += wallMs * 1e-3;
-  if (!probing) {
+  if (rated) {
     ++framesAfterProbe_;
     secondsAfterProbe_ += wallMs * 1e-3;
   }
@@ -71,7 +71,7 @@ void BenchRun::frame(Profiler& profiler, bool probing) {
 }
 
 void BenchRun::probe(const BenchSettings& settings) {
-  frame(*profiler_, true);
+  frame(*profiler_, false);
   probeSeconds_ = result_.elapsedSeconds;
   const int total = settings.warmup + settings.frames + 1;
   result_.estimatedSeconds = probeSeconds_ * total;
@@ -118,7 +118,7 @@ BenchResult BenchRun::finish() {
   options_.stats = true;
   timing_ = false;
   Profiler untimed(profiler_->mode());
-  frame(untimed, true);
+  frame(untimed, false);
   result_.stats = renderer_->lightStats();
   checkGlError("benchmarking " + result_.config.label());
   result_.summarize();

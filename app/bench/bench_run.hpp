@@ -46,9 +46,10 @@ class BenchRun {
   double frameSeconds() const;
 
  private:
-  // Renders one frame on `profiler`, adding its wall time to the configuration's (and to its rate unless
-  // `probing`), and its CPU time once timed frames have begun.
-  void frame(Profiler& profiler, bool probing = false);
+  // Renders one frame on `profiler`, adding its wall time to the configuration's (and, when `rated`, to the
+  // frames frameSeconds() averages: not the first, nor the statistics frame), and its CPU time once timed frames
+  // have begun.
+  void frame(Profiler& profiler, bool rated = true);
 
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<Profiler> profiler_;
