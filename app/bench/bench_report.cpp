@@ -306,7 +306,8 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
   };
 
   out << s.scene << " " << s.size.x << "x" << s.size.y << ": median ms of " << s.frames << " timed frames after "
-      << s.warmup << " warm-up, " << report.provenance.get("timing_mode") << "\n"
+      << s.warmup << " warm-up" << (report.provenance.get("frame_order").empty() ? "" : ", configurations in turn")
+      << ", " << report.provenance.get("timing_mode") << "\n"
       << report.provenance.get("gl_renderer") << ": " << report.provenance.get("timing_note") << "\n\n";
   printRow(header);
   out << "\n";
