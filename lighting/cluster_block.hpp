@@ -8,7 +8,7 @@ namespace pbr {
 // std140 mirror of `ClusterBlock` in shaders/lighting/clusters.glsl.
 struct ClusterBlock {
   glm::uvec4 dims;     // tiles x, tiles y, depth slices, tile size in pixels
-  glm::vec4 slicing;   // near, far, slice scale, slice bias
+  glm::vec4 slicing;   // near, margin of a box past its slice (in slices), slice scale, slice bias
   glm::uvec4 counts;   // lights, clusters, index-list capacity, stats enabled
   glm::uvec4 window;   // lights of the masks: first, end; mask words per slot, slot capacity
 };

@@ -80,7 +80,13 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   const float nearPlane = f.clip.x, farPlane = f.clip.y;
   const float scale = static_cast<float>(dims_.z) / std::log(farPlane / nearPlane);
   blockData_.dims = glm::uvec4(dims_, tile);
-  blockData_.slicing = glm::vec4(nearPlane, farPlane, scale, -scale * std::log(nearPlane));
+  // How far, in slices, a cluster's box may reach past its slice (the light pass widens each light's slice range
+  // by it): the occupancy pass's 1e-3 of a slice, and the box's padding (occupiedBox: 1e-4 of its largest
+  // coordinate, which inside the view is at most k times the depth of the slice's far end, k = max(1, 1/P00,
+  // 1/P11), plus 1e-6, at least the near plane's depth away), doubled.
+  const float k = std::max(1.0f, std::max(1.0f / f.projParams.x, 1.0f / f.projParams.y));
+  const float margin = 2.0f * (1e-3f + scale * (1e-4f * k * std::exp(1.0f / scale) + 1e-6f / nearPlane));
+  blockData_.slicing = glm::vec4(nearPlane, margin, scale, -scale * std::log(nearPlane));
   blockData_.counts = glm::uvec4(0, clusters, 0, 0);
   headers_ = std::make_unique<Buffer>("clusters.headers", clusters * sizeof(ClusterHeader), nullptr, 0);
   cursors_ = std::make_unique<Buffer>("clusters.cursors", clusters * sizeof(uint32_t), nullptr, 0);

@@ -102,14 +102,8 @@ bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
   return true;
 }
 
-// How far, in slices, a cluster's box may reach past its slice: the occupancy pass's 1e-3 of a slice, and the
-// box's padding (occupiedBox: 1e-4 of its largest coordinate, which inside the view is at most k times the depth
-// of the slice's far end, k = max(1, 1/P00, 1/P11), plus 1e-6, at least the near plane's depth away), doubled.
-float sliceMargin() {
-  float slicesPerLog = clusterGrid.slicing.z;
-  float k = max(1.0, max(1.0 / frame.projParams.x, 1.0 / frame.projParams.y));
-  return 2.0 * (1e-3 + slicesPerLog * (1e-4 * k * exp(1.0 / slicesPerLog) + 1e-6 / clusterGrid.slicing.x));
-}
+// How far, in slices, a cluster's box may reach past its slice (LightClusters::rebuildGrid).
+float sliceMargin() { return clusterGrid.slicing.y; }
 
 // The light's view-space bounds, the tiles and the slices it may reach. False when it reaches nothing: radius 0
 // (distanceAttenuation), or outside the screen.

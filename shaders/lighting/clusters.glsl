@@ -1,7 +1,8 @@
 // Mirrors pbr::ClusterBlock (lighting/cluster_block.hpp).
 layout(std140, binding = CLUSTER_UBO) uniform ClusterBlock {
   uvec4 dims;     // tiles x, tiles y, depth slices, tile size in pixels
-  vec4 slicing;   // near, far, slice scale, slice bias: slice = floor(log(depth) * scale + bias)
+  vec4 slicing;   // near, margin of a box past its slice (in slices), slice scale, slice bias:
+                  // slice = floor(log(depth) * scale + bias)
   uvec4 counts;   // lights in the frame, clusters, index-list capacity, stats enabled
   uvec4 window;   // the lights whose bits the masks hold: first, end; mask words per slot, slot capacity
 } clusterGrid;
