@@ -148,8 +148,8 @@ void visitCluster(uint cluster) {
 #endif
 }
 
+// The t-th tile of the light's rectangle (t < gTiles).
 void visitTile(uint t) {
-  if (t >= gTiles) return;
   uint tile = (gFirst.y + t / gColumns) * clusterGrid.dims.x + gFirst.x + t % gColumns;
   uint box = 2u * tileBoxIndex(tile);
   if (!sphereIntersectsAabb(gSphere.xyz, gSphere.w, boxes[box].xyz, boxes[box + 1u].xyz)) return;
@@ -186,20 +186,16 @@ void main() {
   for (uint light = first; light < min(first + LIGHTS_PER_INVOCATION, lightRange.y); ++light) {
     gHit = false;
     if (!prepareLight(light)) continue;
-    // A tile takes at most (slices / 32 + 2) words and `slices` bits: under twice slices + 1.
+    // A tile takes its own iteration, at most (slices / 32 + 2) words and `slices` bits: at most twice slices + 1.
     uint candidates = gTiles * 2u * (gSliceLast - gSliceFirst + 2u);
     if (candidates > INLINE_CANDIDATES || candidates > INVOCATION_CANDIDATES - iterations) {
       bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
       continue;
     }
     iterations += candidates;
-    // Four tiles per iteration, for llvmpipe's iteration limit.
-    for (uint t = 0u; t < gTiles; t += 4u) {
-      visitTile(t);
-      visitTile(t + 1u);
-      visitTile(t + 2u);
-      visitTile(t + 3u);
-    }
+    // A tile per iteration: llvmpipe runs each call of an unrolled loop for all eight lanes of its SIMD group,
+    // even where none has the tile, and most lights of a million cover one tile.
+    for (uint t = 0u; t < gTiles; ++t) visitTile(t);
     finishLight();
   }
 #endif
