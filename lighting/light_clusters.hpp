@@ -32,9 +32,9 @@ struct ClusterConfig {
 // slice k covers [near (far/near)^(k/S), near (far/near)^((k+1)/S)].
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices);
 
-// Lights per dispatch of the fill pass: its loops, a bit per iteration, stay under llvmpipe's 65535 iterations
-// per invocation (cluster_fill.comp) at any light count.
-constexpr uint32_t kAssignChunkLights = 32768;
+// Lights per dispatch of the fill pass: its loops stay under llvmpipe's 65535 iterations per invocation
+// (cluster_fill.comp) at any light count.
+constexpr uint32_t kAssignChunkLights = 131072;
 
 // Clustered light culling, per frame: the view-space boxes of the surfaces each cluster and each screen tile
 // hold (from the depth buffer) and a slot for each cluster holding one; each light, in view space, testing the

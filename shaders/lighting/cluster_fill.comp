@@ -5,8 +5,8 @@
 // for bit. It zeroes each mask and summary word it reads, so that the next window or frame starts from empty
 // masks without clearing them whole (a list that does not fit is not written, but its mask is still cleared).
 // Dispatched once per chunk of a window's lights, in ascending order, so that no invocation loops past llvmpipe's
-// limit of 65535 iterations: a chunk of 32,768 lights takes at most 32 summary words, 1,024 mask words and
-// 32,768 bits. The fill keeps its place in `cursors` between dispatches.
+// limit of 65535 iterations: a chunk of 131,072 lights takes at most 128 summary words, 4,096 mask words and
+// 32,768 four-bit steps. The fill keeps its place in `cursors` between dispatches.
 layout(local_size_x = 64) in;
 
 #include "clusters.glsl"
@@ -41,6 +41,12 @@ uint takeSlotWord(uint i) {
   return word;
 }
 
+void writeLowestBit(inout uint bits, uint base) {
+  if (bits == 0u) return;
+  lightIndices[gCursor++] = base + uint(findLSB(bits));
+  bits &= bits - 1u;
+}
+
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= min(activeCount, slotCapacity())) return;
@@ -61,11 +67,11 @@ void main() {
       words &= words - 1u;
       uint bits = takeSlotWord(maskBase + w);
       uint base = clusterGrid.window.x + w * 32u;
-      // A bit per iteration, not several: llvmpipe would run every unrolled step for all eight lanes of its SIMD
-      // group, and most mask words of a million lights hold one bit.
       while (writes && bits != 0u) {
-        lightIndices[gCursor++] = base + uint(findLSB(bits));
-        bits &= bits - 1u;
+        writeLowestBit(bits, base);
+        writeLowestBit(bits, base);
+        writeLowestBit(bits, base);
+        writeLowestBit(bits, base);
       }
     }
   }
