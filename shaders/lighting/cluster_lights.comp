@@ -186,7 +186,8 @@ void main() {
   for (uint light = first; light < min(first + LIGHTS_PER_INVOCATION, lightRange.y); ++light) {
     gHit = false;
     if (!prepareLight(light)) continue;
-    // A tile takes its own iteration, at most (slices / 32 + 2) words and `slices` bits: at most twice slices + 1.
+    // A tile takes its own iteration, at most (slices / 32 + 2) words and `slices` bits: within the
+    // 2 (slices + 1) counted for it.
     uint candidates = gTiles * 2u * (gSliceLast - gSliceFirst + 2u);
     if (candidates > INLINE_CANDIDATES || candidates > INVOCATION_CANDIDATES - iterations) {
       bigLights[atomicAdd(bigDispatch.x, 1u)] = light;
