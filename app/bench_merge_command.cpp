@@ -1,9 +1,11 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "app/args.hpp"
 #include "app/bench/bench_merge.hpp"
+#include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
 #include "core/output_file.hpp"
 #include "core/provenance.hpp"
@@ -16,6 +18,9 @@ const std::vector<OptionSpec>& mergeOptions() {
   static const std::vector<OptionSpec> specs = {
       {"--csv", "F.csv", "write the merged sweep as CSV, as pbr bench --csv writes it"},
       {"--json", "F.json", "write the merged sweep as JSON, as pbr bench --json writes it"},
+      {"--trace", "F.json",
+       "write the shards' timed frames as one Chrome trace, a process per shard on its own timeline (shards "
+       "written by a pbr that records pass start times)"},
       {"--allow-mixed", "",
        "merge shards measured on different renderers or builds (or, with a CPU rasterizer, CPUs); by default "
        "they are refused, their times not being comparable"},
@@ -41,21 +46,30 @@ int runBenchMerge(const std::vector<std::string>& argv) {
         "pbr bench-merge SHARD.json... [options]",
         "Joins the JSON reports of the shards of one sweep (pbr bench --shard K/N --json F, one per K from 1 to N) "
         "into the report the whole sweep would have written: the table on stdout, and the same CSV and JSON as pbr "
-        "bench, configurations in sweep order. Refuses shards of different sweeps, a shard given twice or missing, "
-        "and mixed renderers or builds. Provenance values that differ between shards are listed per shard.",
+        "bench, configurations in sweep order, and a trace of every shard's frames. Refuses shards of different "
+        "sweeps, a shard given twice or missing, and mixed renderers or builds. Provenance values that differ "
+        "between shards are listed per shard.",
         specs);
     return 0;
   }
   if (args.operands().empty()) throw UsageError("expects the JSON reports of a sweep's shards");
   if (args.has("--csv")) requireExtension(args.get("--csv"), ".csv");
   if (args.has("--json")) requireExtension(args.get("--json"), ".json");
+  if (args.has("--trace")) requireExtension(args.get("--trace"), ".json");
   std::vector<ShardFile> shards;
-  for (const std::string& path : args.operands()) shards.push_back(readShardFile(path));
+  for (const std::string& path : args.operands()) {
+    shards.push_back(readShardFile(path));
+    if (args.has("--trace") && !shards.back().file.traceLayout) {
+      throw std::runtime_error(path + ": holds no pass start times (written by an earlier pbr bench), which --trace "
+                               "needs: measure the shard again, or merge without --trace");
+    }
+  }
   BenchReport merged = mergeShards(shards, args.has("--allow-mixed"));
   merged.provenance.set("merge_command", processCommandLine());
   printBenchTable(std::cout, merged);
   writeOutput(args, "--csv", writeBenchCsv, merged);
   writeOutput(args, "--json", writeBenchJson, merged);
+  writeOutput(args, "--trace", writeTrace, merged);
   return 0;
 }
 

@@ -3,7 +3,9 @@
 // refused with one line naming the file.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -50,15 +52,18 @@ BenchResult measured(const pbr::BenchConfig& config, size_t position) {
     return r;
   }
   const bool clustered = config.culling == pbr::Culling::Clustered;
+  r.timelineStartMs = 1000.0 * static_cast<double>(position) + 0.25;
   for (int f = 0; f < 2; ++f) {
     pbr::FrameTiming frame;
     frame.frame = 2 + f;
     frame.startMs = 100.0 * f + base;
+    double start = 0.0;
     for (const char* pass : {"gbuffer", "cluster", "lighting", "post"}) {
       if (!clustered && std::string(pass) == "cluster") continue;
-      frame.passes.push_back({pass, base * (f + 1) + 0.0000123 * pass[0], 0.0});
+      frame.passes.push_back({pass, base * (f + 1) + 0.0000123 * pass[0], start});
+      start += frame.passes.back().ms + 0.001;
     }
-    frame.gpuMs = 4.0 * base + f / 3.0;
+    frame.gpuMs = 10.0 * base + f / 3.0;  // longer than its passes together, so that none is clipped in a trace
     frame.cpuMs = 5.0 * base + f / 7.0;
     r.frames.push_back(frame);
   }
@@ -190,6 +195,84 @@ TEST_CASE("bench-merge: two shards merge into the CSV and JSON of the unsharded 
   CHECK(one.at("configurations").size() == 2);
 }
 
+TEST_CASE("bench-merge: --trace lays each shard's timed frames on a process of its own, as the shard ran them") {
+  const TempDir dir;
+  const BenchSettings settings = tinySweep();
+  const Shards shards = writeShards(dir, settings);
+  const PbrRun run = merge(dir, {shards.one, shards.two, "--trace", dir.file("trace.json")});
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  const Json trace = Json::parse(pbr::test::readFile(dir.file("trace.json")));
+
+  // Which shard measured each position of the sweep, and what it measured there.
+  const std::vector<pbr::BenchConfig> sweep = pbr::sweepConfigs(settings);
+  std::vector<int> shardOf(sweep.size(), 0);
+  for (int k = 1; k <= 2; ++k) {
+    for (size_t p : pbr::shardPositions(sweep, pbr::BenchShard{k, 2})) shardOf[p] = k;
+  }
+  std::map<int, std::string> processes;
+  std::map<int, std::string> threads;
+  std::map<std::pair<int, int>, std::vector<Json>> slices;  // (pid, tid) -> its slices
+  for (const Json& e : trace.at("traceEvents")) {
+    if (e.at("name") == "process_name") processes[e.at("pid").get<int>()] = e.at("args").at("name");
+    if (e.at("name") == "thread_name") threads[e.at("tid").get<int>()] = e.at("args").at("name");
+    if (e.at("ph") == "X") slices[{e.at("pid").get<int>(), e.at("tid").get<int>()}].push_back(e);
+  }
+  REQUIRE(processes.size() == 2);
+  CHECK(processes.at(1).find(", shard 1") != std::string::npos);
+  CHECK(processes.at(2).find(", shard 2") != std::string::npos);
+  REQUIRE(threads.size() == sweep.size());
+  for (size_t p = 0; p < sweep.size(); ++p) {
+    CAPTURE(p);
+    const BenchResult r = measured(sweep[p], p);
+    const int tid = static_cast<int>(p) + 1;
+    CHECK(threads.at(tid) == sweep[p].label() + (r.skipped ? " (skipped)" : ""));
+    const auto found = slices.find({shardOf[p], tid});
+    if (r.skipped) {
+      CHECK(found == slices.end());
+      continue;
+    }
+    REQUIRE(found != slices.end());
+    // Frames where the shard's timeline put them; passes at their recorded offsets inside their frame.
+    size_t checked = 0;
+    for (const pbr::FrameTiming& f : r.frames) {
+      const double frameUs = (r.timelineStartMs + f.startMs - r.frames.front().startMs) * 1e3;
+      for (const Json& e : found->second) {
+        if (e.at("args").at("frame") != f.frame) continue;
+        if (e.at("name") == "frame") {
+          CHECK(std::abs(e.at("ts").get<double>() - frameUs) <= 1e-3);  // the trace's nanosecond rounding
+          ++checked;
+        }
+        for (const pbr::PassTiming& pass : f.passes) {
+          if (e.at("name") != pass.name) continue;
+          CHECK(std::abs(e.at("ts").get<double>() - (frameUs + pass.startMs * 1e3)) <= 1e-3);
+          CHECK(std::abs(e.at("dur").get<double>() - pass.ms * 1e3) <= 1e-3);
+          ++checked;
+        }
+      }
+    }
+    CHECK(checked == found->second.size());
+    CHECK(checked == r.frames.size() * (1 + r.frames.front().passes.size()));
+  }
+}
+
+TEST_CASE("bench-merge: --trace refuses a shard without pass start times, which merges without it") {
+  const TempDir dir;
+  const Shards shards = writeShards(dir);
+  const std::string older = editedCopy(dir, shards.two, "older.json", [](Json& doc) {
+    for (Json& c : doc["configurations"]) {
+      c.erase("timeline_start_ms");
+      for (Json& f : c["frames"]) f.erase("passes_start_ms");
+    }
+  });
+  checkRefusedNaming(merge(dir, {shards.one, older, "--trace", dir.file("trace.json")}), older,
+                     "holds no pass start times");
+  CHECK_FALSE(std::ifstream(dir.file("trace.json")).good());
+  const PbrRun plain = merge(dir, {shards.one, older, "--json", dir.file("merged.json")});
+  CAPTURE(plain.err);
+  CHECK(plain.exitCode == 0);
+}
+
 TEST_CASE("bench-merge: a missing or repeated shard is refused, saying which") {
   const TempDir dir;
   const Shards shards = writeShards(dir);
@@ -278,7 +361,7 @@ TEST_CASE("bench-merge: its help and its command-line errors") {
   const PbrRun help = merge(dir, {"--help"});
   CHECK(help.exitCode == 0);
   CHECK(help.err.empty());
-  for (const char* option : {"SHARD.json...", "--csv F", "--json F", "--allow-mixed"}) {
+  for (const char* option : {"SHARD.json...", "--csv F", "--json F", "--trace F", "--allow-mixed"}) {
     CAPTURE(option);
     CHECK(help.out.find(option) != std::string::npos);
   }

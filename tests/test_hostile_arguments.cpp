@@ -28,6 +28,7 @@ TEST_CASE("hostile outputs: an unknown capture extension fails before rendering 
       {"bench", "--lights", "8", "--frames", "1", "--json", dir.file("f.csv")},
       {"bench", "--lights", "8", "--frames", "1", "--trace", dir.file("f.trace")},
       {"bench-merge", dir.file("missing.json"), "--csv", dir.file("f.txt")},
+      {"bench-merge", dir.file("missing.json"), "--trace", dir.file("f.trace")},
   };
   for (const auto& args : cases) {
     const std::string& path = args[args.size() - 1];

@@ -154,7 +154,10 @@ BenchReport mergeShards(const std::vector<ShardFile>& shards, bool allowMixed) {
   merged.results.resize(sweep.size());
   for (const ShardFile* s : byIndex) {
     const std::vector<size_t> positions = shardPositions(sweep, *s->file.report.shard);
-    for (size_t i = 0; i < positions.size(); ++i) merged.results[positions[i]] = s->file.report.results[i];
+    for (size_t i = 0; i < positions.size(); ++i) {
+      merged.results[positions[i]] = s->file.report.results[i];
+      merged.results[positions[i]].shard = s->file.report.shard->index;
+    }
   }
   return merged;
 }

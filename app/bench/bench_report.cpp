@@ -171,6 +171,7 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
   j["estimated_seconds"] = r.estimatedSeconds;
   j["elapsed_seconds"] = r.elapsedSeconds;
   j["timed_frames"] = r.frames.size();
+  j["timeline_start_ms"] = r.timelineStartMs;
 
   Json passTimes = Json::object();
   for (const std::string& name : passes) {
@@ -185,9 +186,13 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
   for (const FrameTiming& f : r.frames) {
     Json frame = {{"frame", f.frame}, {"start_ms", f.startMs - r.frames.front().startMs}, {"gpu_ms", f.gpuMs},
                   {"cpu_ms", f.cpuMs}};
-    Json ms = Json::object();
-    for (const PassTiming& p : f.passes) ms[p.name] = p.ms;
+    Json ms = Json::object(), starts = Json::object();
+    for (const PassTiming& p : f.passes) {
+      ms[p.name] = p.ms;
+      starts[p.name] = p.startMs;
+    }
     frame["passes_ms"] = ms;
+    frame["passes_start_ms"] = starts;
     frames.push_back(frame);
   }
   j["frames"] = frames;

@@ -56,7 +56,8 @@ BenchSettings readSettings(const JsonField& f) {
   return s;
 }
 
-FrameTiming readFrame(const JsonField& f) {
+// Pass start offsets are optional: reports written before they were recorded lack them (`layout` turns false).
+FrameTiming readFrame(const JsonField& f, bool& layout) {
   FrameTiming frame;
   frame.frame = integer(f["frame"], static_cast<uint64_t>(std::numeric_limits<int>::max()));
   frame.startMs = f["start_ms"].real(NumberRule::any());
@@ -65,10 +66,16 @@ FrameTiming readFrame(const JsonField& f) {
   for (const auto& [name, ms] : f["passes_ms"].members()) {
     frame.passes.push_back({name, ms.real(NumberRule::atLeast(0.0)), 0.0});
   }
+  const JsonField starts = f["passes_start_ms"];
+  if (!starts.present()) {
+    layout = false;
+    return frame;
+  }
+  for (PassTiming& p : frame.passes) p.startMs = starts[p.name].real(NumberRule::atLeast(0.0));
   return frame;
 }
 
-BenchResult readResult(const JsonField& c) {
+BenchResult readResult(const JsonField& c, bool& layout) {
   BenchResult r;
   r.config.scene = c["scene"].string();
   r.config.size = {integer(c["width"], kMaxSide), integer(c["height"], kMaxSide)};
@@ -82,7 +89,13 @@ BenchResult readResult(const JsonField& c) {
   if (r.skipped) r.skipReason = c["skip_reason"].string();
   r.estimatedSeconds = c["estimated_seconds"].real(NumberRule::atLeast(0.0));
   r.elapsedSeconds = c["elapsed_seconds"].real(NumberRule::atLeast(0.0));
-  for (const JsonField& f : c["frames"].items()) r.frames.push_back(readFrame(f));
+  const JsonField timeline = c["timeline_start_ms"];
+  if (timeline.present()) {
+    r.timelineStartMs = timeline.real(NumberRule::atLeast(0.0));
+  } else {
+    layout = false;
+  }
+  for (const JsonField& f : c["frames"].items()) r.frames.push_back(readFrame(f, layout));
   r.summarize();
   if (r.skipped) return r;
 
@@ -130,7 +143,7 @@ BenchReportFile readBenchReport(const std::string& path) {
   }
   const JsonField configurations = root["configurations"];
   if (!configurations.present()) configurations.expected("an array");
-  for (const JsonField& c : configurations.items()) file.report.results.push_back(readResult(c));
+  for (const JsonField& c : configurations.items()) file.report.results.push_back(readResult(c, file.traceLayout));
   return file;
 }
 

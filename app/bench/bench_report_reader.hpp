@@ -12,6 +12,9 @@ struct BenchReportFile {
   BenchReport report;             // provenance, settings, shard and results
   std::string sweepFingerprint;   // as the file states it
   nlohmann::json settings;        // as written, to say how two files' settings differ
+  // Whether it states where each configuration's frames and passes lie on its timeline, as a trace needs
+  // (timeline_start_ms, passes_start_ms): reports of builds before they were recorded do not.
+  bool traceLayout = true;
 };
 
 // Reads `path` into a BenchReportFile. The summaries of each result are computed again from its timed frames,

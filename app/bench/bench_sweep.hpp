@@ -75,6 +75,7 @@ struct BenchResult {
   double elapsedSeconds = 0.0;
   std::vector<FrameTiming> frames;  // the timed frames, oldest first
   double timelineStartMs = 0.0;     // when the timed frames began, from the start of the sweep (trace layout)
+  int shard = 0;                    // in a merged report, the shard that measured it (its own timeline); else 0
   std::vector<PassSummary> passes;  // per pass, in the order the passes ran
   TimeSummary frameTime;            // first pass start to last pass end, on the timing clock
   TimeSummary cpuTime;              // the whole frame on the CPU clock
