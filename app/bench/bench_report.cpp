@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench/round_ratios.hpp"
+#include "app/bench/text_table.hpp"
 #include "core/json_text.hpp"
 
 namespace pbr {
@@ -274,7 +276,7 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
     header.push_back(h);
   }
 
-  std::vector<std::vector<std::string>> rows;
+  std::vector<std::vector<std::string>> rows = {header};
   for (const BenchResult& r : report.results) {
     std::vector<std::string> row = {std::to_string(r.config.lights), toString(r.config.culling),
                                     toString(r.config.model)};
@@ -296,31 +298,19 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
     }
     rows.push_back(row);
   }
-  std::vector<size_t> width(header.size());
-  for (size_t c = 0; c < header.size(); ++c) width[c] = header[c].size();
-  for (const auto& row : rows) {
-    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
-  }
-  const auto printRow = [&](const std::vector<std::string>& row) {
-    std::string line;
-    for (size_t c = 0; c < row.size(); ++c) {
-      const std::string pad(width[c] - row[c].size(), ' ');
-      line += (c ? "  " : "") + (c == 1 || c == 2 ? row[c] + pad : pad + row[c]);
-    }
-    out << line;
-  };
+  const TextTable table(std::move(rows), {1, 2});
 
   out << s.scene << " " << s.size.x << "x" << s.size.y << ": median ms of " << s.frames << " timed frames after "
       << s.warmup << " warm-up" << (report.provenance.get("frame_order").empty() ? "" : ", configurations in turn")
       << ", " << report.provenance.get("timing_mode") << "\n"
       << report.provenance.get("gl_renderer") << ": " << report.provenance.get("timing_note") << "\n\n";
-  printRow(header);
-  out << "\n";
-  for (size_t i = 0; i < rows.size(); ++i) {
-    printRow(rows[i]);
+  out << table.line(0) << "\n";
+  for (size_t i = 0; i < report.results.size(); ++i) {
+    out << table.line(i + 1);
     if (report.results[i].skipped) out << "  skipped: " << report.results[i].skipReason;
     out << "\n";
   }
+  printRoundRatios(out, report);
 }
 
 }  // namespace pbr
