@@ -6,6 +6,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "lighting/light_order.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
@@ -36,8 +37,9 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
 
   // Zero lights past the count: a window's tail is never read, but it is backed.
   const size_t windows = std::max<size_t>(1, (lights.size() + kLightWindowMax - 1) / kLightWindowMax);
+  order_ = lightBufferOrder(lights);
   std::vector<GpuLight> packed(windows * kLightWindowMax, GpuLight{});
-  for (size_t i = 0; i < lights.size(); ++i) packed[i] = toGpuLight(lights[i]);
+  for (size_t i = 0; i < lights.size(); ++i) packed[i] = toGpuLight(lights[order_[i]]);
   const size_t bytes = packed.size() * sizeof(GpuLight);
   if (!buffer_ || buffer_->size() < bytes) buffer_ = std::make_unique<Buffer>("lights.points", bytes);
   buffer_->upload(packed.data(), bytes);
@@ -49,7 +51,7 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
     return;
   }
   std::vector<GpuSpotCone> cones(packed.size(), GpuSpotCone(0.0f));
-  for (size_t i = 0; i < lights.size(); ++i) cones[i] = toGpuSpotCone(lights[i]);
+  for (size_t i = 0; i < lights.size(); ++i) cones[i] = toGpuSpotCone(lights[order_[i]]);
   const size_t coneBytes = cones.size() * sizeof(GpuSpotCone);
   if (!cones_ || cones_->size() < coneBytes) cones_ = std::make_unique<Buffer>("lights.spotCones", coneBytes);
   cones_->upload(cones.data(), coneBytes);

@@ -44,9 +44,9 @@ static_assert(sizeof(DirectionalLightBlock) == 16 + 32 * kMaxDirectionalLights, 
 // allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
 constexpr uint32_t kLightWindowMax = 2048;
 
-// The frame's point and spot lights in one buffer, read as a storage buffer (cluster assignment, clustered
-// lighting) and, a window at a time, as a uniform buffer (lighting every light), reallocated only when it must
-// grow; with spot lights among them, their cones in a second buffer of the same layout; and the directional
+// The frame's point and spot lights in one buffer, in the order lightBufferOrder gives them (light_order.hpp), read
+// as a storage buffer (cluster assignment, clustered lighting) and, a window at a time, as a uniform buffer
+// (lighting every light), reallocated only when it must grow; with spot lights among them, their cones in a second buffer of the same layout; and the directional
 // lights in a uniform block of their own, which no culling touches. A frame without spot lights neither uploads
 // nor reads cones (the SPOT_LIGHTS permutations).
 class LightBuffer {
@@ -58,6 +58,8 @@ class LightBuffer {
   // two no larger than kLightWindowMax.
   void bindWindow(uint32_t first, uint32_t lights) const;
   unsigned count() const { return count_; }
+  // The scene's index of the light at `bufferIndex`: cluster lists (LightClusters::readLists) hold buffer indices.
+  uint32_t sceneIndex(uint32_t bufferIndex) const { return order_[bufferIndex]; }
   bool hasSpotLights() const { return hasSpots_; }
   unsigned directionalCount() const { return directionalCount_; }
   size_t bytes() const { return (buffer_ ? buffer_->size() : 0) + (cones_ ? cones_->size() : 0); }
@@ -65,6 +67,7 @@ class LightBuffer {
  private:
   std::unique_ptr<Buffer> buffer_;
   std::unique_ptr<Buffer> cones_;  // only while the frame has spot lights
+  std::vector<uint32_t> order_;    // per buffer index, the scene's
   bool hasSpots_ = false;
   unsigned count_ = 0;
   unsigned directionalCount_ = 0;

@@ -155,9 +155,12 @@ TEST_CASE("clusters: GPU light lists hold every light reaching a cluster's surfa
   }
   size_t missing = 0, extra = 0, listed = 0, reached = 0, active = 0, listedWithoutSurface = 0;
   for (size_t c = 0; c < lists.size(); ++c) {
-    const std::vector<uint32_t>& list = lists[c];
-    CHECK(std::is_sorted(list.begin(), list.end()));
-    CHECK(std::adjacent_find(list.begin(), list.end()) == list.end());
+    // Ascending in the light buffer's order, then as the scene's indices.
+    CHECK(std::is_sorted(lists[c].begin(), lists[c].end()));
+    CHECK(std::adjacent_find(lists[c].begin(), lists[c].end()) == lists[c].end());
+    std::vector<uint32_t> list;
+    for (uint32_t i : lists[c]) list.push_back(renderer.lights().sceneIndex(i));
+    std::sort(list.begin(), list.end());
     listed += list.size();
     reached += reaching[c].size();
     for (uint32_t i : reaching[c]) missing += std::binary_search(list.begin(), list.end(), i) ? 0 : 1;

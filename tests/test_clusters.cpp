@@ -93,6 +93,23 @@ TEST_CASE("clusters: clustered equals brute force for 0, 1, 64, 1024 and 20000 l
   }
 }
 
+TEST_CASE("clusters: the frame does not depend on the order in which the scene lists its lights") {
+  PBR_REQUIRE_GL();
+  Scene scene = clusterScene();
+  scene.lights = randomLights(2000, 31);
+  // Lights in one place that differ only in colour: their order in the buffer is still the same.
+  scene.lights.push_back({glm::vec3(0.5f, 0.6f, 0.5f), 3.0f, {1.0f, 0.2f, 0.1f}, 30.0f});
+  scene.lights.push_back({glm::vec3(0.5f, 0.6f, 0.5f), 3.0f, {0.1f, 0.2f, 1.0f}, 30.0f});
+  FrameOptions options;
+  const test::RenderedFrame listed = test::renderScene(scene, kSize, options);
+  std::reverse(scene.lights.begin(), scene.lights.end());
+  std::rotate(scene.lights.begin(), scene.lights.begin() + 700, scene.lights.end());
+  const test::RenderedFrame reordered = test::renderScene(scene, kSize, options);
+  CHECK(listed.stats.overflowedClusters == 0);
+  CHECK(test::maxRelativeDifference(reordered.hdr, listed.hdr) == 0.0);
+  CHECK(test::countDifferentBytes(reordered.ldr, listed.ldr) == 0);
+}
+
 TEST_CASE("clusters: edge-case lights agree with brute force in both shading models") {
   PBR_REQUIRE_GL();
   ClusterConfig config;
