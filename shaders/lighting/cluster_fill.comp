@@ -5,8 +5,9 @@
 // for bit. It zeroes each mask and summary word it reads, so that the next window or frame starts from empty
 // masks without clearing them whole (a list that does not fit is not written, but its mask is still cleared).
 // Dispatched once per chunk of a window's lights, in ascending order, so that no invocation loops past llvmpipe's
-// limit of 65535 iterations: a chunk of 131,072 lights takes at most 128 summary words, 4,096 mask words and
-// 32,768 four-bit steps. The fill keeps its place in `cursors` between dispatches.
+// limit of 65535 iterations: a chunk of 131,072 lights has at most 128 summary words and 4,096 mask words, and its
+// loop runs at most once per summary word, twice per mask word and once per four lights (41,088 times). The fill
+// keeps its place in `cursors` between dispatches.
 layout(local_size_x = 64) in;
 
 #include "clusters.glsl"
@@ -60,20 +61,27 @@ void main() {
   if (writes) gCursor = fillChunk.z != 0u ? header.offset : cursors[cluster];
   uint summaryBase = slotSummaryBase(slot), maskBase = slotMaskBase(slot);
   uint summaryEnd = min((fillChunk.y + 1023u) / 1024u, slotSummaryWords());
-  for (uint s = fillChunk.x / 1024u; s < summaryEnd; ++s) {
-    uint words = takeSlotWord(summaryBase + s);
-    while (words != 0u) {
-      uint w = s * 32u + uint(findLSB(words));
-      words &= words - 1u;
-      uint bits = takeSlotWord(maskBase + w);
-      uint base = clusterGrid.window.x + w * 32u;
-      while (writes && bits != 0u) {
-        writeLowestBit(bits, base);
-        writeLowestBit(bits, base);
-        writeLowestBit(bits, base);
-        writeLowestBit(bits, base);
-      }
+  // One loop, each iteration taking the next summary word where the last is spent, the next mask word where its
+  // bits are, and writing up to four lights: a SIMD group loops as long as its busiest slot needs, rather than,
+  // summary word by summary word, as long as the slot with the most lights under that word.
+  uint s = fillChunk.x / 1024u, words = 0u, bits = 0u, wordBase = 0u, base = 0u;
+  for (;;) {
+    if (bits == 0u && words == 0u) {
+      if (s >= summaryEnd) break;
+      words = takeSlotWord(summaryBase + s);
+      wordBase = 32u * s++;
     }
+    if (bits == 0u && words != 0u) {
+      uint w = wordBase + uint(findLSB(words));
+      words &= words - 1u;
+      bits = takeSlotWord(maskBase + w);
+      base = clusterGrid.window.x + 32u * w;
+      if (!writes) bits = 0u;
+    }
+    writeLowestBit(bits, base);
+    writeLowestBit(bits, base);
+    writeLowestBit(bits, base);
+    writeLowestBit(bits, base);
   }
   if (writes && fillChunk.w == 0u) cursors[cluster] = gCursor;
 }

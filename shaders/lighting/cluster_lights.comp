@@ -181,9 +181,13 @@ void main() {
   finishLight();
 #else
   // Several lights per invocation: llvmpipe spends about as much starting an invocation as preparing a light.
-  uint first = lightRange.x + gl_GlobalInvocationID.x * LIGHTS_PER_INVOCATION;
+  // Invocation i takes lights i, i + n, i + 2n, ... (n invocations): at each step the lanes of a SIMD group hold
+  // neighbouring lights (the buffer's Z order, light_order.hpp), alike in the tiles and slices they loop over,
+  // while an invocation's own lights lie far apart, so that no invocation runs a chain of large lights alone.
+  uint invocations = (lightRange.y - lightRange.x + LIGHTS_PER_INVOCATION - 1u) / LIGHTS_PER_INVOCATION;
+  if (gl_GlobalInvocationID.x >= invocations) return;
   uint iterations = 0u;
-  for (uint light = first; light < min(first + LIGHTS_PER_INVOCATION, lightRange.y); ++light) {
+  for (uint light = lightRange.x + gl_GlobalInvocationID.x; light < lightRange.y; light += invocations) {
     gHit = false;
     if (!prepareLight(light)) continue;
     // A tile takes its own iteration, at most (slices / 32 + 2) words and `slices` bits: within the
