@@ -67,9 +67,9 @@ class LightClusters {
   // memory.
   bool growToDemand();
 
-  // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX);
-  // a cluster that did not fit the index list, or holds no surface, reads as empty. Waits for the GPU: for tests
-  // and tools.
+  // Every cluster's light list of this frame (clusters are indexed (slice * tilesY + tileY) * tilesX + tileX), as
+  // indices into the light buffer (LightBuffer::sceneIndex gives the scene's); a cluster that did not fit the
+  // index list, or holds no surface, reads as empty. Waits for the GPU: for tests and tools.
   std::vector<std::vector<uint32_t>> readLists() const;
 
   // The defines of the light pass (cluster_lights.comp) for these choices, without the binding defines.
