@@ -46,9 +46,9 @@ constexpr uint32_t kLightWindowMax = 2048;
 
 // The frame's point and spot lights in one buffer, in the order lightBufferOrder gives them (light_order.hpp), read
 // as a storage buffer (cluster assignment, clustered lighting) and, a window at a time, as a uniform buffer
-// (lighting every light), reallocated only when it must grow; with spot lights among them, their cones in a second buffer of the same layout; and the directional
-// lights in a uniform block of their own, which no culling touches. A frame without spot lights neither uploads
-// nor reads cones (the SPOT_LIGHTS permutations).
+// (lighting every light), reallocated only when it must grow; with spot lights among them, their cones in a second
+// buffer of the same layout; and the directional lights in a uniform block of their own, which no culling touches.
+// A frame without spot lights neither uploads nor reads cones (the SPOT_LIGHTS permutations).
 class LightBuffer {
  public:
   void upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional = {});

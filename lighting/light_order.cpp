@@ -54,13 +54,13 @@ std::vector<uint32_t> lightBufferOrder(const std::vector<PointLight>& lights) {
   const double scale = extent > 0.0 ? kCells / extent : 0.0;
   std::vector<Entry> entries(lights.size());
   for (size_t i = 0; i < lights.size(); ++i) {
-    const glm::dvec3 cell = glm::min((glm::dvec3(lights[i].position) - glm::dvec3(lo)) * scale, glm::dvec3(kCells - 1.0));
+    const glm::dvec3 offset = glm::dvec3(lights[i].position) - glm::dvec3(lo);
+    const glm::dvec3 cell = glm::min(offset * scale, glm::dvec3(kCells - 1.0));
     entries[i] = {spreadBits(uint64_t(cell.x)) | spreadBits(uint64_t(cell.y)) << 1 | spreadBits(uint64_t(cell.z)) << 2,
                   static_cast<uint32_t>(i)};
   }
   std::sort(entries.begin(), entries.end(), [&](const Entry& x, const Entry& y) {
     if (x.key != y.key) return x.key < y.key;
-    if (x.index == y.index) return false;
     const auto bx = gpuBits(lights[x.index]), by = gpuBits(lights[y.index]);
     return bx != by ? bx < by : x.index < y.index;
   });

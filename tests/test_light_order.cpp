@@ -89,7 +89,8 @@ TEST_CASE("light order: no lights, one light, and lights all at one point") {
   CHECK(lightBufferOrder({}).empty());
   CHECK(lightBufferOrder({lightAt(glm::vec3(1e30f, -1e30f, 0.0f))}) == std::vector<uint32_t>{0});
   // No extent to quantise: ordered by what the GPU receives, here their colour's red.
-  const std::vector<PointLight> stacked = {lightAt(glm::vec3(2.0f), glm::vec3(0.3f)), lightAt(glm::vec3(2.0f), glm::vec3(0.1f)),
+  const std::vector<PointLight> stacked = {lightAt(glm::vec3(2.0f), glm::vec3(0.3f)),
+                                           lightAt(glm::vec3(2.0f), glm::vec3(0.1f)),
                                            lightAt(glm::vec3(2.0f), glm::vec3(0.2f))};
   CHECK(lightBufferOrder(stacked) == std::vector<uint32_t>{1, 2, 0});
   // The widest float extent still quantises without overflow.
