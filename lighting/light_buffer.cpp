@@ -21,7 +21,7 @@ GpuSpotCone toGpuSpotCone(const PointLight& l) {
   return glm::vec4(l.spot->direction * f.scale, f.offset);
 }
 
-void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional) {
+void LightBuffer::uploadDirectional(const std::vector<DirectionalLight>& directional) {
   if (directional.size() > kMaxDirectionalLights) {
     throw std::logic_error(std::to_string(directional.size()) + " directional lights, more than the " +
                            std::to_string(kMaxDirectionalLights) + " shaded (validateScene refuses them)");
@@ -34,7 +34,9 @@ void LightBuffer::upload(const std::vector<PointLight>& lights, const std::vecto
   }
   directionalBlock_.update(block);
   directionalCount_ = block.count.x;
+}
 
+void LightBuffer::uploadPoints(const std::vector<PointLight>& lights) {
   // Zero lights past the count: a window's tail is never read, but it is backed.
   const size_t windows = std::max<size_t>(1, (lights.size() + kLightWindowMax - 1) / kLightWindowMax);
   order_ = lightBufferOrder(lights);

@@ -51,7 +51,9 @@ constexpr uint32_t kLightWindowMax = 2048;
 // A frame without spot lights neither uploads nor reads cones (the SPOT_LIGHTS permutations).
 class LightBuffer {
  public:
-  void upload(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional = {});
+  // Point and spot lights, and directional lights, are replaced separately: replacing one leaves the other.
+  void uploadPoints(const std::vector<PointLight>& lights);
+  void uploadDirectional(const std::vector<DirectionalLight>& directional);
   void bind() const;
   void bindDirectional() const;
   // Lights [first, first + lights) as the LightWindow uniform block; `first` a multiple of `lights`, a power of

@@ -96,9 +96,9 @@ class Renderer {
   void captureFrame(int frame, const FrameCapturer& capturer);
 
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
-  // changes); new lights replace the light buffer.
+  // changes); new point and spot lights replace those of the light buffer (the directional lights stay).
   void setCamera(const Camera& camera);
-  void setLights(const std::vector<PointLight>& lights) { scene_.lights.upload(lights); }
+  void setLights(const std::vector<PointLight>& lights) { scene_.lights.uploadPoints(lights); }
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;

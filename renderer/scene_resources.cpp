@@ -24,7 +24,8 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       clusterDebug(programs),
       gbufferDebug(programs),
       efficiencyDebug(programs) {
-  lights.upload(scene.lights, scene.directionalLights);
+  lights.uploadPoints(scene.lights);
+  lights.uploadDirectional(scene.directionalLights);
 }
 
 }  // namespace pbr

@@ -407,3 +407,27 @@ TEST_CASE("view: the environment picker lists .hdr files and its choice relights
   CHECK_FALSE(viewer->scene().environment.has_value());
   CHECK(show(*viewer).pixels == unlit.pixels);
 }
+
+TEST_CASE("view: a scene's directional light stays lit through animated frames") {
+  const TempDir dir;
+  // A sun and nothing else that lights: animating the point lights must leave the sun as the scene has it.
+  const std::string scene = dir.file("sun.json");
+  std::ofstream(scene) << R"({
+    "camera": {"position": [0, 3, 6], "target": [0, 0.5, 0], "fov_y_deg": 50},
+    "objects": [
+      {"shape": "plane", "transform": {"scale": 8}, "material": {"base_color": [0.8, 0.8, 0.8], "roughness": 0.6}},
+      {"shape": "sphere", "transform": {"translate": [0, 1, 0]}, "material": {"base_color": [0.9, 0.3, 0.2], "roughness": 0.4}}
+    ],
+    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "illuminance_lux": 3}]
+  })";
+  const auto viewer = openViewer(kSize, "", scene);
+  if (!viewer) return;
+  viewer->setPaused(false);
+  const ImageRgba8 shown = show(*viewer, 10);
+  const ImageRgba8 rendered = headless(dir, kSize, {"--scene", scene});
+  // Lit: the sun reaches the floor (a frame without it is black, there being no other light).
+  double sum = 0.0;
+  for (size_t i = 0; i < shown.pixels.size(); i += 4) sum += shown.pixels[i + 1];
+  CHECK(sum / double(shown.pixels.size() / 4) > 20.0);
+  checkMatches(shown, rendered);
+}
