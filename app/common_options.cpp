@@ -23,6 +23,32 @@ OptionSpec viewAngleOption() {
           "as the scene file places it, 40"};
 }
 
+std::vector<OptionSpec> shadowOptions() {
+  const ShadowSettings d;
+  return {
+      {"--shadows", "none|on|auto",
+       "which lights cast shadows: auto as the scene says (glTF lights, JSON spot and directional lights, and those "
+       "with \"shadows\": true), on every light, none", toString(d.mode), ""},
+      {"--shadow-filter", "F",
+       "shadow-map filter: hard (one comparison), pcf3x3 (3x3 bilinear comparisons, a 4x4-texel tent) or poisson16 "
+       "(16 bilinear comparisons on a 1.5-texel disc)", toString(d.filter), ""},
+      {"--shadow-atlas", "SIZE",
+       "side of the shadow atlas in texels, a power of two from 256 to 16384 (4 bytes a texel: 4096 is 64 MiB, "
+       "8192 256 MiB); allocated only when a light casts", std::to_string(d.atlasSize), ""},
+  };
+}
+
+ShadowSettings readShadowSettings(const Args& args) {
+  ShadowSettings s;
+  s.mode = parseShadowMode(args.get("--shadows"));
+  s.filter = parseShadowFilter(args.get("--shadow-filter"));
+  s.atlasSize = args.getInt("--shadow-atlas", kMinShadowAtlas, kMaxShadowAtlas);
+  if ((s.atlasSize & (s.atlasSize - 1)) != 0) {
+    throw UsageError("--shadow-atlas " + std::to_string(s.atlasSize) + ": expected a power of two (256 to 16384)");
+  }
+  return s;
+}
+
 void applySceneShapeOptions(const Args& args, SceneParams& params) {
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 0.0f, 89.0f);

@@ -1,8 +1,10 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "app/args.hpp"
 #include "core/builtin_scenes.hpp"
+#include "core/shadow_maps.hpp"
 
 namespace pbr {
 
@@ -11,6 +13,10 @@ OptionSpec timingOption();       // --timing auto|gpu|serial
 OptionSpec eglPlatformOption();  // --egl-platform auto|surfaceless|device
 OptionSpec lightsOption(const std::string& defaultText);  // --lights N, for one scene
 OptionSpec viewAngleOption();    // --view-angle DEG, fresnel-floor only
+
+// --shadows none|on|auto, --shadow-filter hard|pcf3x3|poisson16, --shadow-atlas SIZE; and what they say.
+std::vector<OptionSpec> shadowOptions();
+ShadowSettings readShadowSettings(const Args& args);
 
 // `--lights` and `--view-angle` into the scene parameters, where given.
 void applySceneShapeOptions(const Args& args, SceneParams& params);

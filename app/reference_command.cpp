@@ -5,6 +5,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "core/shadow_maps.hpp"
 #include "app/common_options.hpp"
 #include "app/scene_source.hpp"
 #include "core/image.hpp"
@@ -14,6 +15,9 @@
 namespace pbr {
 
 namespace {
+
+// The command shadows as 'pbr render' does by default; the library's default is none (ReferenceOptions::shadows).
+const ShadowMode kShadows = ShadowSettings{}.mode;
 
 const std::vector<OptionSpec>& referenceOptions() {
   static const reference::ReferenceOptions referenceDefaults;
@@ -27,6 +31,10 @@ const std::vector<OptionSpec>& referenceOptions() {
       {"--threads", "N", "worker threads, 0 for every hardware thread", std::to_string(referenceDefaults.threads), ""},
       {"--geometry", "G", "meshes (the triangles the GPU rasterizes) or analytic (the exact shapes)",
        toString(referenceDefaults.geometry), ""},
+      {"--shadows", "none|on|auto",
+       "which lights cast shadows, traced to each light: auto as the scene says (glTF lights, JSON spot and "
+       "directional lights, and those with \"shadows\": true), on every light, none; as 'pbr render'",
+       toString(kShadows), ""},
       {"--variant", "study|K=V,...", "BRDF forms: study (Hammon, Schlick, Lambert (1 - F(v.h))) or "
                                      "visibility=exact|hammon|separable, ndf=ggx, fresnel=exact|schlick|schlick-sg, "
                                      "diffuse=lambert-1-f|lambert-1-f-vh|lambert", "",
@@ -48,7 +56,8 @@ int runReference(const std::vector<std::string>& argv) {
                                 "model (GGX, exact height-correlated Smith, exact dielectric Fresnel, Schlick for "
                                 "metals, Lambert (1 - F(n.v))), or with --variant the approximations of a renderer "
                                 "variant; writes the same linear radiance as 'pbr render --hdr'. "
-                                "Textures are ignored: material factors only. The default mesh geometry "
+                                "Textures are ignored: material factors only, and alpha-masked cut-outs "
+                                "cast solid shadows. The default mesh geometry "
                                 "makes the difference to 'pbr render' shading alone; against --geometry analytic "
                                 "it is the tessellation's error.",
                                 specs);
@@ -65,16 +74,17 @@ int runReference(const std::vector<std::string>& argv) {
   options.threads = args.getInt("--threads", 0, 1024);
   options.geometry = reference::parseGeometry(args.get("--geometry"));
   options.forms = reference::parseBrdfForms(args.get("--variant"));
+  options.shadows = parseShadowMode(args.get("--shadows"));
   const Scene scene = resolveScene(args.get("--scene"), params);
 
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeHdr(out, frame.radiance);
-  std::printf("reference: %s (%s geometry), %dx%d, %zu lights, %s, %.2f s on %u threads (CPU, double precision)\n"
-              "wrote %s\n",
+  std::printf("reference: %s (%s geometry), %dx%d, %zu lights, shadows %s, %s, %.2f s on %u threads (CPU, double "
+              "precision)\nwrote %s\n",
               scene.name.c_str(), options.geometry == reference::Geometry::Meshes ? "mesh" : "analytic", size.x,
-              size.y, scene.lights.size(), toString(options.forms).c_str(), seconds,
+              size.y, scene.lights.size(), toString(options.shadows), toString(options.forms).c_str(), seconds,
               options.threads > 0 ? unsigned(options.threads) : std::thread::hardware_concurrency(), out.c_str());
   return 0;
 }

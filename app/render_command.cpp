@@ -41,6 +41,9 @@ const std::vector<OptionSpec>& renderOptions() {
       viewAngleOption(),
       spotShareOption(),
       {"--culling", "C", "clustered or none (brute force: every light for every pixel)", toString(frame.culling), ""},
+      shadowOptions()[0],
+      shadowOptions()[1],
+      shadowOptions()[2],
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
@@ -127,6 +130,22 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   } else {
     std::printf("\n");
   }
+  if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
+    const ShadowStats& h = s.shadows;
+    std::printf("shadows: %u lights shadowed, %u views rendered, %u skipped (no receiver in view), atlas %dx%d "
+                "(%.0f MiB, %.1f %% used)\n",
+                h.shadowedLights, h.viewsRendered, h.viewsSkipped, options.shadows.atlasSize,
+                options.shadows.atlasSize, double(shadowAtlasBytes(options.shadows.atlasSize)) / (1 << 20),
+                100.0 * double(h.texelsUsed) / double(shadowAtlasBytes(options.shadows.atlasSize) / 4));
+    if (h.shrunkLights) {
+      std::printf("shadows: the atlas is full: %u lights got smaller maps than their size on screen asks "
+                  "(--shadow-atlas)\n", h.shrunkLights);
+    }
+    if (h.unshadowedLights) {
+      std::printf("shadows: the atlas is full: %u casting lights got no map and are shaded unshadowed "
+                  "(--shadow-atlas)\n", h.unshadowedLights);
+    }
+  }
   if (options.stats) {
     std::printf("culling efficiency: %.3f (%llu of %llu light-pixel pairs evaluated contribute)\n",
                 s.cullingEfficiency(), static_cast<unsigned long long>(s.pairs.contributing),
@@ -184,6 +203,7 @@ int runRender(const std::vector<std::string>& argv) {
   clusterConfig.slices = args.getInt("--slices", 1, 256);
   const bool stats = args.has("--stats");
   const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
+  const ShadowSettings shadows = readShadowSettings(args);
   std::optional<DebugChannel> debug;
   if (args.has("--debug")) debug = parseDebugChannel(args.get("--debug"));
   // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.
@@ -245,7 +265,7 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure, false, debug, aa};
+  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

@@ -405,6 +405,7 @@ class Loader {
       return;
     }
     PointLight light;
+    light.castsShadows = true;  // Blender's lights cast shadows unless told not to; glTF has no word for it
     light.position = glm::vec3(world[3]);
     light.color = color;
     if (!std::isfinite(l.range) || l.range < 0.0) file_.fail(name + ".range: must be a positive finite number");

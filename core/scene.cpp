@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -16,6 +17,22 @@ SpotFalloff spotFalloff(const SpotCone& cone) {
   const float cosOuter = std::cos(cone.outerAngle);
   const float scale = 1.0f / std::max(1e-3f, std::cos(cone.innerAngle) - cosOuter);
   return {scale, -cosOuter * scale};
+}
+
+ShadowMode parseShadowMode(const std::string& name) {
+  if (name == "none") return ShadowMode::None;
+  if (name == "on") return ShadowMode::On;
+  if (name == "auto") return ShadowMode::Auto;
+  throw std::invalid_argument("unknown shadow mode '" + name + "' (expected none, on or auto)");
+}
+
+const char* toString(ShadowMode mode) {
+  switch (mode) {
+    case ShadowMode::None: return "none";
+    case ShadowMode::On: return "on";
+    case ShadowMode::Auto: return "auto";
+  }
+  return "?";
 }
 
 float Scene::displayExposure() const {

@@ -86,6 +86,9 @@ struct PointLight {
   glm::vec3 color{1.0f};
   float luminousPower = 100.0f;  // P in lumens; intensity I = P / (4 pi)
   std::optional<SpotCone> spot = std::nullopt;
+  // Whether it casts shadows where the frame shadows as the scene says (ShadowMode::Auto): the loaders set it,
+  // true for spot lights and every glTF light, false for JSON point lights and random lights, unless the file says.
+  bool castsShadows = false;
 };
 
 // glTF's smooth angular falloff of a spot light as a scale and offset of cos(angle to the axis):
@@ -100,7 +103,17 @@ struct DirectionalLight {
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light travels, unit length
   glm::vec3 color{1.0f};
   float illuminance = 1.0f;  // E in lux
+  bool castsShadows = true;  // as PointLight::castsShadows; a sun casts unless the file says not
 };
+
+// Which lights a frame shadows: none, every light, or those whose castsShadows is set (the scene's say).
+enum class ShadowMode { None, On, Auto };
+// "none", "on", "auto"; throws std::invalid_argument naming the choices otherwise.
+ShadowMode parseShadowMode(const std::string& name);
+const char* toString(ShadowMode mode);
+inline bool castsShadows(bool sceneSays, ShadowMode mode) {
+  return mode == ShadowMode::On || (mode == ShadowMode::Auto && sceneSays);
+}
 
 // Directional lights are shaded for every pixel from one small uniform block (lighting/light_buffer.hpp).
 constexpr size_t kMaxDirectionalLights = 16;

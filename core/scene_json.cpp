@@ -169,8 +169,14 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
   scene.addShape(s, transform, readMaterial(f["material"], folder, scene));
 }
 
-DirectionalLight readDirectionalLight(const JsonField& f) {
+// A light's "shadows": its own say, else the scene's, else the light type's default.
+bool readCastsShadows(const JsonField& f, std::optional<bool> sceneDefault, bool typeDefault) {
+  return f["shadows"].boolean(sceneDefault.value_or(typeDefault));
+}
+
+DirectionalLight readDirectionalLight(const JsonField& f, std::optional<bool> sceneShadows) {
   DirectionalLight l;
+  l.castsShadows = readCastsShadows(f, sceneShadows, true);
   const glm::vec3 direction = f["direction"].vec3(R::any());
   if (!(glm::length(direction) > 0.0f)) f["direction"].fail("expected a non-zero direction (the way the light travels)");
   l.direction = glm::normalize(direction);
@@ -179,8 +185,9 @@ DirectionalLight readDirectionalLight(const JsonField& f) {
   return l;
 }
 
-PointLight readPointLight(const JsonField& f) {
+PointLight readPointLight(const JsonField& f, std::optional<bool> sceneShadows) {
   PointLight l;
+  l.castsShadows = readCastsShadows(f, sceneShadows, false);
   l.position = f["position"].vec3(kCoordinate);
   l.color = f["color"].vec3OrNumber(R::atLeast(0.0), l.color);
   l.radius = f["radius"].number(R::closed(0.0, kMaxCoordinate));
@@ -197,8 +204,9 @@ PointLight readPointLight(const JsonField& f) {
 
 // A spot light: a point light's fields and its cone, angles in degrees from the axis as in glTF (0 and 45 by
 // default).
-PointLight readSpotLight(const JsonField& f) {
-  PointLight l = readPointLight(f);
+PointLight readSpotLight(const JsonField& f, std::optional<bool> sceneShadows) {
+  PointLight l = readPointLight(f, sceneShadows);
+  l.castsShadows = readCastsShadows(f, sceneShadows, true);
   SpotCone cone;
   const glm::vec3 direction = f["direction"].vec3(R::any());
   if (!(glm::length(direction) > 0.0f)) f["direction"].fail("expected a non-zero direction (the way the light shines)");
@@ -289,21 +297,26 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
     scene.notes.push_back("no environment in the file, which places glTF models: lit by the procedural sky "
                           "(\"environment\": \"none\" in the file or --environment none turns it off)");
   }
+  // "shadows" of the scene: what its lights cast where they do not say; unsaid, spot and directional lights cast
+  // and point lights (and random lights) do not.
+  std::optional<bool> sceneShadows;
+  if (root["shadows"].present()) sceneShadows = root["shadows"].boolean(false);
   for (const JsonField& l : root["lights"].items()) {
     const std::string type = l["type"].present() ? l["type"].string() : "point";
     if (type == "point") {
-      scene.lights.push_back(readPointLight(l));
+      scene.lights.push_back(readPointLight(l, sceneShadows));
     } else if (type == "spot") {
-      scene.lights.push_back(readSpotLight(l));
+      scene.lights.push_back(readSpotLight(l, sceneShadows));
     } else if (type == "directional") {
-      scene.directionalLights.push_back(readDirectionalLight(l));
+      scene.directionalLights.push_back(readDirectionalLight(l, sceneShadows));
     } else {
       l["type"].expected("\"point\" (the default), \"spot\" or \"directional\"");
     }
   }
   const JsonField random = root["random_lights"];
   if (random.present()) {
-    const std::vector<PointLight> lights = readRandomLights(random, lightCount, spotShare);
+    std::vector<PointLight> lights = readRandomLights(random, lightCount, spotShare);
+    for (PointLight& l : lights) l.castsShadows = sceneShadows.value_or(false);
     scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
   } else if (lightCount >= 0) {
     random.fail("missing, but a light count was given (it replaces random_lights.count)");

@@ -83,8 +83,14 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
           {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)}};
 }
 
+ShaderDefines GBufferPass::depthPermutation(const Material& m) {
+  const bool masked = m.alphaMode == AlphaMode::Mask;
+  return {{"ALPHA_MASK", masked ? "1" : "0"}, {"BASE_COLOR_MAP", masked && m.baseColorTexture >= 0 ? "1" : "0"}};
+}
+
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
-    : blockStride_(alignedStride()),
+    : cache_(programs),
+      blockStride_(alignedStride()),
       objectBlocks_("gbuffer.objectBlocks", static_cast<size_t>(blockStride_) * scene.objects.size(),
                     packObjectBlocks(scene, blockStride_).data(), 0) {
   meshes_.reserve(scene.meshes.size());
@@ -110,6 +116,9 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     d.blockOffset = static_cast<GLintptr>(i) * blockStride_;
     d.doubleSided = o.material.doubleSided;
     d.mirrored = mirrors(o.transform);
+    d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
+    d.depthDefines = depthPermutation(o.material);
+    bounds_.add(d.bounds);
     const std::array<int, kMapCount> maps = materialMaps(o.material);
     for (size_t unit = 0; unit < kMapCount; ++unit) {
       if (maps[unit] < 0) continue;
@@ -165,6 +174,52 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  // Each draw's depth program, looked up once; the shadow views' matrices are set on each distinct one per view.
+  if (depthPrograms_.empty()) {
+    for (const Draw& d : draws_) {
+      depthPrograms_.push_back(&cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
+                                                concat(d.depthDefines, gbufferBindingDefines())));
+    }
+  }
+  std::vector<const Program*> distinct;
+  for (const Program* p : depthPrograms_) {
+    if (std::find(distinct.begin(), distinct.end(), p) == distinct.end()) distinct.push_back(p);
+  }
+  size_t drawn = 0;
+  for (const ShadowCasterView& v : views) {
+    glViewport(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
+    for (const Program* p : distinct) glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
+    const FrustumPlanes planes = frustumPlanes(v.viewProjection);
+    const Program* bound = nullptr;
+    for (size_t i = 0; i < draws_.size(); ++i) {
+      const Draw& d = draws_[i];
+      if (outsideFrustum(planes, d.bounds)) continue;
+      if (depthPrograms_[i] != bound) depthPrograms_[i]->use();
+      bound = depthPrograms_[i];
+      if (d.depthDefines[1].value == "1") {
+        const GLuint unit = gbuffer_binding::kBaseColorMapUnit.index;
+        glBindTextureUnit(unit, d.textures[unit]);
+        glBindSampler(unit, d.samplers[unit]);
+      }
+      glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
+                        sizeof(ObjectBlock));
+      meshes_[static_cast<size_t>(d.mesh)].draw();
+      ++drawn;
+    }
+  }
+  glBindSampler(gbuffer_binding::kBaseColorMapUnit.index, 0);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return drawn;
 }
 
 }  // namespace pbr

@@ -2,11 +2,13 @@
 #include <array>
 #include <vector>
 
+#include "core/bounds.hpp"
 #include "core/frame_block.hpp"
 #include "core/gpu_mesh.hpp"
 #include "core/gpu_texture.hpp"
 #include "core/scene.hpp"
 #include "core/program_cache.hpp"
+#include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "gbuffer/gbuffer.hpp"
 
@@ -19,6 +21,16 @@ class GBufferPass {
  public:
   GBufferPass(ProgramCache& programs, const Scene& scene);
   void render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const;
+
+  // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z, both faces: a plane or
+  // an open mesh casts from either side), once per view into its square, objects outside the view's frustum left
+  // out. The depth programs are compiled on first use. Returns the draws made.
+  size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views);
+  // Every object's world box together.
+  const WorldBounds& bounds() const { return bounds_; }
+
+  // The defines of the depth permutation a material casts with: ALPHA_MASK, and BASE_COLOR_MAP where masked.
+  static ShaderDefines depthPermutation(const Material& material);
 
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
   // OCCLUSION_MAP, EMISSIVE_MAP and ALPHA_MASK, each 0 or 1.
@@ -35,16 +47,21 @@ class GBufferPass {
     bool textured;
     std::array<GLuint, kMapCount> textures;  // by texture unit; 0 where the draw samples nothing
     std::array<GLuint, kMapCount> samplers;
+    WorldBounds bounds;
+    ShaderDefines depthDefines;
   };
   // The material's Scene::textures index per texture unit, -1 for none.
   static std::array<int, kMapCount> materialMaps(const Material& material);
 
+  ProgramCache& cache_;
   std::vector<const Program*> programs_;  // one per permutation the scene uses, owned by the cache
+  std::vector<const Program*> depthPrograms_;  // per draw, once shadows are first drawn
   std::vector<GpuMesh> meshes_;
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;
   GLsizeiptr blockStride_;
   Buffer objectBlocks_;
+  WorldBounds bounds_;
 };
 
 }  // namespace pbr

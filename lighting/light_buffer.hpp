@@ -62,6 +62,7 @@ class LightBuffer {
   unsigned count() const { return count_; }
   // The scene's index of the light at `bufferIndex`: cluster lists (LightClusters::readLists) hold buffer indices.
   uint32_t sceneIndex(uint32_t bufferIndex) const { return order_[bufferIndex]; }
+  const std::vector<uint32_t>& order() const { return order_; }  // per buffer index, the scene's
   bool hasSpotLights() const { return hasSpots_; }
   unsigned directionalCount() const { return directionalCount_; }
   size_t bytes() const { return (buffer_ ? buffer_->size() : 0) + (cones_ ? cones_->size() : 0); }

@@ -2,6 +2,7 @@
 
 #include "core/environment_maps.hpp"
 #include "core/frame_block.hpp"
+#include "core/shadow_maps.hpp"
 
 namespace pbr {
 
@@ -12,7 +13,8 @@ ShaderDefines lightingBindingDefines() {
                          kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
                          kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
                          kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
-                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit});
+                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
+                         kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo});
   return defines;
 }
 

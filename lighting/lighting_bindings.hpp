@@ -41,8 +41,8 @@ constexpr BindingPoint kPairCountImage{"PAIR_COUNT_IMAGE", BindingKind::ImageUni
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding
 
-// The frame block's, the lighting module's and the environment maps' points: everything bound while the lighting
-// module's programs run.
+// The frame block's, the lighting module's, the environment maps' and the shadow maps' points: everything bound
+// while the lighting module's programs run.
 ShaderDefines lightingBindingDefines();
 
 }  // namespace pbr

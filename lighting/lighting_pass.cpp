@@ -48,6 +48,8 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
+  defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
+  if (o.shadows) defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
   if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
   defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
   return defines;
@@ -88,6 +90,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   lights.bindDirectional();
   if (clusters) clusters->bindForLighting();
   if (ibl) bindEnvironmentMaps(*options.environment);
+  if (options.shadows) bindShadowMaps(*options.shadows);
   if (ambient) {
     glBindTextureUnit(lighting_binding::kAmbientAlbedoUnit.index, ambient->id());
     glBindSampler(lighting_binding::kAmbientAlbedoUnit.index, ambientSampler_.id());

@@ -9,6 +9,7 @@
 #include "core/environment_maps.hpp"
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
+#include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
@@ -43,6 +44,9 @@ struct LightingOptions {
   // Non-null: the pass also counts each pixel's light-pixel pairs into this RG32UI image of the frame's size
   // (evaluated, contributing), what the efficiency debug view shows.
   const Texture* pairCounts = nullptr;
+  // Non-null: lights with shadow views in these maps are shaded with their visibility, sampled by this filter.
+  const ShadowMaps* shadows = nullptr;
+  ShadowFilter shadowFilter = ShadowFilter::Pcf3x3;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
@@ -60,7 +64,7 @@ struct PairCounts {
 };
 
 // Deferred lighting in a compute shader; one permutation per (model, variant, radiance format, culling, stats,
-// IBL, spot lights present), compiled on first use.
+// IBL, spot lights present, shadow filter or none), compiled on first use.
 class LightingPass {
  public:
   explicit LightingPass(ProgramCache& programs)

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace pbr::reference {
 
@@ -32,6 +33,8 @@ bool Aabb::clip(const dvec3& origin, const dvec3& inverseDirection, double& tMin
   }
   return tMin <= tMax;
 }
+
+double Aabb::diagonal() const { return min.x <= max.x ? glm::length(max - min) : 0.0; }
 
 Bvh::Bvh(const std::vector<Aabb>& boxes) {
   if (boxes.empty()) return;

@@ -16,6 +16,7 @@ struct Aabb {
   void grow(const Aabb& b);
   // The ray parameter interval [tMin, tMax] clipped to the box (slab test, Kay & Kajiya 1986); false if empty.
   bool clip(const dvec3& origin, const dvec3& inverseDirection, double& tMin, double& tMax) const;
+  double diagonal() const;  // 0 for an empty box
 };
 
 // A bounding volume hierarchy over primitives given by their boxes, split at the median centroid along the widest
@@ -29,6 +30,10 @@ class Bvh {
   // first; `hit` returns the distance of its hit if it is closer than tMax, else tMax, so farther boxes are skipped.
   template <class Visit>
   void traverse(const Ray& ray, double tMin, double tMax, Visit hit) const;
+  // Whether `hits(primitive)` holds for a primitive whose box the ray enters within [tMin, tMax]; returns at the
+  // first that does. Any hit ends the search, so the subtrees are visited in a fixed order, without sorting.
+  template <class Test>
+  bool any(const Ray& ray, double tMin, double tMax, Test hits) const;
 
  private:
   static constexpr uint32_t kLeafSize = 4;
@@ -67,6 +72,29 @@ void Bvh::traverse(const Ray& ray, double tMin, double tMax, Visit hit) const {
     stack[top++] = firstNearer ? node.first + 1 : node.first;
     stack[top++] = firstNearer ? node.first : node.first + 1;
   }
+}
+
+template <class Test>
+bool Bvh::any(const Ray& ray, double tMin, double tMax, Test hits) const {
+  if (nodes_.empty()) return false;
+  const dvec3 inverse = 1.0 / ray.direction;
+  uint32_t stack[64];  // as in traverse()
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    double t0 = tMin, t1 = tMax;
+    if (!node.box.clip(ray.origin, inverse, t0, t1)) continue;
+    if (node.count == 0) {
+      stack[top++] = node.first + 1;
+      stack[top++] = node.first;
+      continue;
+    }
+    for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+      if (hits(order_[i])) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace pbr::reference

@@ -4,6 +4,9 @@
 
 namespace pbr::reference {
 
+// The unit direction towards the light, against the way it travels.
+dvec3 towardsLight(const DirectionalLight& light);
+
 // Radiance towards V that the reference PBR model reflects from one directional light of illuminance E (lux):
 // f(l, v) E n.l with l against the way the light travels; 0 where n.l <= 0.
 dvec3 reflectedRadiance(const DirectionalLight& light, const dvec3& N, const dvec3& V, const ReferenceMaterial& m,

@@ -9,6 +9,7 @@ namespace pbr::reference {
 
 MeshScene::MeshScene(const Scene& scene) {
   std::vector<Aabb> boxes;
+  Aabb bounds;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     if (o.mesh < 0 || size_t(o.mesh) >= scene.meshes.size()) {
@@ -31,15 +32,18 @@ MeshScene::MeshScene(const Scene& scene) {
       Aabb box;
       for (size_t c = 0; c < 3; ++c) box.grow(object.positions.at(mesh.indices[k + c]));
       boxes.push_back(box);
+      bounds.grow(box);
       triangles_.push_back({uint32_t(i), uint32_t(k)});
     }
     objects_.push_back(std::move(object));
   }
   bvh_ = Bvh(boxes);
+  extent_ = bounds.diagonal();
 }
 
 // Möller & Trumbore 1997, "Fast, minimum storage ray-triangle intersection".
-std::optional<Hit> MeshScene::hitTriangle(const Triangle& triangle, const Ray& ray, double tMin, double tMax) const {
+std::optional<MeshScene::Crossing> MeshScene::cross(const Triangle& triangle, const Ray& ray, double tMin,
+                                                    double tMax, bool bothFaces) const {
   const Object& o = objects_[triangle.object];
   const uint32_t* index = &(*o.indices)[triangle.firstIndex];
   const dvec3& p0 = o.positions[index[0]];
@@ -48,7 +52,7 @@ std::optional<Hit> MeshScene::hitTriangle(const Triangle& triangle, const Ray& r
   // det = -dot(direction, cross(e1, e2)): positive where the ray meets the counter-clockwise (front) side.
   const double det = glm::dot(e1, p);
   const bool front = det * o.frontSign > 0.0;
-  if (det == 0.0 || (!front && !o.doubleSided)) return std::nullopt;
+  if (det == 0.0 || (!front && !bothFaces)) return std::nullopt;
   const dvec3 s = ray.origin - p0;
   const double u = glm::dot(s, p) / det;
   if (u < 0.0 || u > 1.0) return std::nullopt;
@@ -57,9 +61,18 @@ std::optional<Hit> MeshScene::hitTriangle(const Triangle& triangle, const Ray& r
   if (v < 0.0 || u + v > 1.0) return std::nullopt;
   const double t = glm::dot(e2, q) / det;
   if (t < tMin || t > tMax) return std::nullopt;
-  dvec3 n = glm::normalize((1.0 - u - v) * o.normals[index[0]] + u * o.normals[index[1]] + v * o.normals[index[2]]);
-  if (!front) n = -n;  // a double-sided surface seen from behind faces the other way
-  return Hit{t, ray.origin + t * ray.direction, n, triangle.object};
+  return Crossing{t, u, v, front};
+}
+
+std::optional<Hit> MeshScene::hitTriangle(const Triangle& triangle, const Ray& ray, double tMin, double tMax) const {
+  const Object& o = objects_[triangle.object];
+  const std::optional<Crossing> c = cross(triangle, ray, tMin, tMax, o.doubleSided);
+  if (!c) return std::nullopt;
+  const uint32_t* index = &(*o.indices)[triangle.firstIndex];
+  dvec3 n = glm::normalize((1.0 - c->u - c->v) * o.normals[index[0]] + c->u * o.normals[index[1]] +
+                           c->v * o.normals[index[2]]);
+  if (!c->front) n = -n;  // a double-sided surface seen from behind faces the other way
+  return Hit{c->t, ray.origin + c->t * ray.direction, n, triangle.object};
 }
 
 std::optional<Hit> MeshScene::closestHit(const Ray& ray, double tMin, double tMax) const {
@@ -71,6 +84,10 @@ std::optional<Hit> MeshScene::closestHit(const Ray& ray, double tMin, double tMa
     return hit->t;
   });
   return best;
+}
+
+bool MeshScene::occluded(const Ray& ray, double tMin, double tMax) const {
+  return bvh_.any(ray, tMin, tMax, [&](uint32_t i) { return cross(triangles_[i], ray, tMin, tMax, true).has_value(); });
 }
 
 }  // namespace pbr::reference

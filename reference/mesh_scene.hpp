@@ -14,12 +14,15 @@ namespace pbr::reference {
 // vertex normals through the inverse transpose of the model matrix, interpolated with the hit's barycentrics
 // (which equal the rasterizer's perspective-correct ones at that point) and normalised. Back faces are culled
 // unless the material is double-sided, whose back faces flip the normal; a mirroring transform swaps the winding
-// that counts as front, as the G-buffer pass's glFrontFace does. Texture coordinates and maps are not used.
+// that counts as front, as the G-buffer pass's glFrontFace does. Shadow rays meet both faces of every triangle.
+// Texture coordinates and maps are not used, so alpha-masked cut-outs are solid.
 class MeshScene final : public RayCaster {
  public:
   // Throws SceneError when an object's mesh index names no mesh of the scene.
   explicit MeshScene(const Scene& scene);
   std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const override;
+  bool occluded(const Ray& ray, double tMin, double tMax) const override;
+  double extent() const override { return extent_; }
 
  private:
   struct Object {
@@ -33,11 +36,20 @@ class MeshScene final : public RayCaster {
     uint32_t object;
     uint32_t firstIndex;
   };
+  // Where the ray crosses the triangle within [tMin, tMax]: t, the barycentrics u and v of its second and third
+  // vertices, and whether the face met is the front one. Back faces count only with `bothFaces`.
+  struct Crossing {
+    double t, u, v;
+    bool front;
+  };
+  std::optional<Crossing> cross(const Triangle& triangle, const Ray& ray, double tMin, double tMax,
+                                bool bothFaces) const;
   std::optional<Hit> hitTriangle(const Triangle& triangle, const Ray& ray, double tMin, double tMax) const;
 
   std::vector<Object> objects_;
   std::vector<Triangle> triangles_;
   Bvh bvh_;
+  double extent_ = 0.0;
 };
 
 }  // namespace pbr::reference

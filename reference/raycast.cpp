@@ -7,34 +7,38 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "reference/bvh.hpp"
+
 namespace pbr::reference {
 
 namespace {
 
-// Object-space intersections; `n` receives the object-space outward normal.
-std::optional<double> hitPlane(const dvec3& o, const dvec3& d, dvec3& n) {
-  if (d.y >= 0.0 || o.y <= 0.0) return std::nullopt;  // front face (+Y) only
+// Object-space intersections of the unit shapes (plane and sphere of diameter 1, box of side 1 about the origin).
+// The ray parameters where a ray enters and leaves a solid shape; `axis` is the box's entering face, -1 for none.
+struct Span {
+  double enter, leave;
+  int axis = -1;
+};
+
+// Where the ray crosses the plane's square, from either side.
+std::optional<double> planeCrossing(const dvec3& o, const dvec3& d) {
+  if (d.y == 0.0) return std::nullopt;
   const double t = -o.y / d.y;
   const dvec3 p = o + t * d;
   if (std::abs(p.x) > 0.5 || std::abs(p.z) > 0.5) return std::nullopt;
-  n = dvec3(0, 1, 0);
   return t;
 }
 
-std::optional<double> hitSphere(const dvec3& o, const dvec3& d, dvec3& n) {
+std::optional<Span> sphereSpan(const dvec3& o, const dvec3& d) {
   const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 0.25;
   const double disc = b * b - a * c;
   if (disc < 0.0) return std::nullopt;
-  const double t = (-b - std::sqrt(disc)) / a;  // the entering root: front faces only
-  if (t <= 0.0) return std::nullopt;
-  n = glm::normalize(o + t * d);
-  return t;
+  return Span{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
 }
 
-// Slab test (Kay & Kajiya 1986), entering face only.
-std::optional<double> hitBox(const dvec3& o, const dvec3& d, dvec3& n) {
-  double tNear = -std::numeric_limits<double>::infinity(), tFar = std::numeric_limits<double>::infinity();
-  int axis = -1;
+// Slab test (Kay & Kajiya 1986).
+std::optional<Span> boxSpan(const dvec3& o, const dvec3& d) {
+  Span span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (int i = 0; i < 3; ++i) {
     if (d[i] == 0.0) {
       if (std::abs(o[i]) > 0.5) return std::nullopt;
@@ -42,21 +46,58 @@ std::optional<double> hitBox(const dvec3& o, const dvec3& d, dvec3& n) {
     }
     double t0 = (-0.5 - o[i]) / d[i], t1 = (0.5 - o[i]) / d[i];
     if (t0 > t1) std::swap(t0, t1);
-    if (t0 > tNear) {
-      tNear = t0;
-      axis = i;
+    if (t0 > span.enter) {
+      span.enter = t0;
+      span.axis = i;
     }
-    tFar = std::min(tFar, t1);
+    span.leave = std::min(span.leave, t1);
   }
-  if (axis < 0 || tNear > tFar || tNear <= 0.0) return std::nullopt;
+  if (span.enter > span.leave) return std::nullopt;
+  return span;
+}
+
+// Camera hits, front faces only; `n` receives the object-space outward normal.
+std::optional<double> hitPlane(const dvec3& o, const dvec3& d, dvec3& n) {
+  if (d.y >= 0.0 || o.y <= 0.0) return std::nullopt;  // front face (+Y) only
+  n = dvec3(0, 1, 0);
+  return planeCrossing(o, d);
+}
+
+std::optional<double> hitSphere(const dvec3& o, const dvec3& d, dvec3& n) {
+  const std::optional<Span> span = sphereSpan(o, d);
+  if (!span || span->enter <= 0.0) return std::nullopt;  // the entering root: front faces only
+  n = glm::normalize(o + span->enter * d);
+  return span->enter;
+}
+
+std::optional<double> hitBox(const dvec3& o, const dvec3& d, dvec3& n) {
+  const std::optional<Span> span = boxSpan(o, d);
+  if (!span || span->axis < 0 || span->enter <= 0.0) return std::nullopt;  // entering face only
   n = dvec3(0.0);
-  n[axis] = d[axis] > 0.0 ? -1.0 : 1.0;
-  return tNear;
+  n[span->axis] = d[span->axis] > 0.0 ? -1.0 : 1.0;
+  return span->enter;
+}
+
+// Whether the shape's surface, either face, lies along the ray within [tMin, tMax].
+bool crosses(pbr::Shape kind, const dvec3& o, const dvec3& d, double tMin, double tMax) {
+  auto within = [&](double t) { return t >= tMin && t <= tMax; };
+  if (kind == pbr::Shape::Plane) {
+    const std::optional<double> t = planeCrossing(o, d);
+    return t && within(*t);
+  }
+  const std::optional<Span> span = kind == pbr::Shape::Sphere ? sphereSpan(o, d) : boxSpan(o, d);
+  return span && (within(span->enter) || within(span->leave));
+}
+
+// Object-space ray of a shape. Its direction is not renormalised, so object-space t equals world-space t.
+Ray objectRay(const glm::dmat4& toObject, const Ray& ray) {
+  return {dvec3(toObject * glm::dvec4(ray.origin, 1.0)), dvec3(toObject * glm::dvec4(ray.direction, 0.0))};
 }
 
 }  // namespace
 
 AnalyticScene::AnalyticScene(const Scene& scene) {
+  Aabb bounds;  // of the shapes' unit boxes
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     if (o.shape == pbr::Shape::Mesh) {
@@ -67,16 +108,19 @@ AnalyticScene::AnalyticScene(const Scene& scene) {
     const glm::dmat4 toWorld(o.transform);
     const glm::dmat4 toObject = glm::inverse(toWorld);
     shapes_.push_back({o.shape, toObject, toWorld, glm::transpose(glm::dmat3(toObject))});
+    for (int corner = 0; corner < 8; ++corner) {
+      const dvec3 unit(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);  // a corner of the box [0, 1]^3
+      bounds.grow(dvec3(toWorld * glm::dvec4(unit - 0.5, 1.0)));
+    }
   }
+  extent_ = bounds.diagonal();
 }
 
 std::optional<Hit> AnalyticScene::closestHit(const Ray& ray, double tMin, double tMax) const {
   std::optional<Hit> best;
   for (size_t i = 0; i < shapes_.size(); ++i) {
     const Shape& s = shapes_[i];
-    // The object-space direction is not renormalised, so object-space t equals world-space t.
-    const dvec3 o = dvec3(s.toObject * glm::dvec4(ray.origin, 1.0));
-    const dvec3 d = dvec3(s.toObject * glm::dvec4(ray.direction, 0.0));
+    const auto [o, d] = objectRay(s.toObject, ray);
     dvec3 n;
     const std::optional<double> t = s.kind == pbr::Shape::Plane    ? hitPlane(o, d, n)
                                     : s.kind == pbr::Shape::Sphere ? hitSphere(o, d, n)
@@ -85,6 +129,14 @@ std::optional<Hit> AnalyticScene::closestHit(const Ray& ray, double tMin, double
     best = Hit{*t, ray.origin + *t * ray.direction, glm::normalize(s.normalToWorld * n), i};
   }
   return best;
+}
+
+bool AnalyticScene::occluded(const Ray& ray, double tMin, double tMax) const {
+  for (const Shape& s : shapes_) {
+    const auto [o, d] = objectRay(s.toObject, ray);
+    if (crosses(s.kind, o, d, tMin, tMax)) return true;
+  }
+  return false;
 }
 
 dvec3 cameraDirection(const Camera& camera, int width, int height, double px, double py) {

@@ -23,20 +23,28 @@ struct Hit {
   size_t object = 0;
 };
 
-// A scene's geometry as the reference sees it: what a ray meets first.
+// A scene's geometry as the reference sees it: what a ray meets first, and whether a shadow ray meets anything.
 class RayCaster {
  public:
   virtual ~RayCaster() = default;
+  // The nearest surface the camera sees along the ray within [tMin, tMax]: the faces the rasterizer draws.
   virtual std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const = 0;
+  // Whether the ray meets any surface within [tMin, tMax], front or back face: the GPU draws its shadow casters
+  // without back-face culling. Stops at the first surface found.
+  virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
+  // The diagonal of a box around all the geometry, 0 for none: the scene's scale.
+  virtual double extent() const = 0;
 };
 
 // The analytic shapes of a scene, each with its transform inverted once, intersected exactly in double.
-// Front faces only, as the rasterizer culls back faces (a plane seen from below is not there).
+// Camera rays meet front faces only, as the rasterizer culls back faces (a plane seen from below is not there).
 class AnalyticScene final : public RayCaster {
  public:
   // Throws SceneError when an object is not an analytic shape (plane, sphere, box).
   explicit AnalyticScene(const Scene& scene);
   std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const override;
+  bool occluded(const Ray& ray, double tMin, double tMax) const override;
+  double extent() const override { return extent_; }
 
  private:
   struct Shape {
@@ -46,6 +54,7 @@ class AnalyticScene final : public RayCaster {
     glm::dmat3 normalToWorld;
   };
   std::vector<Shape> shapes_;
+  double extent_ = 0.0;
 };
 
 // The direction from the camera through the continuous image point (px, py), py counted down from the top edge,

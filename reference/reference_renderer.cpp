@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -50,6 +51,64 @@ std::vector<AlbedoTable> albedoTables(const Scene& scene, const BrdfForms& forms
   return tables;
 }
 
+// Shadow rays start off the surface by this share of the scene's extent, along the normal on the lit side (n.l > 0):
+// far above double's rounding of a hit point (about 1e-16 of its coordinates), far below what a frame resolves (a
+// pixel spans about 1e-3 of a scene it shows whole, at 1280 pixels across), so a surface neither shadows itself nor
+// lets light through where objects touch. They stop as far short of a point light.
+constexpr double kShadowOffset = 1e-6;
+
+// Of the lights that cast shadows and add to one hit: how many there are and how many reach it.
+class ShadowRays {
+ public:
+  ShadowRays(const RayCaster& geometry, ShadowMode mode, const Hit& hit)
+      : geometry_(geometry), mode_(mode), offset_(kShadowOffset * geometry.extent()),
+        origin_(hit.position + offset_ * hit.normal) {}
+
+  // Whether a point light reaches the hit, given that it adds to it; counted if it casts shadows.
+  bool reaches(const PointLight& light) {
+    const dvec3 toLight = dvec3(light.position) - origin_;
+    const double distance = glm::length(toLight);
+    return reaches(light.castsShadows, toLight / distance, distance - offset_);
+  }
+  bool reaches(const DirectionalLight& light) {
+    return reaches(light.castsShadows, towardsLight(light), std::numeric_limits<double>::infinity());
+  }
+  // The mean 0/1 visibility of the casting lights counted, -1 for none.
+  float visibility() const { return casting_ > 0 ? float(double(reaching_) / casting_) : -1.0f; }
+
+ private:
+  bool reaches(bool sceneSays, const dvec3& L, double tMax) {
+    if (!castsShadows(sceneSays, mode_)) return true;
+    ++casting_;
+    // A light within the offset of the surface, or on it, is not shadowed: no ray is left to cast.
+    const bool reached = !(tMax > 0.0 && geometry_.occluded({origin_, L}, 0.0, tMax));
+    reaching_ += reached;
+    return reached;
+  }
+
+  const RayCaster& geometry_;
+  ShadowMode mode_;
+  double offset_;
+  dvec3 origin_;
+  int casting_ = 0;
+  int reaching_ = 0;
+};
+
+// Adds to `color` the radiance the lights reflect from a hit towards V, each light that casts shadows only where it
+// reaches the hit. Lights are added in the order of the frames measured before shadows, so that those stay identical.
+void addDirectLight(const Scene& scene, const Hit& hit, const dvec3& V, const ReferenceMaterial& m,
+                    const BrdfForms& forms, ShadowRays& shadows, dvec3& color) {
+  for (const DirectionalLight& light : scene.directionalLights) {
+    if (glm::dot(hit.normal, towardsLight(light)) <= 0.0 || !shadows.reaches(light)) continue;
+    color += reflectedRadiance(light, hit.normal, V, m, forms);
+  }
+  for (const PointLight& light : scene.lights) {
+    const LightIncidence in = incidence(light, hit.position, hit.normal);
+    if (in.NoL <= 0.0 || in.attenuation <= 0.0 || !shadows.reaches(light)) continue;
+    color += reflectedRadiance(light, hit.position, hit.normal, V, m, forms);
+  }
+}
+
 }  // namespace
 
 Geometry parseGeometry(const std::string& name) {
@@ -83,8 +142,9 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
                                            : std::make_unique<AnalyticScene>(scene);
   const std::vector<AlbedoTable> albedo = albedoTables(scene, options.forms, threads);
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
-  ReferenceFrame frame{{width, height, std::vector<float>(size_t(width) * height * 4, 0.0f)},
-                       std::vector<int>(size_t(width) * height, -1)};
+  const size_t pixels = size_t(width) * height;
+  ReferenceFrame frame{{width, height, std::vector<float>(pixels * 4, 0.0f)}, std::vector<int>(pixels, -1),
+                       std::vector<float>(options.shadows != ShadowMode::None ? pixels : 0, -1.0f)};
 
   auto shadeRow = [&](int y) {
     for (int x = 0; x < width; ++x) {
@@ -99,14 +159,11 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
         const dvec3 V = -ray.direction;
         const double NoV = std::max(glm::dot(hit->normal, V), 1e-4);
         if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * albedo[hit->object](NoV);
-        for (const DirectionalLight& light : scene.directionalLights) {
-          color += reflectedRadiance(light, hit->normal, V, m, options.forms);
-        }
-        for (const PointLight& light : scene.lights) {
-          color += reflectedRadiance(light, hit->position, hit->normal, V, m, options.forms);
-        }
+        ShadowRays shadows(*geometry, options.shadows, *hit);
+        addDirectLight(scene, *hit, V, m, options.forms, shadows, color);
+        frame.objectIds[size_t(y) * width + x] = int(hit->object);
+        if (!frame.visibility.empty()) frame.visibility[size_t(y) * width + x] = shadows.visibility();
       }
-      if (hit) frame.objectIds[size_t(y) * width + x] = int(hit->object);
       float* p = &frame.radiance.pixels[(size_t(y) * width + x) * 4];
       p[0] = float(color.x);
       p[1] = float(color.y);

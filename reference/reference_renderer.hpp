@@ -8,17 +8,23 @@
 
 namespace pbr::reference {
 
-// Renders a scene lit by point and directional lights and uniform ambient light by ray-casting each pixel centre in double
-// precision and evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and
+// Renders a scene lit by point and directional lights and uniform ambient light by ray-casting each pixel centre in
+// double precision and evaluating the reference PBR model (reference_brdf.hpp) with the renderer's light units and
 // attenuation. The uniform ambient term is exact: ambient radiance times the BRDF's directional albedo, integrated
 // numerically. By default it ray-casts the triangles the GPU rasterizes (mesh_scene.hpp), so that a comparison
 // measures shading alone; Geometry::Analytic ray-casts the exact shapes (plane, sphere, box) instead, and the
 // difference between the two frames is the tessellation's error. Textures are ignored: material factors only.
-// Throws SceneError for scenes with an environment rather than render them without it, and, with analytic
-// geometry, for objects that are meshes rather than shapes.
+// With ReferenceOptions::shadows, a light that casts shadows adds nothing where a shadow ray towards it meets any
+// surface (either face; alpha-masked cut-outs are solid, as textures are not read). Throws SceneError for scenes
+// with an environment rather than render them without it, and, with analytic geometry, for objects that are meshes
+// rather than shapes.
 struct ReferenceFrame {
   ImageRgbaF radiance;          // linear, before exposure, rows from the top like the renderer's HDR capture
   std::vector<int> objectIds;   // per pixel: the object hit, -1 for none
+  // Per pixel, with ReferenceOptions::shadows other than None (empty otherwise): the share of the lights that cast
+  // shadows and add to the pixel (n.l > 0 and attenuation > 0, spot cone included) that reach it unoccluded, each
+  // counting 0 or 1; -1 where no such light adds to it or the ray hits nothing.
+  std::vector<float> visibility;
   // Whether the pixel and its 8 neighbours see the same object: comparisons skip silhouettes, where a
   // tessellated mesh and the exact shape, or a rasterizer's and a ray's rounding, cover different pixels.
   bool interior(int x, int y) const;
@@ -37,6 +43,8 @@ struct ReferenceOptions {
   int threads = 0;  // 0: every hardware thread
   BrdfForms forms;  // the BRDF's terms, for lights and ambient alike
   Geometry geometry = Geometry::Meshes;
+  // Which lights cast shadows (core/scene.hpp's castsShadows); none by default, the frames measured before shadows.
+  ShadowMode shadows = ShadowMode::None;
 };
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});
 

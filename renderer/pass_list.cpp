@@ -28,6 +28,7 @@ const char* toString(FrameResource resource) {
     case FrameResource::Environment: return "environment";
     case FrameResource::Camera: return "camera";
     case FrameResource::GBuffer: return "gbuffer";
+    case FrameResource::ShadowMaps: return "shadow maps";
     case FrameResource::Radiance: return "radiance";
     case FrameResource::ClusterLists: return "cluster lists";
     case FrameResource::PairCounts: return "pair counts";

@@ -1,5 +1,6 @@
 #include "renderer/renderer.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "core/gpu_mesh.hpp"
@@ -16,7 +17,37 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
       targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config)),
       camera_(scene.camera),
       frameData_(makeFrameBlock(camera_, width, height)),
-      frame_("frame.block", frameData_) {}
+      frame_("frame.block", frameData_),
+      lights_(&scene.lights) {}
+
+void Renderer::setLights(const std::vector<PointLight>& lights) {
+  scene_.lights.uploadPoints(lights);
+  lightsSet_ = lights;
+  lights_ = &lightsSet_;
+  shadowedCache_.reset();
+}
+
+bool Renderer::shadowed(ShadowMode mode) {
+  if (!shadowedCache_ || shadowedCache_->first != mode) {
+    shadowedCache_ = {mode, anyShadowCaster(*lights_, sceneData_.directionalLights, mode)};
+  }
+  return shadowedCache_->second;
+}
+
+void Renderer::renderShadows(const ShadowSettings& settings) {
+  const ShadowInputs inputs{camera_,
+                            float(width()) / float(height()),
+                            height(),
+                            *lights_,
+                            scene_.lights.order(),
+                            sceneData_.directionalLights,
+                            scene_.geometry.bounds(),
+                            settings.mode,
+                            settings.atlasSize};
+  scene_.shadows.render(inputs, [this](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
+    scene_.geometry.renderDepth(framebuffer, views);
+  });
+}
 
 void Renderer::resize(int width, int height) {
   targets_.reset();  // free the old targets before allocating the new ones
@@ -44,9 +75,14 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   // write every display pixel, so the passes whose output they would replace are left out.
   const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
   const bool replacesDisplay = surfaceChannel || efficiency;
+  const bool shadows = shadowed(options.shadows.mode);
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
+  if (shadows && !emission && !surfaceChannel) {
+    passes.push_back({"shadow", {R::Geometry, R::Lights, R::Camera}, {R::ShadowMaps},
+                      [this, settings = options.shadows] { renderShadows(settings); }});
+  }
   if (clustered) {
     passes.push_back({"cluster", {R::Lights, R::Camera, R::GBuffer}, {R::ClusterLists}, [this, &t, stats = options.stats] {
                         t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth, stats);
@@ -55,18 +91,26 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   std::vector<R> lightingReads = {R::GBuffer, R::Radiance, R::Lights, R::Camera};
   if (clustered) lightingReads.push_back(R::ClusterLists);
   if (ibl) lightingReads.push_back(R::Environment);
+  if (shadows) lightingReads.push_back(R::ShadowMaps);
   std::vector<R> lightingWrites = {R::Radiance};
   if (efficiency) lightingWrites.push_back(R::PairCounts);
   // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
   // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
   if (!emission && !surfaceChannel) {
-    passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency] {
+    passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency,
+                                                                  shadows] {
                         const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
                                                       t.gbuffer.depth};
                         const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
-                        const LightingOptions lighting{options.model, options.variant, sceneData_.ambient,
-                                                       options.stats, ibl ? &maps : nullptr,
-                                                       efficiency ? &t.pairCounts() : nullptr};
+                        const ShadowMaps shadowMaps = scene_.shadows.maps();
+                        const LightingOptions lighting{options.model,
+                                                       options.variant,
+                                                       sceneData_.ambient,
+                                                       options.stats,
+                                                       ibl ? &maps : nullptr,
+                                                       efficiency ? &t.pairCounts() : nullptr,
+                                                       shadows ? &shadowMaps : nullptr,
+                                                       options.shadows.filter};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
@@ -137,6 +181,7 @@ void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, cons
   runPassList(passes, profiler);
   profiler.endFrame();
   lastOptions_ = options;
+  lastShadowed_ = std::any_of(passes.begin(), passes.end(), [](const FramePass& p) { return p.name == "shadow"; });
 }
 
 RendererCounters Renderer::counters() const {
@@ -174,6 +219,7 @@ LightStats Renderer::lightStats() const {
     s.visibleLights = status.visibleLights;
   }
   if (lastOptions_.stats) s.pairs = scene_.lighting.readPairCounts();
+  if (lastShadowed_) s.shadows = scene_.shadows.stats();
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include "core/profiler.hpp"
 #include "core/scene.hpp"
 #include "core/shader_library.hpp"
+#include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/debug_channel.hpp"
 #include "renderer/frame_targets.hpp"
@@ -28,6 +29,7 @@ struct FrameOptions {
   // (anti-aliased) frame and need clustered culling; the others replace the frame, which is then not anti-aliased.
   std::optional<DebugChannel> debug;
   AntiAliasing aa = AntiAliasing::None;  // of the display image, before any debug view
+  ShadowSettings shadows;                // a frame none of whose lights casts runs no shadow pass
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -42,6 +44,7 @@ struct LightStats {
   uint64_t indexEntries = 0;        // entries of the light-index list the frame needed
   uint32_t overflowedClusters = 0;  // shaded by brute force: the list or the light masks were full
   PairCounts pairs;
+  ShadowStats shadows;              // of the last frame's shadow pass; zero without one
   double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
   // Light-pixel pairs that contribute over pairs evaluated.
   double cullingEfficiency() const { return pairs.evaluated ? double(pairs.contributing) / pairs.evaluated : 0.0; }
@@ -98,7 +101,7 @@ class Renderer {
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
   // changes); new point and spot lights replace those of the light buffer (the directional lights stay).
   void setCamera(const Camera& camera);
-  void setLights(const std::vector<PointLight>& lights) { scene_.lights.uploadPoints(lights); }
+  void setLights(const std::vector<PointLight>& lights);
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
@@ -116,6 +119,9 @@ class Renderer {
  private:
   // The "debug" pass of the list: what the channel reads, and the work.
   FramePass debugPass(DebugChannel channel);
+  // Whether any light casts under `mode` (cached until the lights change).
+  bool shadowed(ShadowMode mode);
+  void renderShadows(const ShadowSettings& settings);
 
   const Scene& sceneData_;
   RendererConfig config_;
@@ -125,6 +131,10 @@ class Renderer {
   Camera camera_;
   FrameBlock frameData_;
   UniformBuffer<FrameBlock> frame_;
+  std::vector<PointLight> lightsSet_;  // the lights of setLights, once called
+  const std::vector<PointLight>* lights_;  // the frame's point and spot lights: the scene's or lightsSet_
+  std::optional<std::pair<ShadowMode, bool>> shadowedCache_;
+  bool lastShadowed_ = false;
   FrameOptions lastOptions_;
   int framesRendered_ = 0;
   int captureFrame_ = 0;

@@ -13,12 +13,13 @@
 #include "lighting/lighting_pass.hpp"
 #include "post/fxaa_pass.hpp"
 #include "post/post_pass.hpp"
+#include "shadows/shadow_pass.hpp"
 
 namespace pbr {
 
 // What lives as long as the scene, whatever the frame size: the program cache (every pass's permutations, the
 // cluster passes' too), the uploaded meshes, textures and material blocks (inside the G-buffer pass), the light
-// buffer, the IBL maps precomputed from the scene's environment, and the passes that hold no per-size state.
+// buffer, the shadow atlas, the IBL maps precomputed from the scene's environment, and the passes that hold no per-size state.
 // Built once per scene; a resize does not touch it.
 struct SceneResources {
   // Throws what the IBL precomputation throws (an unusable .hdr, named). With a profiler the precomputation is
@@ -30,6 +31,7 @@ struct SceneResources {
   LightBuffer lights;
   std::unique_ptr<IblMaps> ibl;  // null without an environment
   LightingPass lighting;
+  ShadowPass shadows;  // allocates its atlas on the first shadowed frame
   PostPass post;
   FxaaPass fxaa;
   ClusterDebugPass clusterDebug;

@@ -113,6 +113,7 @@ TEST_CASE("cli help: each default the help states is the value the code starts f
       {"reference",
        {{"--threads", std::to_string(reference.threads)},
         {"--geometry", pbr::reference::toString(reference.geometry)},
+        {"--shadows", pbr::toString(pbr::ShadowMode::Auto)},  // the command's, as pbr render's; the library's is none
         {"--variant", pbr::reference::toString(reference.forms)}}},
   };
   // The sweep's --max-seconds default is a whole number of seconds, as the comparison above assumes.

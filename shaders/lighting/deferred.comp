@@ -25,6 +25,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #endif
 #include "../ibl/ibl_sample.glsl"
 #endif
+#if SHADOWS
+// Lights with shadow views are shaded with their visibility (shaders/shadows/shadow_sample.glsl); both culling
+// paths look it up for the same light and point, so their frames stay identical.
+#include "../shadows/shadow_sample.glsl"
+#endif
 #if CLUSTERED
 #include "clusters.glsl"
 layout(std430, binding = CLUSTER_SSBO) readonly buffer Headers { ClusterHeader headers[]; };
@@ -90,6 +95,7 @@ void visitLight(Surface s, uint k) {
   vec4 cone = spotCones[index];
 #endif
 #else
+  uint index = k;
   PointLight light = windowLights[k - gWindowStart];
 #if SPOT_LIGHTS
   vec4 cone = windowCones[k - gWindowStart];
@@ -98,21 +104,42 @@ void visitLight(Surface s, uint k) {
 #if !SPOT_LIGHTS
   const vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
+#if SHADOWS
+  vec3 c = shadeLight(s, light, cone);
+  uint entry = lightShadow[index];
+  if (entry != 0u && c.r + c.g + c.b > 0.0) {
+    float d2;
+    vec3 L = directionToLight(s.position, s.normal, light, d2);
+    c *= lightShadowVisibility(entry, light.positionRadius.xyz, s.position, s.normal, L);
+  }
+  gColor += c;
+#else
   gColor += shadeLight(s, light, cone);
+#endif
 #if COUNT_PAIRS
   gContributing += contributes(s, light, cone) ? 1u : 0u;
 #endif
 }
 
 // Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
-// directional lights, added in their order.
+// directional lights (shadowed where they cast), added in their order.
 vec3 shadeEnvironment(Surface s) {
 #if IBL
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
 #else
   vec3 color = shadeAmbient(s);
 #endif
-  for (uint i = 0u; i < directionalCount.x; ++i) color += shadeDirectional(s, directionalLights[i]);
+  for (uint i = 0u; i < directionalCount.x; ++i) {
+#if SHADOWS
+    vec3 c = shadeDirectional(s, directionalLights[i]);
+    if (directionalShadow[i].x != 0u && c.r + c.g + c.b > 0.0) {
+      c *= directionalShadowVisibility(i, s.viewDepth, s.position, s.normal, directionalLights[i].toLight.xyz);
+    }
+    color += c;
+#else
+    color += shadeDirectional(s, directionalLights[i]);
+#endif
+  }
   return color;
 }
 

@@ -1,0 +1,34 @@
+#pragma once
+#include <array>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/mesh.hpp"
+
+namespace pbr {
+
+// An axis-aligned box in world space; empty when min > max.
+struct WorldBounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  bool empty() const { return min.x > max.x; }
+  void add(const glm::vec3& p);
+  void add(const WorldBounds& b);
+};
+
+// The world box of a mesh's vertices under `transform`.
+WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform);
+
+// The planes (a.x + b.y + c.z + d >= 0 inside) of the clip-space frustum of `m`: x and y in [-w, w], z in [0, w]
+// (glClipControl's zero-to-one range, either depth direction) (Gribb & Hartmann 2001, "Fast Extraction of Viewing
+// Frustum Planes from the World-View-Projection Matrix").
+using FrustumPlanes = std::array<glm::vec4, 6>;
+FrustumPlanes frustumPlanes(const glm::mat4& m);
+
+// True when the box lies wholly outside one of the planes: nothing in it can be in the frustum. Conservative: a box
+// near a corner may pass without meeting the frustum.
+bool outsideFrustum(const FrustumPlanes& planes, const WorldBounds& box);
+
+}  // namespace pbr

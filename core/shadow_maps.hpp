@@ -1,0 +1,84 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/binding_table.hpp"
+#include "core/gl.hpp"
+#include "core/scene.hpp"
+
+namespace pbr {
+
+// Shadow maps as shaders sample them (shaders/shadows/shadow_sample.glsl): one depth atlas with a comparison
+// sampler, the views rendered into it, and per light the views it owns. The contract between the pass that renders
+// the maps (shadows/) and the pass that reads them (lighting/), neither of which knows the other. Handles only: the
+// maps belong to their maker.
+struct ShadowMaps {
+  GLuint atlas = 0, atlasSampler = 0;  // DEPTH_COMPONENT32F, reversed Z (1 nearest the light), compare GEQUAL
+  GLuint views = 0;                    // storage buffer: ShadowHeader then ShadowView[]
+  GLuint lightViews = 0;               // storage buffer: per light-buffer index, its first view (see below)
+};
+
+// std430 mirror of `ShadowView` in shaders/shadows/shadow_sample.glsl: one square of the atlas, rendered from a
+// light (a cube face, a spot light's cone, a cascade of a directional light).
+struct GpuShadowView {
+  glm::mat4 viewProjection;  // world -> the light's clip space, reversed Z
+  glm::vec4 rect;            // atlas UV of the square: offset xy, size zw; size 0: not rendered, everything lit
+  // x: world size of a texel, at unit distance along the view axis (perspective) or everywhere (orthographic);
+  // y: 1 perspective, 0 orthographic
+  glm::vec4 params;
+};
+static_assert(sizeof(GpuShadowView) == 96, "GpuShadowView must match its std430 layout");
+
+// std430 mirror of the header of `ShadowViews` in shaders/shadows/shadow_sample.glsl.
+struct GpuShadowHeader {
+  glm::uvec4 directional[kMaxDirectionalLights];  // per directional light: x first view + 1 (0: none), y cascades
+  glm::vec4 cascadeEnds;                          // view depth where each cascade ends
+  glm::vec4 atlas;                                // x size in texels, y its inverse
+};
+static_assert(sizeof(GpuShadowHeader) == 16 * kMaxDirectionalLights + 32, "GpuShadowHeader: std430");
+
+// One square of the atlas to render casters into: the light's view-projection and the square, in texels.
+struct ShadowCasterView {
+  glm::mat4 viewProjection;
+  glm::ivec4 viewport;  // x, y, width, height
+};
+
+// A point or spot light's entry in `lightViews`: 0 without shadows, else its first view + 1, with kCubeShadow set
+// when it owns six cube faces (+X, -X, +Y, -Y, +Z, -Z) rather than one perspective view.
+constexpr uint32_t kCubeShadow = 0x80000000u;
+
+// Where the lighting pass reads them (part of lightingBindingDefines): clear of the lighting module's, the frame
+// block's and the IBL maps' points.
+constexpr BindingPoint kShadowAtlasUnit{"SHADOW_ATLAS_UNIT", BindingKind::TextureUnit, 11};
+constexpr BindingPoint kShadowViewSsbo{"SHADOW_VIEW_SSBO", BindingKind::StorageBuffer, 15};
+constexpr BindingPoint kLightShadowSsbo{"LIGHT_SHADOW_SSBO", BindingKind::StorageBuffer, 16};
+
+// How a shadow map is sampled (the lighting pass's SHADOW_FILTER_* permutations): one comparison at the nearest
+// texel; a 3x3 grid of bilinear comparisons one texel apart (a tent over 4x4 texels); 16 bilinear comparisons on a
+// Poisson disc of radius 1.5 texels.
+enum class ShadowFilter { Hard, Pcf3x3, Poisson16 };
+// "hard", "pcf3x3", "poisson16"; throws std::invalid_argument naming the choices otherwise.
+ShadowFilter parseShadowFilter(const std::string& name);
+const char* toString(ShadowFilter filter);
+// The define that selects it: SHADOW_FILTER_HARD, SHADOW_FILTER_PCF3X3 or SHADOW_FILTER_POISSON16.
+const char* shadowFilterDefine(ShadowFilter filter);
+
+// What a frame's shadows are made with: which lights cast, how the maps are sampled, and the atlas's side (a power
+// of two; 4096 holds 64 MiB).
+constexpr int kDefaultShadowAtlas = 4096;
+constexpr int kMinShadowAtlas = 256;
+constexpr int kMaxShadowAtlas = 16384;
+struct ShadowSettings {
+  ShadowMode mode = ShadowMode::Auto;
+  ShadowFilter filter = ShadowFilter::Pcf3x3;
+  int atlasSize = kDefaultShadowAtlas;
+};
+
+// Binds the maps where shadow_sample.glsl reads them.
+void bindShadowMaps(const ShadowMaps& maps);
+
+}  // namespace pbr

@@ -1,0 +1,74 @@
+#include "shadows/shadow_pass.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+namespace pbr {
+
+namespace {
+
+// A buffer of at least `bytes` (never empty: a bound storage buffer must exist), reallocated only to grow.
+void ensureBuffer(std::unique_ptr<Buffer>& buffer, const char* label, size_t bytes) {
+  bytes = std::max<size_t>(bytes, 16);
+  if (!buffer || buffer->size() < bytes) buffer = std::make_unique<Buffer>(label, bytes);
+}
+
+}  // namespace
+
+ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {
+  // Reversed Z: a receiver is lit where its depth is at least the nearest caster's.
+  glSamplerParameteri(sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(sampler_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+}
+
+void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters) {
+  const ShadowPlan plan = planShadows(inputs);
+  stats_ = plan.stats;
+  if (!atlas_ || atlas_->width() != inputs.atlasSize) {
+    framebuffer_.reset();
+    atlas_.reset();
+    atlas_ = std::make_unique<Texture>("shadows.atlas", GL_DEPTH_COMPONENT32F, inputs.atlasSize, inputs.atlasSize);
+    framebuffer_ = std::make_unique<Framebuffer>("shadows.framebuffer");
+    framebuffer_->attach(GL_DEPTH_ATTACHMENT, *atlas_);
+    glNamedFramebufferDrawBuffer(framebuffer_->id(), GL_NONE);
+    framebuffer_->checkComplete();
+  }
+
+  std::vector<unsigned char> bytes(sizeof(GpuShadowHeader) + plan.views.size() * sizeof(GpuShadowView));
+  std::memcpy(bytes.data(), &plan.header, sizeof plan.header);
+  const float scale = 1.0f / float(inputs.atlasSize);
+  std::vector<ShadowCasterView> casterViews;
+  for (size_t i = 0; i < plan.views.size(); ++i) {
+    const ShadowViewPlan& v = plan.views[i];
+    const GpuShadowView gpu{v.viewProjection, glm::vec4(glm::vec2(v.origin) * scale, glm::vec2(float(v.size) * scale)),
+                            glm::vec4(v.texelWorld, v.perspective ? 1.0f : 0.0f, 0.0f, 0.0f)};
+    std::memcpy(bytes.data() + sizeof(GpuShadowHeader) + i * sizeof(GpuShadowView), &gpu, sizeof gpu);
+    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size)});
+  }
+  ensureBuffer(views_, "shadows.views", bytes.size());
+  views_->upload(bytes.data(), bytes.size());
+  ensureBuffer(lightViews_, "shadows.lightViews", plan.lightViews.size() * sizeof(uint32_t));
+  if (!plan.lightViews.empty()) lightViews_->upload(plan.lightViews.data(), plan.lightViews.size() * sizeof(uint32_t));
+
+  // Each square is cleared to the far depth (0) before its casters are drawn; the rest of the atlas is never read.
+  const float far = 0.0f;
+  glEnable(GL_SCISSOR_TEST);
+  for (const ShadowCasterView& v : casterViews) {
+    glScissor(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
+    glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  if (!casterViews.empty()) drawCasters(framebuffer_->id(), casterViews);
+}
+
+ShadowMaps ShadowPass::maps() const {
+  return {atlas_ ? atlas_->id() : 0, sampler_.id(), views_ ? views_->id() : 0, lightViews_ ? lightViews_->id() : 0};
+}
+
+size_t ShadowPass::bytes() const {
+  return (atlas_ ? shadowAtlasBytes(atlas_->width()) : 0) + (views_ ? views_->size() : 0) +
+         (lightViews_ ? lightViews_->size() : 0);
+}
+
+}  // namespace pbr

@@ -1,0 +1,38 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/gl_objects.hpp"
+#include "core/shadow_maps.hpp"
+#include "shadows/shadow_plan.hpp"
+
+namespace pbr {
+
+// Draws the scene's casters' depth into `framebuffer`, once per view: the renderer hands in the geometry pass's
+// depth drawing, so that this pass knows no other.
+using DrawShadowCasters = std::function<void(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
+
+// The frame's shadow maps: plans them (planShadows), renders the planned squares into one depth atlas and uploads
+// what the lighting pass reads (ShadowMaps). The atlas is allocated on the first shadowed frame, at the size the
+// inputs ask, and again only when that size changes: a scene that shadows nothing never allocates one.
+class ShadowPass {
+ public:
+  ShadowPass();
+  void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters);
+  // Valid after render.
+  ShadowMaps maps() const;
+  const ShadowStats& stats() const { return stats_; }
+  // GPU bytes held: the atlas and the two buffers.
+  size_t bytes() const;
+
+ private:
+  std::unique_ptr<Texture> atlas_;
+  std::unique_ptr<Framebuffer> framebuffer_;
+  Sampler sampler_;
+  std::unique_ptr<Buffer> views_;
+  std::unique_ptr<Buffer> lightViews_;
+  ShadowStats stats_;
+};
+
+}  // namespace pbr

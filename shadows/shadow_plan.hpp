@@ -1,0 +1,77 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/bounds.hpp"
+#include "core/camera.hpp"
+#include "core/scene.hpp"
+#include "core/shadow_maps.hpp"
+
+namespace pbr {
+
+// What a frame's shadows are planned from: the camera, the frame's height, the lights and the receivers' bounds.
+struct ShadowInputs {
+  const Camera& camera;
+  float aspect;
+  int frameHeight;  // pixels: a light's size on screen sets its maps' resolution
+  const std::vector<PointLight>& lights;       // scene order
+  const std::vector<uint32_t>& bufferOrder;    // per light-buffer index, the scene's index of the light there
+  const std::vector<DirectionalLight>& directional;
+  WorldBounds scene;  // every object's: receivers and casters
+  ShadowMode mode = ShadowMode::Auto;
+  int atlasSize = 4096;
+};
+
+// One square of the atlas, rendered from a light. `size` 0: not rendered, its frustum meets no receiver in view.
+struct ShadowViewPlan {
+  glm::mat4 viewProjection{1.0f};
+  glm::ivec2 origin{0};  // atlas texels
+  int size = 0;
+  float texelWorld = 0.0f;  // GpuShadowView::params.x
+  bool perspective = true;
+};
+
+// What planShadows decided, for `--stats` and the profiler's light statistics.
+struct ShadowStats {
+  uint32_t shadowedLights = 0;   // lights with maps (point, spot and directional)
+  uint32_t viewsRendered = 0;    // cube faces, spot views and cascades drawn this frame
+  uint32_t viewsSkipped = 0;     // of those lights' views, left out: no receiver in view in their frustum
+  uint32_t shrunkLights = 0;     // lights given less than their size on screen asks, the atlas being full
+  uint32_t unshadowedLights = 0; // casting lights that got no map at all, the atlas being full at the least size
+  uint64_t texelsUsed = 0;       // atlas texels of the rendered views
+};
+
+// The frame's shadow views and, per light, which views it owns: the GPU buffers' contents (GpuShadowView,
+// GpuShadowHeader, kCubeShadow entries) and the squares to render.
+struct ShadowPlan {
+  std::vector<ShadowViewPlan> views;
+  std::vector<uint32_t> lightViews;  // per light-buffer index
+  GpuShadowHeader header{};
+  ShadowStats stats;
+  bool any() const { return stats.shadowedLights > 0; }
+};
+
+// Least and largest side of a light's square, in texels; cascades take a quarter of the atlas's side each.
+constexpr int kMinShadowView = 16;
+constexpr int kMaxShadowView = 1024;
+constexpr int kCascades = 4;
+
+// Plans a frame's shadows (Olsson et al. 2014, "Efficient Virtual Shadow Maps for Many Lights", in outline): each
+// casting light's resolution from its size on screen; cube faces and spot views whose frustum, bounded by the
+// light's radius, meets no receiver inside the camera's frustum are not rendered; directional lights get kCascades
+// texel-snapped cascades over the view depths that hold the scene. When the atlas cannot hold every square, the
+// least important lights (smallest on screen) are halved first; a light left without a square is counted, never
+// silently dropped.
+ShadowPlan planShadows(const ShadowInputs& inputs);
+
+// Whether any light of the frame casts under `mode`.
+bool anyShadowCaster(const std::vector<PointLight>& lights, const std::vector<DirectionalLight>& directional,
+                     ShadowMode mode);
+
+// Bytes of an atlas of `size` x `size` 32-bit depth texels.
+inline uint64_t shadowAtlasBytes(int size) { return uint64_t(size) * uint64_t(size) * 4u; }
+
+}  // namespace pbr

@@ -1,0 +1,396 @@
+// Shadow maps (shadows/, shaders/shadows/shadow_sample.glsl) against geometry computed here: a box's shadow under a
+// sun against its analytic projection, acne and peter-panning at a low sun, alpha-mask cut-outs, lights that do not
+// cast, and clustered against brute force with shadows on.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "reference/raycast.hpp"
+#include "reference/reference_renderer.hpp"
+#include "renderer/offscreen.hpp"
+#include "shadows/shadow_plan.hpp"
+#include "tests/gl_test_context.hpp"
+
+using glm::dvec3;
+
+namespace {
+
+constexpr double kFloorSize = 40.0;
+
+pbr::Material grey(float base) {
+  pbr::Material m;
+  m.baseColor = glm::vec3(base);
+  m.roughness = 0.8f;
+  return m;
+}
+
+// A floor under a unit box standing on it at the origin, seen from straight above the point (cameraX, 0, 0).
+pbr::Scene boxScene(const glm::vec3& sunDirection, float cameraHeight, float cameraX = 0.0f) {
+  pbr::Scene s;
+  s.name = "shadow box";
+  s.camera.position = {cameraX, cameraHeight, 0.0f};
+  s.camera.target = {cameraX, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.fovYDeg = 45.0f;
+  s.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(float(kFloorSize))), grey(0.6f));
+  s.addShape(pbr::Shape::Box, glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f}), grey(0.8f));
+  s.directionalLights = {{glm::normalize(sunDirection), glm::vec3(1.0f), 2.0f}};
+  return s;
+}
+
+// Whether the ray from `p` along `d` meets the box [lo, hi] (slab test).
+bool rayMeetsBox(const dvec3& p, const dvec3& d, const dvec3& lo, const dvec3& hi) {
+  double t0 = 0.0, t1 = 1e30;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(d[a]) < 1e-15) {
+      if (p[a] < lo[a] || p[a] > hi[a]) return false;
+      continue;
+    }
+    double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+// The floor point a pixel sees, or nothing where it sees the box (or nothing).
+std::optional<dvec3> floorPoint(const pbr::Scene& scene, glm::ivec2 size, int x, int y) {
+  const pbr::reference::Ray ray = pbr::reference::cameraRay(scene.camera, size.x, size.y, x, y);
+  if (rayMeetsBox(ray.origin, ray.direction, {-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5})) return std::nullopt;
+  if (ray.direction.y >= 0.0) return std::nullopt;
+  const double t = -ray.origin.y / ray.direction.y;
+  return ray.origin + ray.direction * t;
+}
+
+// Analytic: the unit box on the floor shadows floor point p from a sun travelling along d.
+bool inBoxShadow(const dvec3& p, const dvec3& d) {
+  return rayMeetsBox(p + dvec3(0.0, 1e-9, 0.0), -d, {-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5});
+}
+
+// Per pixel, shadowed radiance over unshadowed (green channel), -1 where the unshadowed frame is dark.
+std::vector<double> visibilityRatio(const pbr::RenderedFrames& lit, const pbr::RenderedFrames& plain) {
+  std::vector<double> v(plain.hdr.pixels.size() / 4, -1.0);
+  for (size_t i = 0; i < v.size(); ++i) {
+    const double base = plain.hdr.pixels[i * 4 + 1];
+    if (base > 1e-6) v[i] = lit.hdr.pixels[i * 4 + 1] / base;
+  }
+  return v;
+}
+
+// The largest texel, in world units, of the cascades planned for the scene's sun at `size`.
+double largestCascadeTexel(const pbr::Scene& scene, glm::ivec2 size, const pbr::WorldBounds& bounds) {
+  const std::vector<uint32_t> order;
+  const pbr::ShadowPlan plan = pbr::planShadows({scene.camera, float(size.x) / float(size.y), size.y, scene.lights,
+                                                 order, scene.directionalLights, bounds});
+  double texel = 0.0;
+  for (const pbr::ShadowViewPlan& v : plan.views) texel = std::max(texel, double(v.texelWorld));
+  REQUIRE(texel > 0.0);
+  return texel;
+}
+
+pbr::WorldBounds boxSceneBounds() {
+  pbr::WorldBounds b;
+  b.add(glm::vec3(-kFloorSize / 2, 0.0f, -kFloorSize / 2));
+  b.add(glm::vec3(kFloorSize / 2, 1.0f, kFloorSize / 2));
+  return b;
+}
+
+struct OutlineResult {
+  int lit = 0, shadowed = 0, wrong = 0;  // pixels compared: lit and shadowed as the geometry says; misclassified
+};
+
+// Compares a sun-shadowed box frame with the analytic shadow, skipping floor points within `band` (world units)
+// of the outline: there the filter's penumbra and the map's texels may decide either way.
+OutlineResult compareOutline(const pbr::Scene& scene, glm::ivec2 size, const std::vector<double>& visibility,
+                             double band) {
+  const dvec3 d = glm::normalize(dvec3(scene.directionalLights[0].direction));
+  OutlineResult r;
+  for (int y = 0; y < size.y; ++y) {
+    for (int x = 0; x < size.x; ++x) {
+      const std::optional<dvec3> p = floorPoint(scene, size, x, y);
+      const double v = visibility[size_t(y) * size.x + x];
+      if (!p || v < 0.0) continue;
+      const bool shadowed = inBoxShadow(*p, d);
+      bool nearOutline = false;
+      for (int k = 0; k < 16 && !nearOutline; ++k) {
+        const double a = k * 3.14159265358979 / 8.0;
+        nearOutline = inBoxShadow(*p + band * dvec3(std::cos(a), 0.0, std::sin(a)), d) != shadowed;
+      }
+      if (nearOutline) continue;
+      (shadowed ? r.shadowed : r.lit) += 1;
+      if ((v < 0.5) != shadowed) ++r.wrong;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("shadows: a box's shadow under a sun is its analytic projection within 1.5 texels") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{192, 192};
+  const glm::vec3 sun{-0.45f, -1.0f, 0.3f};
+  const pbr::Scene scene = boxScene(sun, 6.0f);
+  pbr::FrameOptions shadowed, plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  for (const pbr::ShadowFilter filter : {pbr::ShadowFilter::Hard, pbr::ShadowFilter::Pcf3x3}) {
+    CAPTURE(std::string(pbr::toString(filter)));
+    shadowed.shadows.filter = filter;
+    const pbr::RenderedFrames lit = pbr::renderOffscreen(shaders, scene, size, shadowed, 1);
+    const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+    CHECK(lit.stats.shadows.shadowedLights == 1);
+    const double texel = largestCascadeTexel(scene, size, boxSceneBounds());
+    // 1.5 texels along the light's image plane stretch by 1 / cos(theta) on the floor.
+    const double cosTheta = -glm::normalize(dvec3(sun)).y;
+    const OutlineResult r = compareOutline(scene, size, visibilityRatio(lit, none), 1.5 * texel / cosTheta);
+    MESSAGE(std::string(pbr::toString(filter)) << ": texel " << texel << " m, " << r.lit << " lit and " << r.shadowed
+                                  << " shadowed pixels compared, " << r.wrong << " misclassified");
+    CHECK(r.shadowed > 500);
+    CHECK(r.lit > 5000);
+    CHECK(r.wrong == 0);
+  }
+}
+
+TEST_CASE("shadows: a low sun leaves no acne on the lit floor, and the box's shadow starts at its base") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{160, 160};
+  // 80 degrees from the zenith: the floor's depth changes by tan(80) = 5.7 texels per texel in the map.
+  const double angle = 80.0 * 3.14159265358979 / 180.0;
+  const glm::vec3 sun{float(std::sin(angle)), -float(std::cos(angle)), 0.0f};
+  // Seen from above x = 2.5: the floor beside the face the light leaves is in view, not behind the box's top.
+  const pbr::Scene scene = boxScene(sun, 7.0f, 2.5f);
+  pbr::FrameOptions plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+  for (const pbr::ShadowFilter filter :
+       {pbr::ShadowFilter::Hard, pbr::ShadowFilter::Pcf3x3, pbr::ShadowFilter::Poisson16}) {
+    CAPTURE(std::string(pbr::toString(filter)));
+    pbr::FrameOptions options;
+    options.shadows.filter = filter;
+    const std::vector<double> v = visibilityRatio(pbr::renderOffscreen(shaders, scene, size, options, 1), none);
+    const double texel = largestCascadeTexel(scene, size, boxSceneBounds());
+    const dvec3 d = glm::normalize(dvec3(sun));
+    int lit = 0, dark = 0, gapChecked = 0, gapLit = 0;
+    for (int y = 0; y < size.y; ++y) {
+      for (int x = 0; x < size.x; ++x) {
+        const std::optional<dvec3> p = floorPoint(scene, size, x, y);
+        const double vis = v[size_t(y) * size.x + x];
+        if (!p || vis < 0.0) continue;
+        // The shadow falls along +x from the box's face at x = 0.5; its sides are at z = +-0.5.
+        const bool besideShadow = std::abs(std::abs(p->z) - 0.5) < 4.0 * texel && p->x > 0.0;
+        if (!inBoxShadow(*p, d) && !besideShadow && std::abs(p->x) > 0.5 + 4.0 * texel) {
+          ++lit;
+          if (vis < 0.9) ++dark;
+        }
+        // Floor just past the face the light leaves (2 texels on, in the middle of the face): in shadow.
+        if (p->x > 0.5 + 2.0 * texel && p->x < 0.5 + 6.0 * texel && std::abs(p->z) < 0.3) {
+          ++gapChecked;
+          if (vis >= 0.5) ++gapLit;
+        }
+      }
+    }
+    MESSAGE(std::string(pbr::toString(filter)) << ": " << dark << " of " << lit << " lit floor pixels below 0.9; "
+                                               << gapLit << " of " << gapChecked << " pixels 2-6 texels past the base lit");
+    CHECK(lit > 10000);
+    CHECK(dark == 0);
+    CHECK(gapChecked > 4);
+    CHECK(gapLit == 0);
+  }
+}
+
+TEST_CASE("shadows: an alpha-masked caster casts its cut-out") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{128, 128};
+  pbr::Scene scene;
+  scene.camera.position = {0.0f, 8.0f, 0.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.up = {0.0f, 0.0f, -1.0f};
+  scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(30.0f)), grey(0.6f));
+  // A 2 x 2 card at height 2 whose texture is transparent on one half (u < 0.5) and opaque on the other.
+  pbr::TextureData card;
+  card.name = "half-alpha card";
+  card.width = card.height = 8;
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      const uint8_t alpha = x < 4 ? 0 : 255;
+      card.rgba.insert(card.rgba.end(), {200, 200, 200, alpha});
+    }
+  }
+  card.srgb = true;
+  card.minFilter = card.magFilter = 0x2600;  // GL_NEAREST: the halves stay sharp
+  scene.textures.push_back(card);
+  pbr::Material masked = grey(0.8f);
+  masked.baseColorTexture = 0;
+  masked.alphaMode = pbr::AlphaMode::Mask;
+  masked.doubleSided = true;
+  const glm::mat4 cardTransform = glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, 0.0f}), glm::vec3(2.0f));
+  scene.addShape(pbr::Shape::Plane, cardTransform, masked);
+  // A sun at 45 degrees along +x: the card's shadow falls on x in [1, 3], clear of the card as seen from above.
+  scene.directionalLights = {{glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)), glm::vec3(1.0f), 2.0f}};
+
+  pbr::Scene opaque = scene;
+  opaque.objects.back().material.alphaMode = pbr::AlphaMode::Opaque;
+  pbr::FrameOptions options, plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+  const std::vector<double> cut = visibilityRatio(pbr::renderOffscreen(shaders, scene, size, options, 1), none);
+  const std::vector<double> full = visibilityRatio(pbr::renderOffscreen(shaders, opaque, size, options, 1), none);
+  // Mean visibility over the two halves of the shadow's footprint, x in [1.4, 1.9] and [2.1, 2.6], |z| < 0.8 (the
+  // card hides the floor up to x = 1.33 from the camera).
+  auto halves = [&](const std::vector<double>& v) {
+    double sum[2] = {0, 0};
+    int count[2] = {0, 0};
+    for (int y = 0; y < size.y; ++y) {
+      for (int x = 0; x < size.x; ++x) {
+        const pbr::reference::Ray ray = pbr::reference::cameraRay(scene.camera, size.x, size.y, x, y);
+        const dvec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+        const double vis = v[size_t(y) * size.x + x];
+        if (std::abs(p.z) > 0.8 || vis < 0.0) continue;
+        for (int h = 0; h < 2; ++h) {
+          if (p.x > 1.4 + 0.7 * h && p.x < 1.9 + 0.7 * h) {
+            sum[h] += vis;
+            ++count[h];
+          }
+        }
+      }
+    }
+    REQUIRE(count[0] > 20);
+    REQUIRE(count[1] > 20);
+    return std::pair<double, double>(sum[0] / count[0], sum[1] / count[1]);
+  };
+  const auto [cutA, cutB] = halves(cut);
+  const auto [fullA, fullB] = halves(full);
+  MESSAGE("masked card: " << cutA << " / " << cutB << "; opaque card: " << fullA << " / " << fullB);
+  CHECK(fullA < 0.01);
+  CHECK(fullB < 0.01);
+  // One half of the cut-out's shadow is lit, the other as dark as the opaque card's.
+  CHECK(std::min(cutA, cutB) < 0.01);
+  CHECK(std::max(cutA, cutB) > 0.99);
+}
+
+TEST_CASE("shadows: lights that do not cast leave the frame as without shadows, and --shadows on makes them cast") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{96, 96};
+  pbr::Scene scene = boxScene({-0.3f, -1.0f, 0.2f}, 6.0f);
+  scene.directionalLights[0].castsShadows = false;
+  pbr::PointLight point;
+  point.position = {1.5f, 2.0f, 0.5f};
+  point.radius = 10.0f;
+  point.luminousPower = 300.0f;
+  scene.lights = {point};  // a JSON point light: castsShadows false unless asked
+  pbr::FrameOptions automatic, none, on;
+  none.shadows.mode = pbr::ShadowMode::None;
+  on.shadows.mode = pbr::ShadowMode::On;
+  const pbr::RenderedFrames a = pbr::renderOffscreen(shaders, scene, size, automatic, 1);
+  const pbr::RenderedFrames n = pbr::renderOffscreen(shaders, scene, size, none, 1);
+  const pbr::RenderedFrames o = pbr::renderOffscreen(shaders, scene, size, on, 1);
+  CHECK(a.hdr.pixels == n.hdr.pixels);
+  CHECK(a.stats.shadows.shadowedLights == 0);
+  CHECK(o.stats.shadows.shadowedLights == 2);
+  CHECK(o.hdr.pixels != n.hdr.pixels);
+}
+
+TEST_CASE("shadows: clustered frames equal brute force with point, spot and directional lights casting") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{128, 72};
+  pbr::Scene scene = boxScene({-0.4f, -1.0f, -0.3f}, 5.0f);
+  scene.camera.position = {2.0f, 4.0f, 5.0f};
+  scene.camera.up = {0.0f, 1.0f, 0.0f};
+  scene.addShape(pbr::Shape::Sphere, glm::translate(glm::mat4(1.0f), {-1.5f, 1.0f, 0.5f}), grey(0.5f));
+  for (int i = 0; i < 12; ++i) {
+    pbr::PointLight l;
+    const float a = float(i) * 0.52f;
+    l.position = {2.5f * std::cos(a), 1.0f + 0.2f * float(i % 4), 2.5f * std::sin(a)};
+    l.radius = 4.0f + float(i % 3);
+    l.luminousPower = 150.0f;
+    l.color = {0.4f + 0.05f * float(i), 0.8f, 1.0f - 0.05f * float(i)};
+    l.castsShadows = i % 3 != 2;
+    if (i % 2 == 1) {
+      l.spot = pbr::SpotCone{glm::normalize(glm::vec3(0, 0.5f, 0) - l.position), 0.2f, 0.6f + 0.1f * float(i % 5)};
+    }
+    scene.lights.push_back(l);
+  }
+  for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+    CAPTURE(std::string(pbr::toString(model)));
+    pbr::FrameOptions clustered, brute;
+    clustered.model = brute.model = model;
+    brute.culling = pbr::Culling::None;
+    const pbr::RenderedFrames c = pbr::renderOffscreen(shaders, scene, size, clustered, 2);
+    const pbr::RenderedFrames b = pbr::renderOffscreen(shaders, scene, size, brute, 1);
+    CHECK(c.stats.shadows.shadowedLights == 9);
+    CHECK(c.hdr.pixels == b.hdr.pixels);
+    CHECK(c.ldr.pixels == b.ldr.pixels);
+  }
+}
+
+TEST_CASE("shadows: a spot and a point light over a sphere agree with the reference's ray-traced visibility") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{160, 90};
+  pbr::Scene base;
+  base.camera.position = {0.0f, 4.0f, 6.0f};
+  base.camera.target = {0.0f, 0.5f, 0.0f};
+  base.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)), grey(0.6f));
+  base.addShape(pbr::Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), {0.3f, 1.2f, 0.0f}), glm::vec3(1.2f)),
+                grey(0.7f));
+  pbr::PointLight point;
+  point.position = {-0.8f, 3.0f, 0.6f};
+  point.radius = 12.0f;
+  point.luminousPower = 400.0f;
+  point.castsShadows = true;
+  pbr::PointLight spot = point;
+  spot.position = {1.8f, 3.2f, -1.0f};
+  spot.spot = pbr::SpotCone{glm::normalize(glm::vec3(-0.6f, -1.0f, 0.6f)), 0.3f, 0.7f};
+  for (const pbr::PointLight& light : {point, spot}) {
+    CAPTURE(light.spot.has_value());
+    pbr::Scene scene = base;
+    scene.lights = {light};
+    pbr::FrameOptions options, plain;
+    plain.shadows.mode = pbr::ShadowMode::None;
+    const std::vector<double> gpu = visibilityRatio(pbr::renderOffscreen(shaders, scene, size, options, 2),
+                                                    pbr::renderOffscreen(shaders, scene, size, plain, 2));
+    pbr::reference::ReferenceOptions referenceOptions;
+    referenceOptions.shadows = pbr::ShadowMode::Auto;
+    const pbr::reference::ReferenceFrame expected =
+        pbr::reference::renderReference(scene, size.x, size.y, referenceOptions);
+    REQUIRE(expected.visibility.size() == gpu.size());
+    // The floor's pixels, outside a band of 2 pixels around the reference's shadow edges (the penumbra of the
+    // filter and the map's texels, a few millimetres here, and the rasterizer's and the ray's different rounding).
+    int compared = 0, agree = 0, shadowed = 0;
+    for (int y = 2; y < size.y - 2; ++y) {
+      for (int x = 2; x < size.x - 2; ++x) {
+        const size_t i = size_t(y) * size.x + x;
+        if (expected.objectIds[i] != 0 || expected.visibility[i] < 0.0f || gpu[i] < 0.0) continue;
+        bool edge = false;
+        for (int dy = -2; dy <= 2; ++dy) {
+          for (int dx = -2; dx <= 2; ++dx) {
+            const size_t j = size_t(y + dy) * size.x + (x + dx);
+            edge = edge || (expected.visibility[j] < 0.5f) != (expected.visibility[i] < 0.5f);
+          }
+        }
+        if (edge) continue;
+        ++compared;
+        shadowed += expected.visibility[i] < 0.5f ? 1 : 0;
+        agree += (gpu[i] < 0.5) == (expected.visibility[i] < 0.5f) ? 1 : 0;
+      }
+    }
+    MESSAGE(std::string(light.spot ? "spot" : "point") << ": " << agree << " of " << compared << " floor pixels agree, "
+                                             << shadowed << " shadowed in the reference");
+    CHECK(compared > 3000);
+    CHECK(shadowed > 100);
+    CHECK(double(agree) >= 0.99 * compared);
+  }
+}
