@@ -23,19 +23,22 @@ OptionSpec viewAngleOption() {
           "as the scene file places it, 40"};
 }
 
-std::vector<OptionSpec> shadowOptions() {
-  const ShadowSettings d;
-  return {
-      {"--shadows", "none|on|auto",
-       "which lights cast shadows: auto as the scene says (glTF lights, JSON spot and directional lights, and those "
-       "with \"shadows\": true), on every light, none", toString(d.mode), ""},
-      {"--shadow-filter", "F",
-       "shadow-map filter: hard (one comparison), pcf3x3 (3x3 bilinear comparisons, a 4x4-texel tent) or poisson16 "
-       "(16 bilinear comparisons on a 1.5-texel disc)", toString(d.filter), ""},
-      {"--shadow-atlas", "SIZE",
-       "side of the shadow atlas in texels, a power of two from 256 to 16384 (4 bytes a texel: 4096 is 64 MiB, "
-       "8192 256 MiB); allocated only when a light casts", std::to_string(d.atlasSize), ""},
-  };
+OptionSpec shadowModeOption() {
+  return {"--shadows", "none|on|auto",
+          "which lights cast shadows: auto as the scene says (glTF lights, JSON spot and directional lights, and "
+          "those with \"shadows\": true), on every light, none", toString(ShadowSettings{}.mode), ""};
+}
+
+OptionSpec shadowFilterOption() {
+  return {"--shadow-filter", "F",
+          "shadow-map filter: hard (one comparison), pcf3x3 (3x3 bilinear comparisons, a 4x4-texel tent) or "
+          "poisson16 (16 bilinear comparisons on a 1.5-texel disc)", toString(ShadowSettings{}.filter), ""};
+}
+
+OptionSpec shadowAtlasOption() {
+  return {"--shadow-atlas", "SIZE",
+          "side of the shadow atlas in texels, a power of two from 256 to 16384 (4 bytes a texel: 4096 is 64 MiB, "
+          "8192 256 MiB); allocated only when a light casts", std::to_string(ShadowSettings{}.atlasSize), ""};
 }
 
 ShadowSettings readShadowSettings(const Args& args) {

@@ -1,6 +1,5 @@
 #pragma once
 #include <string>
-#include <vector>
 
 #include "app/args.hpp"
 #include "core/builtin_scenes.hpp"
@@ -14,8 +13,10 @@ OptionSpec eglPlatformOption();  // --egl-platform auto|surfaceless|device
 OptionSpec lightsOption(const std::string& defaultText);  // --lights N, for one scene
 OptionSpec viewAngleOption();    // --view-angle DEG, fresnel-floor only
 
-// --shadows none|on|auto, --shadow-filter hard|pcf3x3|poisson16, --shadow-atlas SIZE; and what they say.
-std::vector<OptionSpec> shadowOptions();
+OptionSpec shadowModeOption();    // --shadows none|on|auto
+OptionSpec shadowFilterOption();  // --shadow-filter hard|pcf3x3|poisson16
+OptionSpec shadowAtlasOption();   // --shadow-atlas SIZE
+// The three shadow options as settings.
 ShadowSettings readShadowSettings(const Args& args);
 
 // `--lights` and `--view-angle` into the scene parameters, where given.

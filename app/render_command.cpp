@@ -41,9 +41,9 @@ const std::vector<OptionSpec>& renderOptions() {
       viewAngleOption(),
       spotShareOption(),
       {"--culling", "C", "clustered or none (brute force: every light for every pixel)", toString(frame.culling), ""},
-      shadowOptions()[0],
-      shadowOptions()[1],
-      shadowOptions()[2],
+      shadowModeOption(),
+      shadowFilterOption(),
+      shadowAtlasOption(),
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
@@ -132,11 +132,11 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   }
   if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
     const ShadowStats& h = s.shadows;
+    const int atlas = options.shadows.atlasSize;
     std::printf("shadows: %u lights shadowed, %u views rendered, %u skipped (no receiver in view), atlas %dx%d "
                 "(%.0f MiB, %.1f %% used)\n",
-                h.shadowedLights, h.viewsRendered, h.viewsSkipped, options.shadows.atlasSize,
-                options.shadows.atlasSize, double(shadowAtlasBytes(options.shadows.atlasSize)) / (1 << 20),
-                100.0 * double(h.texelsUsed) / double(shadowAtlasBytes(options.shadows.atlasSize) / 4));
+                h.shadowedLights, h.viewsRendered, h.viewsSkipped, atlas, atlas,
+                double(shadowAtlasBytes(atlas)) / (1 << 20), 100.0 * double(h.texelsUsed) / (double(atlas) * atlas));
     if (h.shrunkLights) {
       std::printf("shadows: the atlas is full: %u lights got smaller maps than their size on screen asks "
                   "(--shadow-atlas)\n", h.shrunkLights);

@@ -2,6 +2,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace pbr {
 
@@ -14,6 +15,11 @@ void WorldBounds::add(const WorldBounds& b) {
   if (b.empty()) return;
   add(b.min);
   add(b.max);
+}
+
+bool overlaps(const WorldBounds& a, const WorldBounds& b) {
+  return !a.empty() && !b.empty() && glm::all(glm::lessThanEqual(a.min, b.max)) &&
+         glm::all(glm::lessThanEqual(b.min, a.max));
 }
 
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform) {

@@ -18,6 +18,9 @@ struct WorldBounds {
   void add(const WorldBounds& b);
 };
 
+// Whether two boxes share a point; an empty box meets nothing.
+bool overlaps(const WorldBounds& a, const WorldBounds& b);
+
 // The world box of a mesh's vertices under `transform`.
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform);
 

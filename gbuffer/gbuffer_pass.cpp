@@ -55,6 +55,13 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
   return bytes;
 }
 
+// The defines of the depth permutation a caster draws with (shaders/gbuffer/shadow_depth.*): ALPHA_MASK for an
+// alpha-masked material, and BASE_COLOR_MAP where its alpha comes from a texture.
+ShaderDefines depthPermutation(bool masked, bool maskTexture) {
+  return concat({{"ALPHA_MASK", masked ? "1" : "0"}, {"BASE_COLOR_MAP", maskTexture ? "1" : "0"}},
+                gbufferBindingDefines());
+}
+
 }  // namespace
 
 std::array<int, GBufferPass::kMapCount> GBufferPass::materialMaps(const Material& m) {
@@ -81,11 +88,6 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
           {"OCCLUSION_MAP", flag(m.occlusionTexture >= 0)},
           {"EMISSIVE_MAP", flag(m.emissiveTexture >= 0)},
           {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)}};
-}
-
-ShaderDefines GBufferPass::depthPermutation(const Material& m) {
-  const bool masked = m.alphaMode == AlphaMode::Mask;
-  return {{"ALPHA_MASK", masked ? "1" : "0"}, {"BASE_COLOR_MAP", masked && m.baseColorTexture >= 0 ? "1" : "0"}};
 }
 
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
@@ -117,7 +119,8 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     d.doubleSided = o.material.doubleSided;
     d.mirrored = mirrors(o.transform);
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
-    d.depthDefines = depthPermutation(o.material);
+    d.castsCutOut = o.material.alphaMode == AlphaMode::Mask;
+    d.cutOutTexture = d.castsCutOut && o.material.baseColorTexture >= 0;
     bounds_.add(d.bounds);
     const std::array<int, kMapCount> maps = materialMaps(o.material);
     for (size_t unit = 0; unit < kMapCount; ++unit) {
@@ -186,18 +189,18 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
   // Each draw's depth program, looked up once; the shadow views' matrices are set on each distinct one per view.
   if (depthPrograms_.empty()) {
     for (const Draw& d : draws_) {
-      depthPrograms_.push_back(&cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
-                                                concat(d.depthDefines, gbufferBindingDefines())));
+      const Program* p = &cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
+                                          depthPermutation(d.castsCutOut, d.cutOutTexture));
+      depthPrograms_.push_back(p);
+      if (std::find(distinctDepthPrograms_.begin(), distinctDepthPrograms_.end(), p) == distinctDepthPrograms_.end()) {
+        distinctDepthPrograms_.push_back(p);
+      }
     }
-  }
-  std::vector<const Program*> distinct;
-  for (const Program* p : depthPrograms_) {
-    if (std::find(distinct.begin(), distinct.end(), p) == distinct.end()) distinct.push_back(p);
   }
   size_t drawn = 0;
   for (const ShadowCasterView& v : views) {
     glViewport(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
-    for (const Program* p : distinct) glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
+    for (const Program* p : distinctDepthPrograms_) glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
     const FrustumPlanes planes = frustumPlanes(v.viewProjection);
     const Program* bound = nullptr;
     for (size_t i = 0; i < draws_.size(); ++i) {
@@ -205,7 +208,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
       if (outsideFrustum(planes, d.bounds)) continue;
       if (depthPrograms_[i] != bound) depthPrograms_[i]->use();
       bound = depthPrograms_[i];
-      if (d.depthDefines[1].value == "1") {
+      if (d.cutOutTexture) {
         const GLuint unit = gbuffer_binding::kBaseColorMapUnit.index;
         glBindTextureUnit(unit, d.textures[unit]);
         glBindSampler(unit, d.samplers[unit]);

@@ -29,9 +29,6 @@ class GBufferPass {
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }
 
-  // The defines of the depth permutation a material casts with: ALPHA_MASK, and BASE_COLOR_MAP where masked.
-  static ShaderDefines depthPermutation(const Material& material);
-
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
   // OCCLUSION_MAP, EMISSIVE_MAP and ALPHA_MASK, each 0 or 1.
   static ShaderDefines permutation(const Material& material);
@@ -48,7 +45,8 @@ class GBufferPass {
     std::array<GLuint, kMapCount> textures;  // by texture unit; 0 where the draw samples nothing
     std::array<GLuint, kMapCount> samplers;
     WorldBounds bounds;
-    ShaderDefines depthDefines;
+    bool castsCutOut;    // alpha-masked: discards below its cut-off in the shadow maps too
+    bool cutOutTexture;  // its alpha comes from the base colour map
   };
   // The material's Scene::textures index per texture unit, -1 for none.
   static std::array<int, kMapCount> materialMaps(const Material& material);
@@ -56,6 +54,7 @@ class GBufferPass {
   ProgramCache& cache_;
   std::vector<const Program*> programs_;  // one per permutation the scene uses, owned by the cache
   std::vector<const Program*> depthPrograms_;  // per draw, once shadows are first drawn
+  std::vector<const Program*> distinctDepthPrograms_;
   std::vector<GpuMesh> meshes_;
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;

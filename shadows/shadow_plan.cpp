@@ -22,33 +22,20 @@ constexpr int kBorderTexels = 3;
 // A spot light wider than this (half angle) takes a cube, as one perspective view would stretch its texels.
 constexpr float kMaxSpotViewHalfAngle = 1.0471976f;  // 60 degrees
 
-// False only when every point lies outside one plane: the hull of the points cannot meet the frustum.
-template <size_t N>
-bool mayMeet(const FrustumPlanes& planes, const std::array<glm::vec3, N>& points) {
-  for (const glm::vec4& p : planes) {
-    bool allOutside = true;
-    for (const glm::vec3& q : points) allOutside = allOutside && glm::dot(glm::vec3(p), q) + p.w < 0.0f;
-    if (allOutside) return false;
-  }
-  return true;
+// The box around what a perspective view sees of the light's sphere: the apex and the pyramid's four corners at
+// distance R along the axis.
+WorldBounds viewVolume(const glm::vec3& apex, const glm::vec3& axis, float tanHalf, float R) {
+  glm::vec3 right, up;
+  frameAround(axis, right, up);
+  const glm::vec3 c = apex + axis * R, a = right * (R * tanHalf), b = up * (R * tanHalf);
+  WorldBounds box;
+  for (const glm::vec3& p : {apex, c + a + b, c + a - b, c - a + b, c - a - b}) box.add(p);
+  return box;
 }
 
-template <size_t N>
-bool meetsBounds(const WorldBounds& b, const std::array<glm::vec3, N>& points) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (const glm::vec3& q : points) {
-    lo = glm::min(lo, q);
-    hi = glm::max(hi, q);
-  }
-  return !b.empty() && glm::all(glm::lessThanEqual(lo, b.max)) && glm::all(glm::greaterThanEqual(hi, b.min));
-}
-
-// The pyramid a perspective view sees of the light's sphere: the apex and the four corners at distance R.
-std::array<glm::vec3, 5> viewVolume(const glm::vec3& apex, const glm::vec3& axis, float tanHalf, float R) {
-  const glm::vec3 up = std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  const glm::vec3 right = glm::normalize(glm::cross(axis, up)), upv = glm::cross(right, axis);
-  const glm::vec3 c = apex + axis * R, a = right * (R * tanHalf), b = upv * (R * tanHalf);
-  return {apex, c + a + b, c + a - b, c - a + b, c - a - b};
+// Whether a view's volume may hold a receiver the camera sees: inside the camera's frustum and the scene's bounds.
+bool mayHoldReceiver(const FrustumPlanes& camera, const WorldBounds& scene, const WorldBounds& volume) {
+  return !outsideFrustum(camera, volume) && overlaps(scene, volume);
 }
 
 // A casting light's request: its views' directions, its size and how much it matters.
@@ -112,15 +99,15 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     Request r{spotView ? Request::Spot : Request::Cube, uint32_t(i), importance,
               ceilPow2(importance * (spotView ? 2.0f : 1.0f), kMinShadowView, maxView), 0, {}};
     if (spotView) {
-      const auto volume = viewVolume(l.position, l.spot->direction, std::tan(l.spot->outerAngle), l.radius);
-      r.visible.push_back(mayMeet(cameraPlanes, volume) && meetsBounds(in.scene, volume));
+      r.visible.push_back(mayHoldReceiver(
+          cameraPlanes, in.scene, viewVolume(l.position, l.spot->direction, std::tan(l.spot->outerAngle), l.radius)));
     } else {
       for (const glm::vec3& axis : kFaceAxes) {
-        const auto volume = viewVolume(l.position, axis, 1.0f, l.radius);
         // A wide spot light's faces outside its cone (beyond the face's corner angle, atan(sqrt 2)) see nothing lit.
         const bool inCone = !l.spot || std::acos(std::clamp(glm::dot(axis, l.spot->direction), -1.0f, 1.0f)) <
                                            l.spot->outerAngle + 0.9553166f;
-        r.visible.push_back(inCone && mayMeet(cameraPlanes, volume) && meetsBounds(in.scene, volume));
+        r.visible.push_back(inCone &&
+                            mayHoldReceiver(cameraPlanes, in.scene, viewVolume(l.position, axis, 1.0f, l.radius)));
       }
     }
     requests.push_back(r);

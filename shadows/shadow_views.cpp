@@ -11,13 +11,6 @@ namespace pbr {
 
 namespace {
 
-// Two unit vectors completing `axis` to an orthonormal frame, the same for the same axis every frame.
-void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
-  const glm::vec3 helper = std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  right = glm::normalize(glm::cross(axis, helper));
-  up = glm::cross(right, axis);
-}
-
 // A matrix from its four rows.
 glm::mat4 fromRows(const glm::vec4& r0, const glm::vec4& r1, const glm::vec4& r2, const glm::vec4& r3) {
   return glm::transpose(glm::mat4(r0, r1, r2, r3));
@@ -32,6 +25,12 @@ std::array<glm::vec3, 8> corners(const WorldBounds& b) {
 }
 
 }  // namespace
+
+void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
+  const glm::vec3 helper = std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  right = glm::normalize(glm::cross(axis, helper));
+  up = glm::cross(right, axis);
+}
 
 CascadeSplits cascadeSplits(const Camera& camera, const WorldBounds& scene, int count) {
   CascadeSplits s;

@@ -8,6 +8,9 @@
 
 namespace pbr {
 
+// Two unit vectors completing unit `axis` to an orthonormal frame, the same for the same axis every frame.
+void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up);
+
 // The view depths (distance along the camera's axis) the cascades of a directional light cover: from where the
 // scene's bounds begin in view, or the near plane, to where they end, or the far plane.
 struct CascadeSplits {

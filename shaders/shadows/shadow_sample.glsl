@@ -50,10 +50,11 @@ float shadowTap(vec4 rect, vec2 uv, float depth) {
 float shadowVisibility(uint index, vec3 position, vec3 normal, vec3 L) {
   ShadowView v = shadowViews[index];
   if (v.rect.z <= 0.0) return 1.0;
-  float w = v.params.y > 0.0 ? dot(transpose(v.viewProjection)[3], vec4(position, 1.0)) : 1.0;
+  vec4 clip = v.viewProjection * vec4(position, 1.0);
+  // A perspective view's texel grows with w, the distance along its axis.
+  float texel = v.params.x * (v.params.y > 0.0 ? clip.w : 1.0);
   float NoL = clamp(dot(normal, L), 0.0, 1.0);
-  float offset = v.params.x * w * (0.5 + SHADOW_REACH * sqrt(1.0 - NoL * NoL));
-  vec4 clip = v.viewProjection * vec4(position + normal * offset, 1.0);
+  clip += v.viewProjection * vec4(normal * (texel * (0.5 + SHADOW_REACH * sqrt(1.0 - NoL * NoL))), 0.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
   vec2 uv = v.rect.xy + (ndc.xy * 0.5 + 0.5) * v.rect.zw;
