@@ -16,6 +16,8 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/accuracy/error_map.hpp"
+#include "app/accuracy/shadow_cost.hpp"
+#include "app/accuracy/shadow_rows.hpp"
 #include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
@@ -43,8 +45,16 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(cost.size), ""},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
        std::to_string(cost.lights), ""},
-      {"--rounds", "R", "cost-per-pair rounds, each timing every variant once, in turn", "9", ""},
-      {"--no-cost", "", "skip the cost-per-pair measurement (the chart needs it)"},
+      {"--rounds", "R", "timing rounds, each timing every variant (and then every shadow row) once, in turn", "9", ""},
+      {"--no-cost", "", "skip the timings: cost per pair and the shadow rows' pass times (the chart needs them)"},
+      {"--shadow-rows", "LIST",
+       "shadow settings measured on --shadow-scene with the exact variant: unshadowed, FILTER or FILTER:ATLAS "
+       "(hard, pcf3x3, poisson16; a power-of-two atlas, 256 to 16384, else 4096), or none",
+       kDefaultShadowRows, ""},
+      {"--shadow-scene", "NAME", "the shadow rows' scene, built-in or a file; its lights cast as it says",
+       "shadow-trio", ""},
+      {"--shadow-cost-size", "WxH", "frame size at which the shadow rows' shadow and lighting passes are timed",
+       sizeText({640, 360}), ""},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go", "out/accuracy", ""},
       {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
       {"--slice-size", "AxR", "slice grid: view angles x roughness values", sizeText({90, 64}), ""},
@@ -64,6 +74,18 @@ std::vector<std::string> splitList(const std::string& list) {
   for (std::string item; std::getline(in, item, ',');)
     if (!item.empty()) out.push_back(item);
   return out;
+}
+
+// A shadow row's own CSV columns: its filter and atlas, pass times in ms (n/a without timings), the lit/shadowed
+// state's misclassified share and the pixels it compared.
+std::string shadowCells(const ShadowRow& row, const ShadowCost* c, const ShadowAgreement& agreement) {
+  const bool shadowed = row.settings.mode != ShadowMode::None;
+  std::string cells = std::string(shadowed ? toString(row.settings.filter) : "none") + ',' +
+                      (shadowed ? std::to_string(row.settings.atlasSize) : "-");
+  for (const double ms : {c ? c->shadowMs.median : 0.0, c ? c->lightingMs.median : 0.0, c ? c->passesMs.median : 0.0,
+                          c ? c->passesMs.p10 : 0.0, c ? c->passesMs.p90 : 0.0})
+    cells += ',' + (c ? fixedDecimals(ms, 3) : std::string("n/a"));
+  return cells + ',' + fixedDecimals(agreement.misclassifiedShare(), 5) + ',' + std::to_string(agreement.compared);
 }
 
 void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant>& variants, glm::ivec2 grid,
@@ -109,11 +131,18 @@ int runAccuracy(const std::vector<std::string>& argv) {
                                 "reaching every pixel), renders scenes with it, compares them with the CPU reference "
                                 "ray-casting the same triangles, and writes a CSV (cost and error per variant and "
                                 "scene, plus the tessellation's own error as the 'geometry' row), a cost-vs-error "
-                                "chart and per-pixel error maps (log10 relative error, colour scale below).",
+                                "chart and per-pixel error maps (log10 relative error, colour scale below). Shadow "
+                                "rows (--shadow-rows) render --shadow-scene with the exact variant under each shadow "
+                                "setting and compare it with the reference's shadow rays: relative RMSE of the frame, "
+                                "and the share of pixels whose lit/shadowed state, each casting light alone, differs "
+                                "outside a penumbra band of " + std::to_string(kShadowBandPx) + " pixels; their cost "
+                                "is the shadow and lighting passes' ms.",
                                 specs);
     return 0;
   }
   const std::vector<AccuracyVariant> variants = selectVariants(args.get("--variants"));
+  const std::vector<ShadowRow> shadowRows = parseShadowRows(args.get("--shadow-rows"));
+  const glm::ivec2 shadowCostSize = args.getSize("--shadow-cost-size");
   const std::vector<std::string> sceneSpecs = splitList(args.get("--scenes"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
   const glm::ivec2 size = args.getSize("--size");
@@ -133,6 +162,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   chooseTimingMode(timing, "");
   std::vector<AccuracyScene> scenes;
   for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, sceneFileParams(args)));
+  const AccuracyScene shadowScene = loadAccuracyScene(args.get("--shadow-scene"), sceneFileParams(args));
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
@@ -151,6 +181,15 @@ int runAccuracy(const std::vector<std::string>& argv) {
     for (const AccuracyVariant& v : variants) costVariants.push_back(pairCostVariant(v));
     costs = measurePairCost(shaders, costVariants, cost);
   }
+  std::vector<ShadowCost> shadowCosts;
+  if (measureCost && !shadowRows.empty()) {
+    std::printf("shadow rows' passes: %s at %dx%d, %d rounds\n", shadowScene.label.c_str(), shadowCostSize.x,
+                shadowCostSize.y, cost.rounds);
+    std::vector<FrameOptions> options;
+    for (const ShadowRow& row : shadowRows) options.push_back(shadowRowOptions(row, shadowScene.scene));
+    shadowCosts = measureShadowCost(shaders, shadowScene.scene, shadowCostSize, shadowRowConfig(), options,
+                                    cost.rounds, mode);
+  }
 
   const std::string csvPath = (dir / "accuracy.csv").string();
   OutputFile csvFile(csvPath);
@@ -158,19 +197,33 @@ int runAccuracy(const std::vector<std::string>& argv) {
   csv << "# gl_renderer: " << info.renderer << "\n# timing_mode: " << describe(mode) << "\n# pair_cost_frame: "
       << cost.size.x << "x" << cost.size.y << ", " << cost.lights << " lights reaching every pixel, brute force, "
       << cost.rounds << " rounds\n# compared_frame: " << size.x << "x" << size.y << "\n";
+  if (!shadowRows.empty()) {
+    csv << "# shadow_cost_frame: " << shadowScene.label << ", " << shadowCostSize.x << "x" << shadowCostSize.y
+        << ", shadow and lighting passes, " << cost.rounds << " rounds\n# shadow_state: each casting light alone, "
+        << "lit where shadowed over unshadowed radiance >= 0.5, against the reference's shadow rays; pixels within "
+        << kShadowBandPx << " px of a change of the reference's state are not compared\n";
+  }
   csv << "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
-         "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels\n";
+         "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels,shadow_filter,shadow_atlas,"
+         "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
+         "shadow_pixels\n";
   std::printf("%-16s %-18s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
               "mean lv", "max", ">2 lv");
-  const auto writeRow = [&](const std::string& name, const std::string& scene, const std::string& model,
-                            const std::string& terms, const std::string& hdr, const std::string& gbuffer,
-                            const PairCost* c, const ErrorMetrics& m) {
-    // The geometry rows have no cost: "n/a" in the CSV, "-" in the table.
+  // The geometry and shadow rows have no cost per pair, and the variant and geometry rows no shadow columns: "n/a"
+  // in the CSV ("-" for the settings), "-" in the table.
+  const auto writeCsvRow = [&](const std::string& name, const std::string& scene, const std::string& model,
+                               const std::string& terms, const std::string& hdr, const std::string& gbuffer,
+                               const PairCost* c, const ErrorMetrics& m, const std::string& shadowCells) {
     const auto cell = [&](double v, int decimals) { return c ? fixedDecimals(v, decimals) : std::string("n/a"); };
     csv << name << ',' << scene << ',' << model << ",\"" << terms << "\"," << hdr << ',' << gbuffer << ','
         << cell(c ? c->nsPerPair.median : 0, 4) << ',' << cell(c ? c->nsPerPair.p10 : 0, 4) << ','
         << cell(c ? c->nsPerPair.p90 : 0, 4) << ',' << cell(c ? c->fixedShare : 0, 4) << ',' << m.relativeRmse << ','
-        << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << '\n';
+        << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << ',' << shadowCells << '\n';
+  };
+  const auto writeRow = [&](const std::string& name, const std::string& scene, const std::string& model,
+                            const std::string& terms, const std::string& hdr, const std::string& gbuffer,
+                            const PairCost* c, const ErrorMetrics& m) {
+    writeCsvRow(name, scene, model, terms, hdr, gbuffer, c, m, "-,-,n/a,n/a,n/a,n/a,n/a,n/a,n/a");
     const std::string perPair = c ? fixedDecimals(c->nsPerPair.median, 3) : "-";
     const std::string spread =
         c ? fixedDecimals(c->nsPerPair.p10, 3) + "-" + fixedDecimals(c->nsPerPair.p90, 3) : std::string("-");
@@ -204,6 +257,29 @@ int runAccuracy(const std::vector<std::string>& argv) {
                measureError(f.hdr, f.ldr, ref, refLdr));
       writePng((dir / ("error-" + v.name + "-" + s.label + ".png")).string(),
                errorMapImage(relativeErrorPerPixel(f.hdr, ref), size.x, size.y, 1e-4, 1.0));
+    }
+  }
+  if (!shadowRows.empty()) {
+    std::printf("\n%-20s %-12s %11s %12s %17s %10s %13s %8s\n", "shadow row", "scene", "shadow ms", "lighting ms",
+                "both (p10-p90)", "rel RMSE", "misclassified", "pixels");
+    const ShadowComparison comparison(shaders, shadowScene.scene, size, referenceOptions, mode);
+    const AccuracyVariant& exact = shadowRowVariant();
+    for (size_t i = 0; i < shadowRows.size(); ++i) {
+      const ShadowRow& row = shadowRows[i];
+      const ShadowRowResult r = comparison.measure(row);
+      const ShadowCost* c = shadowCosts.empty() ? nullptr : &shadowCosts[i];
+      writeCsvRow(row.name, shadowScene.label, toString(exact.model), describeTerms(exact.model, exact.shading),
+                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, shadowCells(row, c, r.agreement));
+      const std::string shadowMs = c ? fixedDecimals(c->shadowMs.median, 2) : "-";
+      const std::string lightingMs = c ? fixedDecimals(c->lightingMs.median, 2) : "-";
+      const std::string both = c ? fixedDecimals(c->passesMs.median, 2) + " (" + fixedDecimals(c->passesMs.p10, 2) +
+                                       "-" + fixedDecimals(c->passesMs.p90, 2) + ")"
+                                 : std::string("-");
+      std::printf("%-20s %-12s %11s %12s %17s %10.4g %12.3f%% %8zu\n", row.name.c_str(), shadowScene.label.c_str(),
+                  shadowMs.c_str(), lightingMs.c_str(), both.c_str(), r.error.relativeRmse,
+                  100.0 * r.agreement.misclassifiedShare(), r.agreement.compared);
+      writePng((dir / ("error-" + row.name + "-" + shadowScene.label + ".png")).string(),
+               errorMapImage(r.relativeError, size.x, size.y, 1e-4, 1.0));
     }
   }
   csvFile.commit();

@@ -57,6 +57,9 @@ const std::vector<OptionSpec>& benchOptions() {
        "scale light radii by sqrt(L0/lights), L0 the smallest of --lights, holding lights x radius^2 (the light "
        "density) constant"},
       spotShareOption(),
+      shadowModeOption(),
+      shadowFilterOption(),
+      shadowAtlasOption(),
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
@@ -129,6 +132,7 @@ BenchSettings parseSettings(const Args& args) {
   s.maxSeconds = args.getFloat("--max-seconds", 0.0f, 1e7f);
   s.constantDensity = args.has("--constant-density");
   s.spotShare = sceneFileParams(args).spotShare;
+  s.shadows = readShadowSettings(args);
   s.timing = args.get("--timing");
   chooseTimingMode(s.timing, "");  // rejects a bad mode before a context is made
   return s;

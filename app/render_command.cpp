@@ -51,8 +51,9 @@ const std::vector<OptionSpec>& renderOptions() {
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
        "never filtered", toString(kDisplayAntiAliasing), ""},
       {"--debug", "CHANNEL", "a debug channel with its legend in place of the frame: " + debugChannelNames() +
-                                 " (efficiency: contributing / evaluated light-pixel pairs per pixel; clusters and "
-                                 "slices need --culling clustered)", "", "none, the frame itself"},
+                                 " (efficiency: contributing / evaluated light-pixel pairs per pixel; shadows: the light "
+                                 "casting lights bring over what they would unshadowed, 0 black, with the shadow "
+                                 "atlas inset; clusters and slices need --culling clustered)", "", "none, the frame itself"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
       {"--exposure", "X", "exposure multiplier before ACES", "", "the scene's, 1"},
@@ -229,6 +230,10 @@ int runRender(const std::vector<std::string>& argv) {
   applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
   const float exposure = applyExposureOptions(args, scene);
+  if (debug == DebugChannel::Shadows && !anyShadowCaster(scene.lights, scene.directionalLights, shadows.mode)) {
+    throw UsageError("--debug shadows: no light of the scene casts shadows under --shadows " +
+                     std::string(toString(shadows.mode)) + " (--shadows on makes every light cast)");
+  }
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.
   std::optional<OutputFile> pngFile, hdrFile, jsonFile;
@@ -271,7 +276,7 @@ int runRender(const std::vector<std::string>& argv) {
   printWarmUp(renderer.warmUp(options, profiler, warmup));
 
   BenchResult result;
-  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), culling, model, 1.0f};
+  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), culling, model, 1.0f, shadows};
   TimedFrames timed = timeFrames(renderer, options, profiler, frames);
   result.frames = std::move(timed.frames);
   result.processCpuShare = timed.processCpuShare;
@@ -310,6 +315,7 @@ int runRender(const std::vector<std::string>& argv) {
     report.settings.frames = frames;
     report.settings.maxSeconds = 0.0;
     report.settings.timing = timing;
+    report.settings.shadows = shadows;
     report.results.push_back(std::move(result));
     jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
     std::printf("wrote %s\n", outJson.c_str());

@@ -22,6 +22,9 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--model", "MODEL", "shading model at start: pbr or blinn-phong (key M switches)", toString(viewer.frame.model),
        ""},
       {"--culling", "C", "clustered or none at start (key C switches)", toString(viewer.frame.culling), ""},
+      shadowModeOption(),
+      shadowFilterOption(),
+      shadowAtlasOption(),
       {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
        toString(kDisplayAntiAliasing), ""},
       {"--exposure", "X", "exposure multiplier at start (keys + and -)", "", "the scene's, 1"},
@@ -78,6 +81,7 @@ int runView(const std::vector<std::string>& argv) {
   options.frame.model = parseShadingModel(args.get("--model"));
   options.frame.culling = parseCulling(args.get("--culling"));
   options.frame.aa = parseAntiAliasing(args.get("--aa"));
+  options.frame.shadows = readShadowSettings(args);
   options.size = args.getSize("--size");
   options.paused = args.has("--paused");
   const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;

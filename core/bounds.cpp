@@ -22,6 +22,12 @@ bool overlaps(const WorldBounds& a, const WorldBounds& b) {
          glm::all(glm::lessThanEqual(b.min, a.max));
 }
 
+bool overlapsSphere(const WorldBounds& box, const glm::vec3& centre, float radius) {
+  if (box.empty()) return false;
+  const glm::vec3 d = centre - glm::clamp(centre, box.min, box.max);
+  return glm::dot(d, d) <= radius * radius;
+}
+
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform) {
   WorldBounds b;
   for (const Vertex& v : mesh.vertices) b.add(glm::vec3(transform * glm::vec4(v.position, 1.0f)));

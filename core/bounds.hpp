@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdint>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -18,8 +19,18 @@ struct WorldBounds {
   void add(const WorldBounds& b);
 };
 
+// A box of visible surface points in view space (the camera looking down -z), and the screen tile it lies in: what
+// the cluster occupancy measures (lighting/light_clusters.hpp), handed to the shadow planner.
+struct ViewSpaceBox {
+  glm::vec3 min, max;
+  uint32_t tile;
+};
+
 // Whether two boxes share a point; an empty box meets nothing.
 bool overlaps(const WorldBounds& a, const WorldBounds& b);
+
+// Whether the box meets the sphere of `centre` and `radius` (its nearest point no farther than the radius).
+bool overlapsSphere(const WorldBounds& box, const glm::vec3& centre, float radius);
 
 // The world box of a mesh's vertices under `transform`.
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform);

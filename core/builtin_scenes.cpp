@@ -115,7 +115,8 @@ const Builtin kBuiltins[] = {{"default", nullptr, nullptr},
                              {"stress", nullptr, nullptr},
                              {"helmet", lightRing, nullptr},
                              {"helmet-grid", nullptr, nullptr},
-                             {"many-lights", nullptr, nullptr}};
+                             {"many-lights", nullptr, nullptr},
+                             {"shadow-trio", nullptr, nullptr}};
 
 const Builtin* findBuiltin(const std::string& name) {
   const auto it =

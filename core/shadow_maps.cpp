@@ -1,6 +1,7 @@
 #include "core/shadow_maps.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace pbr {
 
@@ -29,11 +30,35 @@ const char* shadowFilterDefine(ShadowFilter filter) {
   return "?";
 }
 
+namespace {
+
+uint32_t log2Side(int size) {
+  uint32_t bits = 0;
+  while ((1 << (bits + 1)) <= size) ++bits;
+  return bits;
+}
+
+}  // namespace
+
+uint32_t lightShadowEntry(uint32_t firstView, int size, bool cube) {
+  return (firstView + 1u) | log2Side(size) << 26 | (cube ? kCubeShadow : 0u);
+}
+
+uint32_t packShadowSquare(glm::ivec2 origin, int size) {
+  return size > 0 ? uint32_t(origin.x) | uint32_t(origin.y) << 14 | log2Side(size) << 28 : 0u;
+}
+
+ShaderDefines shadowViewDefines() {
+  return {{"SHADOW_BORDER_TEXELS", std::to_string(kShadowBorderTexels) + ".0"},
+          {"SHADOW_NEAR_SCALE", std::to_string(kShadowNearScale)}};
+}
+
 void bindShadowMaps(const ShadowMaps& maps) {
   glBindTextureUnit(kShadowAtlasUnit.index, maps.atlas);
   glBindSampler(kShadowAtlasUnit.index, maps.atlasSampler);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewSsbo.index, maps.views);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightShadowSsbo.index, maps.lightViews);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowSquareSsbo.index, maps.squares);
 }
 
 }  // namespace pbr

@@ -4,6 +4,7 @@
 #include <string>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/binding_table.hpp"
@@ -20,6 +21,7 @@ struct ShadowMaps {
   GLuint atlas = 0, atlasSampler = 0;  // DEPTH_COMPONENT32F, reversed Z (1 nearest the light), compare GEQUAL
   GLuint views = 0;                    // storage buffer: ShadowHeader then ShadowView[]
   GLuint lightViews = 0;               // storage buffer: per light-buffer index, its first view (see below)
+  GLuint squares = 0;                  // storage buffer: per view, its square packed (packShadowSquare)
 };
 
 // std430 mirror of `ShadowView` in shaders/shadows/shadow_sample.glsl: one square of the atlas, rendered from a
@@ -45,17 +47,33 @@ static_assert(sizeof(GpuShadowHeader) == 16 * kMaxDirectionalLights + 32, "GpuSh
 struct ShadowCasterView {
   glm::mat4 viewProjection;
   glm::ivec4 viewport;  // x, y, width, height
+  // A point or spot light's sphere (centre, radius; w 0 for a cascade): what it lights lies inside, so only a caster
+  // meeting it can stand between the light and a lit point.
+  glm::vec4 reach{0.0f};
 };
 
-// A point or spot light's entry in `lightViews`: 0 without shadows, else its first view + 1, with kCubeShadow set
-// when it owns six cube faces (+X, -X, +Y, -Y, +Z, -Z) rather than one perspective view.
+// A point or spot light's entry in `lightViews`: 0 without shadows; else its first view + 1 in bits 0-25, log2 of
+// its views' side in bits 26-29, and kCubeShadow set when it owns six cube faces (+X, -X, +Y, -Y, +Z, -Z) rather
+// than one perspective view.
 constexpr uint32_t kCubeShadow = 0x80000000u;
+uint32_t lightShadowEntry(uint32_t firstView, int size, bool cube);
+
+// A view's entry in `squares`: its atlas origin x | y << 14 | log2(side) << 28 in texels; 0 when not rendered. A cube
+// face is looked up from it alone: the face's frame, field of view and near plane follow from the light's position
+// and radius (shaders/shadows/shadow_sample.glsl), which saves reading its 96-byte view per light-pixel pair.
+uint32_t packShadowSquare(glm::ivec2 origin, int size);
+
+// A perspective view's border around its field of view, in texels: filter taps near an edge read rendered depth,
+// not the neighbouring square or a clamp. Its near plane: this share of the light's radius (at least 1e-4).
+constexpr int kShadowBorderTexels = 3;
+constexpr float kShadowNearScale = 1e-3f;
 
 // Where the lighting pass reads them (part of lightingBindingDefines): clear of the lighting module's, the frame
 // block's and the IBL maps' points.
 constexpr BindingPoint kShadowAtlasUnit{"SHADOW_ATLAS_UNIT", BindingKind::TextureUnit, 11};
 constexpr BindingPoint kShadowViewSsbo{"SHADOW_VIEW_SSBO", BindingKind::StorageBuffer, 15};
 constexpr BindingPoint kLightShadowSsbo{"LIGHT_SHADOW_SSBO", BindingKind::StorageBuffer, 16};
+constexpr BindingPoint kShadowSquareSsbo{"SHADOW_SQUARE_SSBO", BindingKind::StorageBuffer, 17};
 
 // How a shadow map is sampled (the lighting pass's SHADOW_FILTER_* permutations): one comparison at the nearest
 // texel; a 3x3 grid of bilinear comparisons one texel apart (a tent over 4x4 texels); 16 bilinear comparisons on a
@@ -77,6 +95,9 @@ struct ShadowSettings {
   ShadowFilter filter = ShadowFilter::Pcf3x3;
   int atlasSize = kDefaultShadowAtlas;
 };
+
+// The constants above as defines for shadow_sample.glsl.
+ShaderDefines shadowViewDefines();
 
 // Binds the maps where shadow_sample.glsl reads them.
 void bindShadowMaps(const ShadowMaps& maps);

@@ -206,6 +206,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
     for (size_t i = 0; i < draws_.size(); ++i) {
       const Draw& d = draws_[i];
       if (outsideFrustum(planes, d.bounds)) continue;
+      if (v.reach.w > 0.0f && !overlapsSphere(d.bounds, glm::vec3(v.reach), v.reach.w)) continue;
       if (depthPrograms_[i] != bound) depthPrograms_[i]->use();
       bound = depthPrograms_[i];
       if (d.cutOutTexture) {

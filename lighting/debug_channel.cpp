@@ -16,6 +16,7 @@ const char* toString(DebugChannel channel) {
     case DebugChannel::Clusters: return "clusters";
     case DebugChannel::Slices: return "slices";
     case DebugChannel::Efficiency: return "efficiency";
+    case DebugChannel::Shadows: return "shadows";
   }
   return "?";
 }

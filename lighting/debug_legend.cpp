@@ -57,6 +57,8 @@ LegendText legendText(DebugChannel channel, const FrameBlock& frame, uint32_t sl
       return {"depth slice, exponential in view depth", "0", std::to_string(slices ? slices - 1 : 0), ""};
     case DebugChannel::Efficiency:
       return {"culling efficiency: contributing / evaluated pairs", "0", "1", "no pair evaluated"};
+    case DebugChannel::Shadows:
+      return {"shadow visibility: light arriving / unshadowed; atlas inset", "0", "1", "no shadowed light"};
   }
   return {};
 }

@@ -21,7 +21,8 @@ const char* channelDefine(DebugChannel channel) {
     case DebugChannel::Depth: return "GBUFFER_CHANNEL_DEPTH";
     case DebugChannel::Clusters:
     case DebugChannel::Slices:
-    case DebugChannel::Efficiency: return nullptr;
+    case DebugChannel::Efficiency:
+    case DebugChannel::Shadows: return nullptr;
   }
   return nullptr;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/debug_group.hpp"
 #include "lighting/lighting_bindings.hpp"
@@ -212,11 +213,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   blockData_.counts = glm::uvec4(count, clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
   if (stats && (!visible_ || visible_->size() < count * 4ull)) visible_ = zeroedBuffer("clusters.visibleLights", count * 4ull);
-  const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
-  glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
-
-  frame.bind(kFrameUbo.index);
-  block_.bind(lighting_binding::kClusterUbo.index);
+  occupy(f, frame, depth);
   lights.bind();
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
   cursors_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterCursorSsbo.index);
@@ -227,16 +224,6 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   indices_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightIndexSsbo.index);
   status_.bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterStatusSsbo.index);
   if (stats) visible_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLightVisibleSsbo.index);
-  glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
-
-  {
-    const DebugGroup group("cluster occupancy");
-    occupancyProgram_.use();
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8),
-                      groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
   activate();
   // Without a past frame of this grid and light count to size from, slots too few would shade the clusters
   // without one by brute force: such a frame waits for its count of active clusters instead.
@@ -281,6 +268,50 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   }
   glCopyNamedBufferSubData(status_.id(), slot.buffer->id(), 0, 0, sizeof(ClusterStatus));
   slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const Texture& depth) {
+  const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
+  glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  frame.bind(kFrameUbo.index);
+  block_.bind(lighting_binding::kClusterUbo.index);
+  occupancy_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterOccupancySsbo.index);
+  glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
+  const DebugGroup group("cluster occupancy");
+  occupancyProgram_.use();
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8), groupsFor(static_cast<uint32_t>(f.viewport.y), 8),
+                    1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void LightClusters::measureOccupancy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame,
+                                     const Texture& depth) {
+  if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
+  occupy(f, frame, depth);
+}
+
+std::vector<ViewSpaceBox> LightClusters::occupiedBoxes() const {
+  const uint32_t clusters = blockData_.counts.y, tiles = dims_.x * dims_.y;
+  std::vector<uint32_t> words(size_t(clusters) * kOccupancyWords);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(occupancy_->id(), 0, GLsizeiptr(words.size() * sizeof(uint32_t)), words.data());
+  // cluster_occupancy.comp's encoding: the minimum corner as ordered bits, the maximum as their complement; all
+  // ones where no pixel is (clusters.glsl, orderedFloat).
+  const auto decode = [](uint32_t u) {
+    const uint32_t bits = (u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u;
+    float x;
+    std::memcpy(&x, &bits, sizeof x);
+    return x;
+  };
+  std::vector<ViewSpaceBox> boxes;
+  for (uint32_t c = 0; c < clusters; ++c) {
+    const uint32_t* w = &words[size_t(c) * kOccupancyWords];
+    if (w[0] == 0xFFFFFFFFu) continue;
+    boxes.push_back({{decode(w[0]), decode(w[1]), decode(w[2])}, {decode(~w[3]), decode(~w[4]), decode(~w[5])},
+                     c % tiles});
+  }
+  return boxes;
 }
 
 void LightClusters::activate() {

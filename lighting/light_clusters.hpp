@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/bounds.hpp"
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
@@ -57,6 +58,12 @@ class LightClusters {
   // frame; `frameData` is what `frame` holds.
   void assign(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
               const Texture& depth, bool stats);
+  // The first step of assign alone, the occupancy of the clusters by the surfaces of `depth`: for a frame shaded
+  // without the lists (brute force) that still asks where its surfaces are (shadow planning).
+  void measureOccupancy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth);
+  // The boxes of the surface points each occupied cluster holds, as the last assign or measureOccupancy measured
+  // them, with their screen tiles, in view space. Waits for the GPU (a read-back of 24 bytes per cluster).
+  std::vector<ViewSpaceBox> occupiedBoxes() const;
   // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
   void bindForLighting() const;
 
@@ -98,6 +105,8 @@ class LightClusters {
   void fillWindow(uint32_t windowLights, bool first, bool last);
   void setWindow(uint32_t begin, uint32_t end);
   uint32_t readActiveCount() const;
+  // Clears the occupancy and runs its pass over `depth` (cluster_occupancy.comp), binding the frame and the block.
+  void occupy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth);
 
   ClusterConfig config_;
   ProgramCache& programs_;

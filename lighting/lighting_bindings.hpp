@@ -37,6 +37,11 @@ constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 
 constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};
 // Per-pixel light-pixel pair counts, written by the lighting pass and read by the efficiency debug view.
 constexpr BindingPoint kPairCountImage{"PAIR_COUNT_IMAGE", BindingKind::ImageUnit, 2};
+// Per-pixel luminance from casting lights with and without their shadows, written by the lighting pass and read by
+// the shadows debug view with the atlas's depth and its squares' owners.
+constexpr BindingPoint kShadowLightImage{"SHADOW_LIGHT_IMAGE_UNIT", BindingKind::ImageUnit, 3};
+constexpr BindingPoint kShadowDepthUnit{"SHADOW_DEPTH_UNIT", BindingKind::TextureUnit, 12};
+constexpr BindingPoint kShadowOwnerUnit{"SHADOW_OWNER_UNIT", BindingKind::TextureUnit, 13};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding

@@ -49,7 +49,11 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
-  if (o.shadows) defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
+  if (o.shadows) {
+    defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
+    defines = concat(defines, shadowViewDefines());
+  }
+  defines.push_back({"SHADOW_LIGHT_IMAGE", flag(o.shadows && o.shadowLight)});
   if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
   defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
   return defines;
@@ -114,6 +118,10 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   if (options.pairCounts) {
     glBindImageTexture(lighting_binding::kPairCountImage.index, options.pairCounts->id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RG32UI);
+  }
+  if (options.shadows && options.shadowLight) {
+    glBindImageTexture(lighting_binding::kShadowLightImage.index, options.shadowLight->id(), 0, GL_FALSE, 0,
+                       GL_READ_WRITE, GL_RG32F);
   }
   if (chunked) {
     glBindImageTexture(lighting_binding::kPartialRadianceImage.index, partialRadiance->id(), 0, GL_FALSE, 0,

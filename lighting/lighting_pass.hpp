@@ -47,6 +47,9 @@ struct LightingOptions {
   // Non-null: lights with shadow views in these maps are shaded with their visibility, sampled by this filter.
   const ShadowMaps* shadows = nullptr;
   ShadowFilter shadowFilter = ShadowFilter::Pcf3x3;
+  // Non-null (with shadows): the pass also sums each pixel's light from casting lights into this RG32F image of the
+  // frame's size (luminance with, and without, its shadows), what the shadows debug view shows.
+  const Texture* shadowLight = nullptr;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops

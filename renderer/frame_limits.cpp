@@ -94,7 +94,8 @@ uint64_t frameBytesPerPixel(const RendererConfig& config) {
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
   const uint64_t pairCounts = 8;    // RG32UI, made for the efficiency debug channel
-  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts;
+  const uint64_t shadowLight = 8;   // RG32F, made for the shadows debug channel
+  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts + shadowLight;
 }
 
 std::vector<GLenum> frameFormats(const RendererConfig& config) {

@@ -37,6 +37,11 @@ const Texture& FrameTargets::beforeAntiAliasing() {
   return *beforeAntiAliasing_;
 }
 
+const Texture& FrameTargets::shadowLight() {
+  if (!shadowLight_) shadowLight_ = std::make_unique<Texture>("frame.shadowLight", GL_RG32F, width, height);
+  return *shadowLight_;
+}
+
 const Texture& FrameTargets::pairCounts() {
   if (!pairCounts_) pairCounts_ = std::make_unique<Texture>("frame.pairCounts", GL_RG32UI, width, height);
   return *pairCounts_;

@@ -30,9 +30,11 @@ struct FrameTargets {
   const Texture& beforeAntiAliasing();
   // RG32UI light-pixel pairs of each pixel (evaluated, contributing) for the efficiency debug view: made on first use.
   const Texture& pairCounts();
+  // RG32F luminance from casting lights (with shadows, without) for the shadows debug view: made on first use.
+  const Texture& shadowLight();
 
  private:
-  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_;
+  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_, shadowLight_;
 };
 
 }  // namespace pbr

@@ -32,6 +32,7 @@ const char* toString(FrameResource resource) {
     case FrameResource::Radiance: return "radiance";
     case FrameResource::ClusterLists: return "cluster lists";
     case FrameResource::PairCounts: return "pair counts";
+    case FrameResource::ShadowLight: return "shadow light";
     case FrameResource::Display: return "display";
     case FrameResource::Capture: return "capture";
   }

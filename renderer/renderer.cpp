@@ -34,7 +34,11 @@ bool Renderer::shadowed(ShadowMode mode) {
   return shadowedCache_->second;
 }
 
-void Renderer::renderShadows(const ShadowSettings& settings) {
+void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
+  // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
+  FrameTargets& t = *targets_;
+  if (!clustered) t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth);
+  const ShadowReceivers receivers(t.clusters.occupiedBoxes(), frameData_.inverseView);
   const ShadowInputs inputs{camera_,
                             float(width()) / float(height()),
                             height(),
@@ -43,7 +47,8 @@ void Renderer::renderShadows(const ShadowSettings& settings) {
                             sceneData_.directionalLights,
                             scene_.geometry.bounds(),
                             settings.mode,
-                            settings.atlasSize};
+                            settings.atlasSize,
+                            &receivers};
   scene_.shadows.render(inputs, [this](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
     scene_.geometry.renderDepth(framebuffer, views);
   });
@@ -67,26 +72,32 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   FrameTargets& t = *targets_;
   const bool clustered = options.culling == Culling::Clustered;
   const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
-  // The cluster views need the grid that only clustered culling builds: without it the frame shows no debug view.
-  const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug));
+  const bool shadows = shadowed(options.shadows.mode);
+  // The cluster views need the grid that only clustered culling builds, the shadows view a light that casts:
+  // without them the frame shows no debug view.
+  const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug)) &&
+                     (shadows || *options.debug != DebugChannel::Shadows);
   const bool emission = debug && *options.debug == DebugChannel::Emission;
   const bool efficiency = debug && *options.debug == DebugChannel::Efficiency;
-  // The surface channels draw the G-buffer alone and the efficiency channel the lighting pass's pair counts; both
-  // write every display pixel, so the passes whose output they would replace are left out.
+  const bool shadowView = debug && *options.debug == DebugChannel::Shadows;
+  // The surface channels draw the G-buffer alone, the efficiency and shadows channels what the lighting pass counts
+  // for them; all write every display pixel, so the passes whose output they would replace are left out.
   const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
-  const bool replacesDisplay = surfaceChannel || efficiency;
-  const bool shadows = shadowed(options.shadows.mode);
+  const bool replacesDisplay = surfaceChannel || efficiency || shadowView;
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
-  if (shadows && !emission && !surfaceChannel) {
-    passes.push_back({"shadow", {R::Geometry, R::Lights, R::Camera}, {R::ShadowMaps},
-                      [this, settings = options.shadows] { renderShadows(settings); }});
-  }
   if (clustered) {
     passes.push_back({"cluster", {R::Lights, R::Camera, R::GBuffer}, {R::ClusterLists}, [this, &t, stats = options.stats] {
                         t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth, stats);
                       }});
+  }
+  // After the cluster pass: the shadow views are planned from the clusters the surfaces occupy.
+  if (shadows && !emission && !surfaceChannel) {
+    std::vector<R> shadowReads = {R::Geometry, R::Lights, R::Camera, R::GBuffer};
+    if (clustered) shadowReads.push_back(R::ClusterLists);
+    passes.push_back({"shadow", shadowReads, {R::ShadowMaps},
+                      [this, settings = options.shadows, clustered] { renderShadows(settings, clustered); }});
   }
   std::vector<R> lightingReads = {R::GBuffer, R::Radiance, R::Lights, R::Camera};
   if (clustered) lightingReads.push_back(R::ClusterLists);
@@ -94,11 +105,12 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (shadows) lightingReads.push_back(R::ShadowMaps);
   std::vector<R> lightingWrites = {R::Radiance};
   if (efficiency) lightingWrites.push_back(R::PairCounts);
+  if (shadowView) lightingWrites.push_back(R::ShadowLight);
   // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
   // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
   if (!emission && !surfaceChannel) {
     passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency,
-                                                                  shadows] {
+                                                                  shadows, shadowView] {
                         const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
                                                       t.gbuffer.depth};
                         const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
@@ -110,7 +122,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        ibl ? &maps : nullptr,
                                                        efficiency ? &t.pairCounts() : nullptr,
                                                        shadows ? &shadowMaps : nullptr,
-                                                       options.shadows.filter};
+                                                       options.shadows.filter,
+                                                       shadowView ? &t.shadowLight() : nullptr};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
@@ -158,6 +171,8 @@ FramePass Renderer::debugPass(DebugChannel channel) {
     reads = {R::GBuffer, R::Camera};
   } else if (needsClusterGrid(channel)) {
     reads = {R::ClusterLists, R::GBuffer, R::Camera, R::Display};
+  } else if (channel == DebugChannel::Shadows) {
+    reads = {R::ShadowLight, R::ShadowMaps, R::Camera};
   } else {
     reads = {R::PairCounts, R::Camera};
   }
@@ -167,6 +182,9 @@ FramePass Renderer::debugPass(DebugChannel channel) {
               scene_.gbufferDebug.render(channel, t.gbuffer, frame_, scene_.debugLegend, t.ldr);
             } else if (needsClusterGrid(channel)) {
               scene_.clusterDebug.render(channel, t.clusters, t.gbuffer.depth, frame_, scene_.debugLegend, t.ldr);
+            } else if (channel == DebugChannel::Shadows) {
+              scene_.shadowDebug.render(t.shadowLight(), scene_.shadows.maps(), scene_.shadows.ownerMap(), frame_,
+                                        scene_.debugLegend, t.ldr);
             } else {
               scene_.efficiencyDebug.render(t.pairCounts(), frame_, scene_.debugLegend, t.ldr);
             }

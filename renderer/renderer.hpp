@@ -121,7 +121,8 @@ class Renderer {
   FramePass debugPass(DebugChannel channel);
   // Whether any light casts under `mode` (cached until the lights change).
   bool shadowed(ShadowMode mode);
-  void renderShadows(const ShadowSettings& settings);
+  // The shadow pass: plans the views from where the surfaces are (the cluster occupancy) and renders them.
+  void renderShadows(const ShadowSettings& settings, bool clustered);
 
   const Scene& sceneData_;
   RendererConfig config_;

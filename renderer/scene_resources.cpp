@@ -23,7 +23,8 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       fxaa(programs),
       clusterDebug(programs),
       gbufferDebug(programs),
-      efficiencyDebug(programs) {
+      efficiencyDebug(programs),
+      shadowDebug(programs) {
   lights.uploadPoints(scene.lights);
   lights.uploadDirectional(scene.directionalLights);
 }

@@ -13,6 +13,7 @@
 #include "lighting/lighting_pass.hpp"
 #include "post/fxaa_pass.hpp"
 #include "post/post_pass.hpp"
+#include "lighting/shadow_debug_pass.hpp"
 #include "shadows/shadow_pass.hpp"
 
 namespace pbr {
@@ -37,6 +38,7 @@ struct SceneResources {
   ClusterDebugPass clusterDebug;
   GBufferDebugPass gbufferDebug;
   EfficiencyDebugPass efficiencyDebug;
+  ShadowDebugPass shadowDebug;
   UniformBuffer<LegendBlock> debugLegend{"debug.legend"};  // the text of the debug channel's legend, set by the frame that shows it
 };
 

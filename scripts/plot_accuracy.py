@@ -3,7 +3,11 @@
 (median, with the p10-p90 spread as error bars) against its relative RMSE in linear HDR against the CPU reference.
 Left: the first scene of the CSV (sphere-grid by default); right: the mean over every scene. The 'geometry' row
 (the tessellated meshes against the exact shapes, at the reference's own shading) is drawn as a dashed line: it is
-no variant's error, but the error a comparison with exact shapes would have added to every variant."""
+no variant's error, but the error a comparison with exact shapes would have added to every variant. Shadow rows
+(shadow settings on the shadow scene, the exact variant) have their own panel, since their cost is ms per frame
+(the shadow and lighting passes) rather than ns per pair: relative RMSE of the shadowed frame (squares, left axis)
+and the share of pixels whose lit/shadowed state differs from the reference's shadow rays (triangles, right
+axis)."""
 import argparse
 import csv
 import statistics
@@ -69,13 +73,41 @@ def panel(ax, points, geometry, title, xlabel):
     ax.legend(fontsize=8, loc="best")
 
 
+def is_shadow_row(row):
+    # CSVs written before the shadow rows have no shadow_filter column.
+    return row.get("shadow_filter", "-") != "-"
+
+
+def shadow_panel(ax, rows, title, xlabel):
+    xs = [float(r["passes_ms_median"]) for r in rows]
+    xerr = [[x - float(r["passes_ms_p10"]) for x, r in zip(xs, rows)],
+            [float(r["passes_ms_p90"]) - x for x, r in zip(xs, rows)]]
+    rmse = [float(r["relative_rmse"]) for r in rows]
+    share = [100.0 * float(r["misclassified_share"]) for r in rows]
+    ax.set_yscale("log")
+    rmse_points = ax.errorbar(xs, rmse, xerr=xerr, fmt="s", color="tab:purple", ecolor="tab:gray", capsize=3,
+                              zorder=3, label="relative RMSE of the shadowed frame (left)")
+    place_labels(ax, [(x, y, r["variant"]) for x, y, r in zip(xs, rmse, rows)])
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("relative RMSE vs CPU reference (shadow rays)")
+    ax.grid(True, alpha=0.3, which="both")
+    right = ax.twinx()
+    share_points, = right.plot(xs, share, "^", color="tab:red", label="lit/shadowed state misclassified (right)")
+    right.set_ylabel("pixels misclassified, % (outside the penumbra band)")
+    right.set_ylim(bottom=0.0)
+    ax.legend(handles=[rmse_points, share_points], fontsize=8, loc="upper right")
+    ax.set_title(title, fontsize=10)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("csv")
     parser.add_argument("png")
     args = parser.parse_args()
 
-    meta, rows = read(args.csv)
+    meta, all_rows = read(args.csv)
+    rows = [r for r in all_rows if not is_shadow_row(r)]
+    shadow_rows = [r for r in all_rows if is_shadow_row(r) and r["passes_ms_median"] != "n/a"]
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     variants = list(dict.fromkeys(r["variant"] for r in rows if r["variant"] != "geometry"))
 
@@ -94,10 +126,15 @@ def main():
 
     cpu = "llvmpipe" in meta.get("gl_renderer", "")
     xlabel = "ns per evaluated light-pixel pair (p10-p90)" + (", CPU rasterizer (llvmpipe)" if cpu else "")
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5), dpi=100)
+    fig, axes = plt.subplots(1, 3 if shadow_rows else 2, figsize=(20 if shadow_rows else 13, 5), dpi=100)
     first = scenes[0]
     panel(axes[0], points(lambda s: s == first), geometry(lambda s: s == first), first, xlabel)
     panel(axes[1], points(lambda s: True), geometry(lambda s: True), "mean over %d scenes" % len(scenes), xlabel)
+    if shadow_rows:
+        title = "shadow settings, exact variant: %s" % meta.get("shadow_cost_frame", "?")
+        shadow_xlabel = "ms per frame, shadow + lighting passes (p10-p90)" + (
+            ", CPU rasterizer (llvmpipe)" if cpu else "")
+        shadow_panel(axes[2], shadow_rows, title, shadow_xlabel)
     fig.suptitle("pbr accuracy: cost from %s; %s" % (meta.get("pair_cost_frame", "?"), meta.get("gl_renderer", "?")),
                  fontsize=9)
     fig.tight_layout()

@@ -25,6 +25,8 @@ ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL
 void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters) {
   const ShadowPlan plan = planShadows(inputs);
   stats_ = plan.stats;
+  lastViews_ = plan.views;
+  ownersCurrent_ = false;
   if (!atlas_ || atlas_->width() != inputs.atlasSize) {
     framebuffer_.reset();
     atlas_.reset();
@@ -39,15 +41,19 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   std::memcpy(bytes.data(), &plan.header, sizeof plan.header);
   const float scale = 1.0f / float(inputs.atlasSize);
   std::vector<ShadowCasterView> casterViews;
+  std::vector<uint32_t> squares(plan.views.size());
   for (size_t i = 0; i < plan.views.size(); ++i) {
     const ShadowViewPlan& v = plan.views[i];
+    squares[i] = packShadowSquare(v.origin, v.size);
     const GpuShadowView gpu{v.viewProjection, glm::vec4(glm::vec2(v.origin) * scale, glm::vec2(float(v.size) * scale)),
                             glm::vec4(v.texelWorld, v.perspective ? 1.0f : 0.0f, 0.0f, 0.0f)};
     std::memcpy(bytes.data() + sizeof(GpuShadowHeader) + i * sizeof(GpuShadowView), &gpu, sizeof gpu);
-    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size)});
+    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach});
   }
   ensureBuffer(views_, "shadows.views", bytes.size());
   views_->upload(bytes.data(), bytes.size());
+  ensureBuffer(squares_, "shadows.squares", squares.size() * sizeof(uint32_t));
+  if (!squares.empty()) squares_->upload(squares.data(), squares.size() * sizeof(uint32_t));
   ensureBuffer(lightViews_, "shadows.lightViews", plan.lightViews.size() * sizeof(uint32_t));
   if (!plan.lightViews.empty()) lightViews_->upload(plan.lightViews.data(), plan.lightViews.size() * sizeof(uint32_t));
 
@@ -63,12 +69,38 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
 }
 
 ShadowMaps ShadowPass::maps() const {
-  return {atlas_ ? atlas_->id() : 0, sampler_.id(), views_ ? views_->id() : 0, lightViews_ ? lightViews_->id() : 0};
+  return {atlas_ ? atlas_->id() : 0, sampler_.id(), views_ ? views_->id() : 0, lightViews_ ? lightViews_->id() : 0,
+          squares_ ? squares_->id() : 0};
+}
+
+const Texture& ShadowPass::ownerMap() {
+  const int atlas = atlas_ ? atlas_->width() : kMinShadowView;
+  const int cells = atlas / kMinShadowView;
+  if (!owners_ || owners_->width() != cells) {
+    owners_ = std::make_unique<Texture>("shadows.owners", GL_RG32UI, cells, cells);
+    ownersCurrent_ = false;
+  }
+  if (!ownersCurrent_) {
+    // Squares are powers of two of at least kMinShadowView texels on a grid of their own size: whole cells.
+    std::vector<glm::uvec2> owners(size_t(cells) * size_t(cells), glm::uvec2(0u));
+    for (size_t i = 0; i < lastViews_.size(); ++i) {
+      const ShadowViewPlan& v = lastViews_[i];
+      const glm::ivec2 first = v.origin / kMinShadowView;
+      for (int y = first.y; y < first.y + v.size / kMinShadowView; ++y) {
+        for (int x = first.x; x < first.x + v.size / kMinShadowView; ++x) {
+          owners[size_t(y) * size_t(cells) + size_t(x)] = glm::uvec2(uint32_t(i) + 1u, v.light + 1u);
+        }
+      }
+    }
+    glTextureSubImage2D(owners_->id(), 0, 0, 0, cells, cells, GL_RG_INTEGER, GL_UNSIGNED_INT, owners.data());
+    ownersCurrent_ = true;
+  }
+  return *owners_;
 }
 
 size_t ShadowPass::bytes() const {
   return (atlas_ ? shadowAtlasBytes(atlas_->width()) : 0) + (views_ ? views_->size() : 0) +
-         (lightViews_ ? lightViews_->size() : 0);
+         (lightViews_ ? lightViews_->size() : 0) + (squares_ ? squares_->size() : 0);
 }
 
 }  // namespace pbr

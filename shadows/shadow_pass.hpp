@@ -23,8 +23,11 @@ class ShadowPass {
   // Valid after render.
   ShadowMaps maps() const;
   const ShadowStats& stats() const { return stats_; }
-  // GPU bytes held: the atlas and the two buffers.
+  // GPU bytes held: the atlas and the buffers.
   size_t bytes() const;
+  // Which square each kMinShadowView-texel cell of the atlas belongs to, for the shadows debug view: RG32UI, view + 1
+  // and light + 1 (ShadowViewPlan::light), 0 where no square lies. Made from the last render's plan on request.
+  const Texture& ownerMap();
 
  private:
   std::unique_ptr<Texture> atlas_;
@@ -32,6 +35,10 @@ class ShadowPass {
   Sampler sampler_;
   std::unique_ptr<Buffer> views_;
   std::unique_ptr<Buffer> lightViews_;
+  std::unique_ptr<Buffer> squares_;
+  std::unique_ptr<Texture> owners_;
+  std::vector<ShadowViewPlan> lastViews_;  // the last render's, for ownerMap
+  bool ownersCurrent_ = false;
   ShadowStats stats_;
 };
 

@@ -16,9 +16,6 @@ namespace pbr {
 
 namespace {
 
-// Texels of border around a cube face's 90 degrees and a spot view's cone: filter taps near an edge read rendered
-// depth, not the neighbouring square or a clamp.
-constexpr int kBorderTexels = 3;
 // A spot light wider than this (half angle) takes a cube, as one perspective view would stretch its texels.
 constexpr float kMaxSpotViewHalfAngle = 1.0471976f;  // 60 degrees
 
@@ -82,13 +79,32 @@ ShadowPlan planShadows(const ShadowInputs& in) {
   const glm::mat4 viewProjection = in.camera.projection(in.aspect) * in.camera.view();
   const FrustumPlanes cameraPlanes = frustumPlanes(viewProjection);
   const int maxView = std::min(kMaxShadowView, in.atlasSize / 4);
-  const CascadeSplits splits = cascadeSplits(in.camera, in.scene, kCascades);
+  float nearDepth = 0.0f, farDepth = -1.0f;
+  if (in.receivers) {
+    if (!in.receivers->empty()) {
+      nearDepth = in.receivers->nearDepth();
+      farDepth = in.receivers->farDepth();
+    }
+  } else {
+    depthRange(in.camera, in.scene, nearDepth, farDepth);
+  }
+  const CascadeSplits splits = cascadeSplits(in.camera, nearDepth, farDepth, kCascades);
+  // Whether a perspective view from the light may hold a visible receiver.
+  const auto holdsReceiver = [&](const PointLight& l, const glm::vec3& axis, float tanHalf) {
+    if (!in.receivers) return mayHoldReceiver(cameraPlanes, in.scene, viewVolume(l.position, axis, tanHalf, l.radius));
+    // The widest border the view can have, at the least size: conservative for every size.
+    const ShadowViewPlan widest = perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels);
+    return in.receivers->meets(glm::vec4(l.position, l.radius), frustumPlanes(widest.viewProjection));
+  };
 
   std::vector<Request> requests;
   for (size_t d = 0; d < in.directional.size(); ++d) {
     if (!castsShadows(in.directional[d].castsShadows, in.mode) || splits.count == 0) continue;
     Request r{Request::Directional, uint32_t(d), std::numeric_limits<float>::max(), in.atlasSize / 4, 0, {}};
-    for (int c = 0; c < kCascades; ++c) r.visible.push_back(c < splits.count);
+    for (int c = 0; c < kCascades; ++c) {
+      const float begin = c == 0 ? splits.begin : splits.ends[size_t(c - 1)];
+      r.visible.push_back(c < splits.count && (!in.receivers || in.receivers->holdsDepth(begin, splits.ends[size_t(c)])));
+    }
     requests.push_back(r);
   }
   for (size_t i = 0; i < in.bufferOrder.size(); ++i) {
@@ -99,15 +115,13 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     Request r{spotView ? Request::Spot : Request::Cube, uint32_t(i), importance,
               ceilPow2(importance * (spotView ? 2.0f : 1.0f), kMinShadowView, maxView), 0, {}};
     if (spotView) {
-      r.visible.push_back(mayHoldReceiver(
-          cameraPlanes, in.scene, viewVolume(l.position, l.spot->direction, std::tan(l.spot->outerAngle), l.radius)));
+      r.visible.push_back(holdsReceiver(l, l.spot->direction, std::tan(l.spot->outerAngle)));
     } else {
       for (const glm::vec3& axis : kFaceAxes) {
         // A wide spot light's faces outside its cone (beyond the face's corner angle, atan(sqrt 2)) see nothing lit.
         const bool inCone = !l.spot || std::acos(std::clamp(glm::dot(axis, l.spot->direction), -1.0f, 1.0f)) <
                                            l.spot->outerAngle + 0.9553166f;
-        r.visible.push_back(inCone &&
-                            mayHoldReceiver(cameraPlanes, in.scene, viewVolume(l.position, axis, 1.0f, l.radius)));
+        r.visible.push_back(inCone && holdsReceiver(l, axis, 1.0f));
       }
     }
     requests.push_back(r);
@@ -150,12 +164,12 @@ ShadowPlan planShadows(const ShadowInputs& in) {
       ++plan.stats.unshadowedLights;
       continue;
     }
-    ++plan.stats.shadowedLights;
+    const uint32_t light = plan.stats.shadowedLights++;
     plan.stats.shrunkLights += shrunk[q] ? 1u : 0u;
     r.firstView = uint32_t(plan.views.size());
     for (size_t v = 0; v < r.visible.size(); ++v) {
       if (r.visible[v]) squares.push_back({r.size, plan.views.size()});
-      plan.views.emplace_back();
+      plan.views.emplace_back().light = light;
     }
   }
   packSquares(squares);
@@ -165,6 +179,7 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     const Request& r = requests[q];
     for (size_t v = 0; v < r.visible.size(); ++v) {
       ShadowViewPlan& view = plan.views[r.firstView + v];
+      const uint32_t light = view.light;
       if (!r.visible[v]) {
         ++plan.stats.viewsSkipped;
         continue;
@@ -176,15 +191,17 @@ ShadowPlan planShadows(const ShadowInputs& in) {
         const PointLight& l = in.lights[in.bufferOrder[r.index]];
         const glm::vec3 axis = r.kind == Request::Spot ? l.spot->direction : kFaceAxes[v];
         const float tanHalf90 = r.kind == Request::Spot ? std::tan(l.spot->outerAngle) : 1.0f;
-        view = perspectiveView(l.position, axis, tanHalf90, l.radius, r.size, kBorderTexels);
+        view = perspectiveView(l.position, axis, tanHalf90, l.radius, r.size, kShadowBorderTexels);
+        view.reach = glm::vec4(l.position, l.radius);
       }
+      view.light = light;
       ++plan.stats.viewsRendered;
       plan.stats.texelsUsed += uint64_t(r.size) * uint64_t(r.size);
     }
     if (r.kind == Request::Directional) {
       plan.header.directional[r.index] = glm::uvec4(r.firstView + 1u, uint32_t(splits.count), 0u, 0u);
     } else {
-      plan.lightViews[r.index] = (r.firstView + 1u) | (r.kind == Request::Cube ? kCubeShadow : 0u);
+      plan.lightViews[r.index] = lightShadowEntry(r.firstView, r.size, r.kind == Request::Cube);
     }
   }
   for (const AtlasSquare& s : squares) {

@@ -9,6 +9,7 @@
 #include "core/camera.hpp"
 #include "core/scene.hpp"
 #include "core/shadow_maps.hpp"
+#include "shadows/shadow_receivers.hpp"
 
 namespace pbr {
 
@@ -23,6 +24,9 @@ struct ShadowInputs {
   WorldBounds scene;  // every object's: receivers and casters
   ShadowMode mode = ShadowMode::Auto;
   int atlasSize = 4096;
+  // The visible surfaces the cluster occupancy found; null: receivers are taken to be wherever the scene's bounds
+  // meet the camera's frustum.
+  const ShadowReceivers* receivers = nullptr;
 };
 
 // One square of the atlas, rendered from a light. `size` 0: not rendered, its frustum meets no receiver in view.
@@ -32,6 +36,8 @@ struct ShadowViewPlan {
   int size = 0;
   float texelWorld = 0.0f;  // GpuShadowView::params.x
   bool perspective = true;
+  glm::vec4 reach{0.0f};  // ShadowCasterView::reach
+  uint32_t light = 0;     // which of the plan's shadowed lights owns it, counting from 0 (the debug view's colours)
 };
 
 // What planShadows decided, for `--stats` and the profiler's light statistics.
@@ -61,8 +67,9 @@ constexpr int kCascades = 4;
 
 // Plans a frame's shadows (Olsson et al. 2014, "Efficient Virtual Shadow Maps for Many Lights", in outline): each
 // casting light's resolution from its size on screen; cube faces and spot views whose frustum, bounded by the
-// light's radius, meets no receiver inside the camera's frustum are not rendered; directional lights get kCascades
-// texel-snapped cascades over the view depths that hold the scene. When the atlas cannot hold every square, the
+// light's radius, holds no visible receiver (an occupied cluster, or without them the scene's bounds inside the
+// camera's frustum) are not rendered; directional lights get kCascades texel-snapped cascades over the view depths
+// that hold receivers, a cascade whose depths hold none not rendered. When the atlas cannot hold every square, the
 // least important lights (smallest on screen) are halved first; a light left without a square is counted, never
 // silently dropped.
 ShadowPlan planShadows(const ShadowInputs& inputs);

@@ -32,17 +32,21 @@ void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
   up = glm::cross(right, axis);
 }
 
-CascadeSplits cascadeSplits(const Camera& camera, const WorldBounds& scene, int count) {
-  CascadeSplits s;
-  if (scene.empty()) return s;
+void depthRange(const Camera& camera, const WorldBounds& box, float& nearDepth, float& farDepth) {
   const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  float lo = camera.farPlane, hi = camera.nearPlane;
-  for (const glm::vec3& c : corners(scene)) {
+  nearDepth = 1e30f;
+  farDepth = -1e30f;
+  if (box.empty()) return;
+  for (const glm::vec3& c : corners(box)) {
     const float depth = glm::dot(c - camera.position, forward);
-    lo = std::min(lo, depth);
-    hi = std::max(hi, depth);
+    nearDepth = std::min(nearDepth, depth);
+    farDepth = std::max(farDepth, depth);
   }
-  const float n = std::max(camera.nearPlane, lo), f = std::min(camera.farPlane, hi);
+}
+
+CascadeSplits cascadeSplits(const Camera& camera, float nearDepth, float farDepth, int count) {
+  CascadeSplits s;
+  const float n = std::max(camera.nearPlane, nearDepth), f = std::min(camera.farPlane, farDepth);
   if (!(f > n)) return s;
   constexpr float kLambda = 0.75f;
   s.count = count;
@@ -104,7 +108,7 @@ ShadowViewPlan perspectiveView(const glm::vec3& apex, const glm::vec3& axis, flo
   glm::vec3 right, up;
   frameAround(axis, right, up);
   const float t = tanHalf * float(size) / float(std::max(1, size - 2 * border));
-  const float n = std::max(radius * 1e-3f, 1e-4f);
+  const float n = std::max(radius * kShadowNearScale, 1e-4f);
   ShadowViewPlan v;
   // Reversed Z with the far plane at infinity: depth = n / w, w the distance along the axis.
   v.viewProjection = fromRows(glm::vec4(right / t, -glm::dot(apex, right) / t),

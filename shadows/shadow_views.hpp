@@ -12,7 +12,7 @@ namespace pbr {
 void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up);
 
 // The view depths (distance along the camera's axis) the cascades of a directional light cover: from where the
-// scene's bounds begin in view, or the near plane, to where they end, or the far plane.
+// receivers begin in view, or the near plane, to where they end, or the far plane.
 struct CascadeSplits {
   int count = 0;  // 0 when the scene lies outside the camera's depth range
   float begin = 0.0f;
@@ -20,7 +20,9 @@ struct CascadeSplits {
 };
 // Ends by the practical split scheme (Zhang et al. 2006, "Parallel-Split Shadow Maps"), lambda 0.75: three parts
 // logarithmic to one uniform.
-CascadeSplits cascadeSplits(const Camera& camera, const WorldBounds& scene, int count);
+CascadeSplits cascadeSplits(const Camera& camera, float nearDepth, float farDepth, int count);
+// The view depths a box's corners span.
+void depthRange(const Camera& camera, const WorldBounds& box, float& nearDepth, float& farDepth);
 
 // Cascade `cascade` of a light travelling along unit `direction`: an orthographic square around the bounding
 // sphere of the camera frustum's slice (its size does not change as the camera turns), its centre snapped to whole

@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/accuracy/brdf_slice.hpp"
@@ -22,6 +25,34 @@ double meanOver(const BrdfSlice& s, double loDeg, double hiDeg) {
       if (deg >= loDeg && deg <= hiDeg) sum += s.at(a, r), ++n;
     }
   return sum / n;
+}
+
+// The fields of a CSV line whose quoted fields hold no quotes.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) out.emplace_back();
+    else out.back() += c;
+  }
+  return out;
+}
+
+// The rows of accuracy.csv by variant name, each as column name -> value.
+std::map<std::string, std::map<std::string, std::string>> csvRows(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  do std::getline(in, line);
+  while (line.rfind("# ", 0) == 0);
+  const std::vector<std::string> header = csvFields(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = csvFields(line);
+    REQUIRE(f.size() == header.size());
+    for (size_t i = 0; i < f.size(); ++i) rows[f[0]][header[i]] = f[i];
+  }
+  return rows;
 }
 
 }  // namespace
@@ -57,14 +88,17 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
   const test::TempDir dir;
   const test::PbrRun run = test::runPbr(dir, {"accuracy", "--size", "32x18", "--pair-size", "32x18", "--pair-lights",
                                               "4", "--rounds", "3", "--scenes", "fresnel-floor:40", "--out-dir",
-                                              dir.file("acc"), "--no-chart", "--slices", "--slice-size", "16x8"});
+                                              dir.file("acc"), "--no-chart", "--slices", "--slice-size", "16x8",
+                                              "--shadow-rows", "none"});
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));
   std::string line;
   do std::getline(csv, line);
   while (line.rfind("# ", 0) == 0);
   CHECK(line == "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
-                "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels");
+                "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels,shadow_filter,shadow_atlas,"
+                "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
+                "shadow_pixels");
   std::getline(csv, line);
   // A flat floor is tessellated exactly: its geometry error is zero.
   CHECK(line.rfind("geometry,fresnel-floor-40,reference,", 0) == 0);
@@ -76,7 +110,10 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
     std::vector<std::string> f;
     std::stringstream in(line.substr(line.rfind('"') + 2));
     for (std::string item; std::getline(in, item, ',');) f.push_back(item);
-    REQUIRE(f.size() == 11);  // hdr_format, gbuffer, ns median, p10, p90, fixed share, rmse, mean, max, share, pixels
+    // hdr_format, gbuffer, ns median, p10, p90, fixed share, rmse, mean, max, share, pixels, then the shadow rows'
+    // nine columns, not applicable here
+    REQUIRE(f.size() == 20);
+    CHECK(line.substr(line.rfind('"') + 2).find(",-,-,n/a,n/a,n/a,n/a,n/a,n/a,n/a") != std::string::npos);
     const std::string variant = line.substr(0, line.find(','));
     CHECK(variant == accuracyLadder()[rows].name);
     const double p10 = std::stod(f[3]), median = std::stod(f[2]), p90 = std::stod(f[4]);
@@ -141,4 +178,51 @@ TEST_CASE("pbr render and pbr reference --variant study: the study's model, ever
     CHECK(run.exitCode == 2);
     CHECK(test::isOneLine(run.err));
   }
+}
+
+// The shadow rows on the built-in shadow-trio scene (a sun, a spot and a point light over a sphere and a box on a
+// floor) at 160x90: each light's lit/shadowed state against the reference's shadow rays, outside a 2-pixel band.
+TEST_CASE("pbr accuracy shadow rows: pcf3x3 at a 4096 atlas agrees with the reference's shadow rays, at 256 less") {
+  PBR_REQUIRE_GL();
+  const test::TempDir dir;
+  const test::PbrRun run = test::runPbr(
+      dir, {"accuracy", "--variants", "exact", "--scenes", "fresnel-floor:0", "--size", "160x90", "--pair-size",
+            "32x18", "--pair-lights", "4", "--rounds", "2", "--shadow-rows", "unshadowed,pcf3x3,pcf3x3:256",
+            "--shadow-cost-size", "160x90", "--out-dir", dir.file("acc"), "--no-chart"});
+  REQUIRE_MESSAGE(run.exitCode == 0, run.err);
+  const std::string text = test::readFile(dir.path() / "acc" / "accuracy.csv");
+  CHECK(text.find("# shadow_state: ") != std::string::npos);
+  auto rows = csvRows(text);
+  REQUIRE(rows.count("unshadowed") == 1);
+  REQUIRE(rows.count("shadow-pcf3x3-4096") == 1);
+  REQUIRE(rows.count("shadow-pcf3x3-256") == 1);
+  auto number = [&](const std::string& row, const std::string& column) { return std::stod(rows[row][column]); };
+  for (const char* row : {"unshadowed", "shadow-pcf3x3-4096", "shadow-pcf3x3-256"}) {
+    CAPTURE(row);
+    CHECK(rows[row]["scene"] == "shadow-trio");
+    CHECK(rows[row]["ns_per_pair_median"] == "n/a");
+    CHECK(number(row, "pixels") > 5000);
+    // Every row compares the same pixels: which are compared depends on the reference and the unshadowed frames.
+    CHECK(rows[row]["shadow_pixels"] == rows["unshadowed"]["shadow_pixels"]);
+    CHECK(number(row, "lighting_ms_median") > 0.0);
+    CHECK(number(row, "passes_ms_p10") <= number(row, "passes_ms_median"));
+    CHECK(number(row, "passes_ms_median") <= number(row, "passes_ms_p90"));
+    CHECK(std::filesystem::exists(dir.path() / "acc" / ("error-" + std::string(row) + "-shadow-trio.png")));
+  }
+  CHECK(rows["unshadowed"]["shadow_filter"] == "none");
+  CHECK(rows["shadow-pcf3x3-256"]["shadow_atlas"] == "256");
+  CHECK(number("unshadowed", "shadow_ms_median") == 0.0);  // no light casts: no shadow pass
+  CHECK(number("shadow-pcf3x3-4096", "shadow_ms_median") > 0.0);
+  const double none = number("unshadowed", "misclassified_share");
+  const double fine = number("shadow-pcf3x3-4096", "misclassified_share");
+  const double coarse = number("shadow-pcf3x3-256", "misclassified_share");
+  MESSAGE("misclassified: unshadowed " << none << ", pcf3x3 at 4096 " << fine << ", at 256 " << coarse << " of "
+                                       << rows["unshadowed"]["shadow_pixels"] << " light-pixels");
+  // Unshadowed, every pixel the reference shadows is wrong: the scene must have shadows to miss.
+  CHECK(none > 0.03);
+  CHECK(fine < 0.005);
+  CHECK(coarse > fine);
+  CHECK(coarse < none);
+  CHECK(number("shadow-pcf3x3-4096", "relative_rmse") < number("shadow-pcf3x3-256", "relative_rmse"));
+  CHECK(number("shadow-pcf3x3-256", "relative_rmse") < number("unshadowed", "relative_rmse"));
 }

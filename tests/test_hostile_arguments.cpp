@@ -68,12 +68,12 @@ TEST_CASE("hostile outputs: an option missing its value is named, not the option
 TEST_CASE("hostile outputs: the frame-size check names the option and the limit it is over") {
   pbr::RendererConfig lean;
   // G-buffer, HDR, LDR and the LDR before anti-aliasing, captures (RGBA8 and RGBA32F, buffer and image each), the
-  // lighting pass's running sums, the efficiency channel's pair counts.
-  CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 4 + 8 + 32 + 16 + 8);
+  // lighting pass's running sums, the efficiency channel's pair counts, the shadows channel's light sums.
+  CHECK(pbr::frameBytesPerPixel(lean) == 16 + 8 + 4 + 4 + 8 + 32 + 16 + 8 + 8);
   pbr::RendererConfig wide;
   wide.gbuffer = pbr::GBufferPrecision::Float;
   wide.hdrFormat = pbr::HdrFormat::Rgba32f;
-  CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 4 + 8 + 32 + 16 + 8);
+  CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 4 + 8 + 32 + 16 + 8 + 8);
 
   const pbr::FrameLimits limits{8192, 1'000'000'000};
   CHECK_NOTHROW(pbr::checkFrameSize(8192, 16, "--size", 68, limits));

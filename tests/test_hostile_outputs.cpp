@@ -139,10 +139,10 @@ TEST_CASE("hostile outputs: a frame larger than the limits fails before renderin
   MESSAGE("memory limit case skipped under AddressSanitizer");
 #else
   // Under GL_MAX_TEXTURE_SIZE but over the memory: an address-space limit of 6 GB leaves room for the context and
-  // not for 16384x16384 at 96 bytes per pixel (25.8 GB).
+  // not for 16384x16384 at 104 bytes per pixel (27.9 GB).
   const Run memory = runPbr(dir, tinyRender({"--size", "16384x16384"}), "ulimit -v 6000000; ");
   CHECK(memory.exitCode == 1);
-  checkOneLineNaming(memory, "--size 16384x16384: the frame needs about 25.8 GB (96 bytes per pixel)");
+  checkOneLineNaming(memory, "--size 16384x16384: the frame needs about 27.9 GB (104 bytes per pixel)");
   checkNotRendered(memory);
   const Run pairCost = runPbr(dir, {"accuracy", "--variants", "exact", "--scenes", "sphere-grid", "--size", "32x18",
                                     "--pair-size", "16384x16384", "--out-dir", dir.file("acc")},

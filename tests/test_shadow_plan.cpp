@@ -11,6 +11,7 @@
 
 #include "shadows/atlas_packing.hpp"
 #include "shadows/shadow_plan.hpp"
+#include "shadows/shadow_views.hpp"
 
 namespace {
 
@@ -96,7 +97,9 @@ TEST_CASE("shadow plan: a point light's cube faces, all skipped for a light behi
   CHECK(plan.stats.shadowedLights == 2);
   CHECK(plan.views.size() == 12);
   CHECK((plan.lightViews[0] & pbr::kCubeShadow) != 0);
-  CHECK((plan.lightViews[0] & ~pbr::kCubeShadow) == 1);
+  // First view + 1 in bits 0-25, log2 of the faces' side in bits 26-29.
+  CHECK((plan.lightViews[0] & 0x3ffffffu) == 1);
+  CHECK((1 << ((plan.lightViews[0] >> 26) & 15u)) == plan.views[0].size);
   for (int face = 0; face < 6; ++face) CHECK(plan.views[size_t(6 + face)].size == 0);
   CHECK(plan.stats.viewsRendered == 6);
   CHECK(plan.stats.viewsSkipped == 6);
@@ -150,5 +153,89 @@ TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the scene's depth
       const double shift = (double(va.viewProjection[3][axis]) - double(vb.viewProjection[3][axis])) * va.size / 2.0;
       CHECK(std::abs(shift - std::round(shift)) < 1e-2);
     }
+  }
+}
+
+TEST_CASE("shadow views: the cube faces' frames are those shadow_sample.glsl's cubeFaceLocal assumes") {
+  // cubeFaceLocal reads a face's (right, up, axis) coordinates as these signed components of d; the views are
+  // rendered with frameAround's frames, so the two must be the same vectors.
+  const glm::vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+  const glm::vec3 axes[6] = {X, -X, Y, -Y, Z, -Z};
+  const glm::vec3 rights[6] = {Z, -Z, -Z, Z, -X, X};
+  const glm::vec3 ups[6] = {Y, Y, X, X, Y, Y};
+  for (int face = 0; face < 6; ++face) {
+    glm::vec3 right, up;
+    pbr::frameAround(axes[face], right, up);
+    CHECK(glm::all(glm::equal(right, rights[face])));
+    CHECK(glm::all(glm::equal(up, ups[face])));
+  }
+}
+
+TEST_CASE("shadow maps: a light's entry and a view's square pack what the shader unpacks") {
+  const uint32_t entry = pbr::lightShadowEntry(41, 256, true);
+  CHECK((entry & 0x3ffffffu) == 42);
+  CHECK(((entry >> 26) & 15u) == 8);
+  CHECK((entry & pbr::kCubeShadow) != 0);
+  CHECK((pbr::lightShadowEntry(0, 16, false) & pbr::kCubeShadow) == 0);
+  const uint32_t square = pbr::packShadowSquare({16320, 1024}, 64);
+  CHECK((square & 0x3fffu) == 16320);
+  CHECK(((square >> 14) & 0x3fffu) == 1024);
+  CHECK((square >> 28) == 6);
+  CHECK(pbr::packShadowSquare({0, 0}, 0) == 0);
+  CHECK(pbr::packShadowSquare({0, 0}, 16) != 0);
+}
+
+TEST_CASE("shadow plan: with the clusters' receivers, only views that hold an occupied cluster are rendered") {
+  // The camera at the origin looking down -z, so that view space is world space.
+  pbr::Camera cam;
+  cam.position = {0.0f, 0.0f, 0.0f};
+  cam.target = {0.0f, 0.0f, -1.0f};
+  cam.nearPlane = 0.1f;
+  cam.farPlane = 100.0f;
+  const glm::mat4 inverseView(1.0f);
+  pbr::WorldBounds scene;
+  scene.add(glm::vec3(-20.0f, -20.0f, -40.0f));
+  scene.add(glm::vec3(20.0f, 20.0f, 0.0f));
+  const std::vector<uint32_t> order = identity(1);
+  const std::vector<pbr::PointLight> none;
+  const std::vector<pbr::DirectionalLight> noSuns;
+
+  SUBCASE("a point light over the one occupied cluster renders the face looking down, and no other") {
+    const pbr::ShadowReceivers receivers({{{-0.5f, -0.5f, -5.5f}, {0.5f, 0.5f, -4.5f}, 0}}, inverseView);
+    const std::vector<pbr::PointLight> lights = {light({0.0f, 3.0f, -5.0f}, 6.0f)};
+    pbr::ShadowInputs in{cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene};
+    in.receivers = &receivers;
+    const pbr::ShadowPlan plan = pbr::planShadows(in);
+    REQUIRE(plan.views.size() == 6);
+    CHECK(plan.stats.viewsRendered == 1);
+    CHECK(plan.stats.viewsSkipped == 5);
+    CHECK(plan.views[3].size > 0);  // -Y
+    // Without the receivers, the scene's bounds inside the camera's frustum meet more faces.
+    const pbr::ShadowPlan bounds = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene});
+    CHECK(bounds.stats.viewsRendered > 1);
+  }
+
+  SUBCASE("a sun's cascades span the receivers' depths, and a cascade over none of them is not rendered") {
+    // Receivers near depth 2 and depth 30: the practical split (lambda 0.75) over [1.5, 30.5] ends near 4.6, 9.1,
+    // 16.6 and 30.5, so the middle two cascades hold no receiver.
+    const pbr::ShadowReceivers receivers(
+        {{{-0.5f, -0.5f, -2.5f}, {0.5f, 0.5f, -1.5f}, 0}, {{-0.5f, -0.5f, -30.5f}, {0.5f, 0.5f, -29.5f}, 1}},
+        inverseView);
+    CHECK(receivers.nearDepth() == doctest::Approx(1.5f));
+    CHECK(receivers.farDepth() == doctest::Approx(30.5f));
+    pbr::DirectionalLight sun;
+    sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+    const std::vector<pbr::DirectionalLight> suns = {sun};
+    const std::vector<uint32_t> noOrder;
+    pbr::ShadowInputs in{cam, 16.0f / 9.0f, 720, none, noOrder, suns, scene};
+    in.receivers = &receivers;
+    const pbr::ShadowPlan plan = pbr::planShadows(in);
+    REQUIRE(plan.views.size() == size_t(pbr::kCascades));
+    CHECK(plan.header.cascadeEnds[3] == doctest::Approx(30.5f));
+    CHECK(plan.views[0].size > 0);
+    CHECK(plan.views[1].size == 0);
+    CHECK(plan.views[2].size == 0);
+    CHECK(plan.views[3].size > 0);
+    CHECK(plan.stats.viewsSkipped == 2);
   }
 }

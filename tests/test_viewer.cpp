@@ -141,7 +141,14 @@ TEST_CASE("view: V cycles the debug views and back to the final frame") {
     viewer->handleKey(GLFW_KEY_V);
     CAPTURE(pbr::toString(channel));
     CHECK((viewer->view() == channel));
-    views.push_back(show(*viewer, 1));
+    const ImageRgba8 view = show(*viewer, 1);
+    // The viewer's scene has no light that casts: the shadows view, like the cluster views without clustered
+    // culling, leaves the final frame (the overlay says why).
+    if (channel == pbr::DebugChannel::Shadows) {
+      CHECK(view.pixels == final.pixels);
+      continue;
+    }
+    views.push_back(view);
     CHECK(compare(views.back(), final).mean > 5.0);
   }
   // Every view shows something different from every other.

@@ -77,6 +77,9 @@ Record settingsRecord(const BenchReport& report) {
                    {"max_seconds", fixedDecimals(s.maxSeconds, 3)},
                    {"constant_density", s.constantDensity ? density : "no"},
                    {"spot_share", s.spotShare ? fixedDecimals(*s.spotShare, 3) : "the scene's"},
+                   {"shadows", toString(s.shadows.mode)},
+                   {"shadow_filter", toString(s.shadows.filter)},
+                   {"shadow_atlas", std::to_string(s.shadows.atlasSize)},
                    {"timing_requested", s.timing},
                    {"sweep_configurations", std::to_string(sweepConfigs(s).size())},
                    {"sweep_fingerprint", sweepFingerprint(s)}};
@@ -97,6 +100,9 @@ Json settingsJson(const BenchSettings& s) {
                    {"constant_density", s.constantDensity},
                    {"density_reference_lights", densityReferenceLights(s)},
                    {"spot_share", s.spotShare ? Json(*s.spotShare) : Json()},
+                   {"shadows", toString(s.shadows.mode)},
+                   {"shadow_filter", toString(s.shadows.filter)},
+                   {"shadow_atlas", s.shadows.atlasSize},
                    {"timing_requested", s.timing}};
   for (Culling c : s.culling) settings["culling"].push_back(toString(c));
   for (ShadingModel m : s.models) settings["models"].push_back(toString(m));
@@ -138,6 +144,9 @@ Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
       {"max_lights_per_cluster", cluster(std::to_string(s.maxPerCluster))},
       {"index_entries", cluster(std::to_string(s.indexEntries))},
       {"overflowed_clusters", cluster(std::to_string(s.overflowedClusters))},
+      {"shadowed_lights", measured(std::to_string(s.shadows.shadowedLights))},
+      {"shadow_views_rendered", measured(std::to_string(s.shadows.viewsRendered))},
+      {"shadow_views_skipped", measured(std::to_string(s.shadows.viewsSkipped))},
       {"pairs_evaluated", measured(std::to_string(s.pairs.evaluated))},
       {"pairs_contributing", measured(std::to_string(s.pairs.contributing))},
       {"culling_efficiency", measured(fixedDecimals(s.cullingEfficiency(), 5))},
@@ -210,6 +219,9 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
                                {"max_lights_per_cluster", cluster(s.maxPerCluster)},
                                {"index_entries", cluster(s.indexEntries)},
                                {"overflowed_clusters", cluster(s.overflowedClusters)},
+                               {"shadowed_lights", s.shadows.shadowedLights},
+                               {"shadow_views_rendered", s.shadows.viewsRendered},
+                               {"shadow_views_skipped", s.shadows.viewsSkipped},
                                {"pairs_evaluated", s.pairs.evaluated},
                                {"pairs_contributing", s.pairs.contributing},
                                {"culling_efficiency", s.cullingEfficiency()}}

@@ -52,6 +52,9 @@ BenchSettings readSettings(const JsonField& f) {
   s.constantDensity = density.boolean(false);
   const JsonField spotShare = f["spot_share"];
   if (!spotShare.isNull()) s.spotShare = static_cast<float>(spotShare.real(NumberRule::closed(0.0, 1.0)));
+  s.shadows.mode = keyword(f["shadows"], parseShadowMode);
+  s.shadows.filter = keyword(f["shadow_filter"], parseShadowFilter);
+  s.shadows.atlasSize = integer(f["shadow_atlas"], kMaxShadowAtlas);
   s.timing = f["timing_requested"].string();
   return s;
 }
@@ -108,6 +111,9 @@ BenchResult readResult(const JsonField& c, bool& layout) {
   r.stats.maxPerCluster = static_cast<uint32_t>(countOrZero(s["max_lights_per_cluster"]));
   r.stats.indexEntries = countOrZero(s["index_entries"], std::numeric_limits<uint64_t>::max());
   r.stats.overflowedClusters = static_cast<uint32_t>(countOrZero(s["overflowed_clusters"]));
+  r.stats.shadows.shadowedLights = static_cast<uint32_t>(s["shadowed_lights"].integer(kMaxCount));
+  r.stats.shadows.viewsRendered = static_cast<uint32_t>(s["shadow_views_rendered"].integer(kMaxCount));
+  r.stats.shadows.viewsSkipped = static_cast<uint32_t>(s["shadow_views_skipped"].integer(kMaxCount));
   r.stats.pairs.evaluated = s["pairs_evaluated"].integer(std::numeric_limits<uint64_t>::max());
   r.stats.pairs.contributing = s["pairs_contributing"].integer(std::numeric_limits<uint64_t>::max());
   const JsonField memory = c["memory_bytes"];
@@ -143,7 +149,10 @@ BenchReportFile readBenchReport(const std::string& path) {
   }
   const JsonField configurations = root["configurations"];
   if (!configurations.present()) configurations.expected("an array");
-  for (const JsonField& c : configurations.items()) file.report.results.push_back(readResult(c, file.traceLayout));
+  for (const JsonField& c : configurations.items()) {
+    file.report.results.push_back(readResult(c, file.traceLayout));
+    file.report.results.back().config.shadows = file.report.settings.shadows;  // every configuration's, as measured
+  }
   return file;
 }
 

@@ -48,6 +48,7 @@ BenchRun::BenchRun(const ShaderLibrary& shaders, const Scene& scene, const Bench
   result_.config = config;
   options_.model = config.model;
   options_.culling = config.culling;
+  options_.shadows = config.shadows;
   options_.exposure = scene.displayExposure();
 }
 

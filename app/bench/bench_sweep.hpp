@@ -23,6 +23,7 @@ struct BenchSettings {
   double maxSeconds = 60.0;
   bool constantDensity = false;
   std::optional<float> spotShare;  // --spot-share: the share of random lights that are spots (else the scene's)
+  ShadowSettings shadows;          // --shadows, --shadow-filter, --shadow-atlas: every configuration's
   std::string timing = "auto";  // as requested; the mode used is in the provenance
 };
 
@@ -42,6 +43,7 @@ struct BenchConfig {
   Culling culling = Culling::Clustered;
   ShadingModel model = ShadingModel::Pbr;
   float radiusScale = 1.0f;  // applied to every light's radius
+  ShadowSettings shadows;
   std::string label() const;  // "1024 lights, clustered, pbr"
 };
 

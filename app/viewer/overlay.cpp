@@ -17,6 +17,8 @@
 #include "core/context.hpp"
 #include "core/exposure.hpp"
 #include "core/gl.hpp"
+#include "core/shadow_maps.hpp"
+#include "shadows/shadow_plan.hpp"
 
 namespace pbr {
 
@@ -168,6 +170,15 @@ void Overlay::lightStatistics(Viewer& viewer) {
   } else {
     ImGui::TextDisabled("brute force: every light for every pixel");
   }
+  if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
+    row("shadowed lights", "%.0f", double(s.shadows.shadowedLights));
+    row("  views rendered", "%.0f", double(s.shadows.viewsRendered));
+    row("  views skipped", "%.0f (no receiver in view)", double(s.shadows.viewsSkipped));
+    const int atlas = viewer.frameOptions().shadows.atlasSize;
+    row("  atlas used", "%.1f %%", 100.0 * double(s.shadows.texelsUsed) / (double(atlas) * atlas));
+    if (s.shadows.shrunkLights) row("  shrunk (atlas full)", "%.0f", double(s.shadows.shrunkLights));
+    if (s.shadows.unshadowedLights) row("  no map (atlas full)", "%.0f", double(s.shadows.unshadowedLights));
+  }
   bool counters = viewer.frameOptions().stats;
   if (ImGui::Checkbox("GPU counters (pairs; cost time)", &counters)) viewer.setGpuCounters(counters);
   if (counters && s.pairs.evaluated) {
@@ -175,6 +186,45 @@ void Overlay::lightStatistics(Viewer& viewer) {
     row("pairs contributing", "%.0f", double(s.pairs.contributing));
     row("culling efficiency", "%.3f", s.cullingEfficiency());
   }
+}
+
+void Overlay::shadowControls(Viewer& viewer) {
+  ShadowSettings s = viewer.frameOptions().shadows;
+  int mode = static_cast<int>(s.mode);
+  ImGui::TextUnformatted("shadows");
+  ImGui::SameLine(90.0f);
+  bool changed = false;
+  for (const ShadowMode m : {ShadowMode::Auto, ShadowMode::On, ShadowMode::None}) {
+    if (m != ShadowMode::Auto) ImGui::SameLine();
+    changed |= ImGui::RadioButton(toString(m), &mode, static_cast<int>(m));
+  }
+  s.mode = static_cast<ShadowMode>(mode);
+  ImGui::Indent();
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::BeginCombo("filter", toString(s.filter))) {
+    for (const ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf3x3, ShadowFilter::Poisson16}) {
+      if (ImGui::Selectable(toString(filter), filter == s.filter)) {
+        s.filter = filter;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SetNextItemWidth(120.0f);
+  const std::string atlasLabel = std::to_string(s.atlasSize) + " (" +
+                                 std::to_string(shadowAtlasBytes(s.atlasSize) >> 20) + " MiB)";
+  if (ImGui::BeginCombo("atlas", atlasLabel.c_str())) {
+    for (int size = kMinShadowAtlas; size <= kMaxShadowAtlas; size *= 2) {
+      const std::string label = std::to_string(size) + " (" + std::to_string(shadowAtlasBytes(size) >> 20) + " MiB)";
+      if (ImGui::Selectable(label.c_str(), size == s.atlasSize)) {
+        s.atlasSize = size;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::Unindent();
+  if (changed) viewer.setShadows(s);
 }
 
 void Overlay::controls(Viewer& viewer) {
@@ -200,6 +250,8 @@ void Overlay::controls(Viewer& viewer) {
   ImGui::SameLine();
   if (ImGui::RadioButton("none (brute force)", &culling, 1)) viewer.setCulling(Culling::None);
 
+  shadowControls(viewer);
+
   if (ImGui::BeginCombo("debug view", viewName(viewer.view()))) {
     if (ImGui::Selectable("final", !viewer.view())) viewer.setView(std::nullopt);
     for (const DebugChannel channel : kDebugChannels) {
@@ -209,6 +261,9 @@ void Overlay::controls(Viewer& viewer) {
   }
   if (viewer.view() && needsClusterGrid(*viewer.view()) && f.culling != Culling::Clustered) {
     ImGui::TextDisabled("(the cluster views need clustered culling)");
+  }
+  if (viewer.view() == DebugChannel::Shadows && !viewer.lightStats().shadows.shadowedLights) {
+    ImGui::TextDisabled("(no light casts: shadows on makes every light cast)");
   }
 
   // Exposure in stops of the display multiplier, and the camera's EV100 that gives it with the scene's

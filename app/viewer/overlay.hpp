@@ -32,6 +32,7 @@ class Overlay {
   void frameTimes(const Viewer& viewer);
   void lightStatistics(Viewer& viewer);
   void controls(Viewer& viewer);
+  void shadowControls(Viewer& viewer);  // which lights cast, the filter and the atlas size
   void environment(Viewer& viewer);
   void camera(Viewer& viewer);
   void keys();

@@ -63,6 +63,7 @@ class Viewer {
   void setModel(ShadingModel model) { options_.frame.model = model; }
   void setVariant(const ShadingVariant& variant) { options_.frame.variant = variant; }
   void setCulling(Culling culling) { options_.frame.culling = culling; }
+  void setShadows(const ShadowSettings& shadows) { options_.frame.shadows = shadows; }
   void setView(std::optional<DebugChannel> view) { view_ = view; }
   void setExposure(float exposure) { options_.frame.exposure = exposure; }
   void setPaused(bool paused) { options_.paused = paused; }

@@ -52,6 +52,17 @@ layout(std430, binding = LIGHTING_STATS_SSBO) buffer PairStats { uvec2 groupPair
 layout(rg32ui, binding = PAIR_COUNT_IMAGE) uniform uimage2D pairCounts;
 #endif
 #define COUNT_PAIRS (LIGHTING_STATS || LIGHTING_PAIR_IMAGE)
+#if SHADOW_LIGHT_IMAGE
+// Per pixel: the luminance casting lights bring with their shadows and without, summed over the dispatches of
+// LIGHT_CHUNKS, for the shadows debug view.
+layout(rg32f, binding = SHADOW_LIGHT_IMAGE_UNIT) uniform image2D shadowLight;
+vec2 gShadowLight;
+// The light's luminance before and after its visibility v (Rec. 709 weights).
+void addShadowLight(vec3 c, float v) {
+  float y = dot(c, vec3(0.2126, 0.7152, 0.0722));
+  gShadowLight += vec2(y * v, y);
+}
+#endif
 
 // The radiance target's format (LightingPass::program): the qualifier must match the texture's, and HDR_MAX is
 // its largest finite value, so that a clamp keeps the store from rounding to Inf.
@@ -110,7 +121,11 @@ void visitLight(Surface s, uint k) {
   if (entry != 0u && c.r + c.g + c.b > 0.0) {
     float d2;
     vec3 L = directionToLight(s.position, s.normal, light, d2);
-    c *= lightShadowVisibility(entry, light.positionRadius.xyz, s.position, s.normal, L);
+    float v = lightShadowVisibility(entry, light.positionRadius, s.position, s.normal, L);
+#if SHADOW_LIGHT_IMAGE
+    addShadowLight(c, v);
+#endif
+    c *= v;
   }
   gColor += c;
 #else
@@ -133,7 +148,11 @@ vec3 shadeEnvironment(Surface s) {
 #if SHADOWS
     vec3 c = shadeDirectional(s, directionalLights[i]);
     if (directionalShadow[i].x != 0u && c.r + c.g + c.b > 0.0) {
-      c *= directionalShadowVisibility(i, s.viewDepth, s.position, s.normal, directionalLights[i].toLight.xyz);
+      float v = directionalShadowVisibility(i, s.viewDepth, s.position, s.normal, directionalLights[i].toLight.xyz);
+#if SHADOW_LIGHT_IMAGE
+      addShadowLight(c, v);
+#endif
+      c *= v;
     }
     color += c;
 #else
@@ -160,6 +179,9 @@ void main() {
 #if LIGHTING_PAIR_IMAGE
     imageStore(pairCounts, p, uvec4(0u));
 #endif
+#if SHADOW_LIGHT_IMAGE
+    imageStore(shadowLight, p, vec4(0.0));
+#endif
 #if LIGHT_CHUNKS
     if (lightChunk.w == 0u) return;
 #endif
@@ -171,6 +193,9 @@ void main() {
     return;
   }
   beginShading(s);
+#if SHADOW_LIGHT_IMAGE
+  gShadowLight = vec2(0.0);
+#endif
 #if LIGHT_CHUNKS
   gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + shadeEnvironment(s) : imageLoad(partialRadiance, p).rgb;
 #else
@@ -217,6 +242,12 @@ void main() {
   if (lightChunk.z == 0u) pairs += imageLoad(pairCounts, p).xy;
 #endif
   imageStore(pairCounts, p, uvec4(pairs, 0u, 0u));
+#endif
+#if SHADOW_LIGHT_IMAGE
+#if LIGHT_CHUNKS
+  if (lightChunk.z == 0u) gShadowLight += imageLoad(shadowLight, p).xy;
+#endif
+  imageStore(shadowLight, p, vec4(gShadowLight, 0.0, 0.0));
 #endif
 #if LIGHT_CHUNKS
   if (lightChunk.w == 0u) {

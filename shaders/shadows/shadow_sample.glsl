@@ -16,9 +16,12 @@ layout(std430, binding = SHADOW_VIEW_SSBO) readonly buffer ShadowViews {
   vec4 shadowAtlas;                                 // x: size in texels, y: its inverse
   ShadowView shadowViews[];
 };
-// Per light-buffer index: 0 without shadows, else the first view + 1, SHADOW_CUBE set for six cube faces.
+// Per light-buffer index: 0 without shadows, else the first view + 1 (bits 0-25), log2 of its views' side (bits
+// 26-29), SHADOW_CUBE set for six cube faces (pbr::lightShadowEntry).
 layout(std430, binding = LIGHT_SHADOW_SSBO) readonly buffer LightShadows { uint lightShadow[]; };
 #define SHADOW_CUBE 0x80000000u
+// Per view: its atlas square, origin x | y << 14 | log2(side) << 28 in texels, 0 not rendered (pbr::packShadowSquare).
+layout(std430, binding = SHADOW_SQUARE_SSBO) readonly buffer ShadowSquares { uint shadowSquares[]; };
 
 layout(binding = SHADOW_ATLAS_UNIT) uniform sampler2DShadow shadowAtlasMap;
 
@@ -43,54 +46,121 @@ float shadowTap(vec4 rect, vec2 uv, float depth) {
   return texture(shadowAtlasMap, vec3(clamp(uv, lo, hi), depth));
 }
 
+#if !defined(SHADOW_FILTER_HARD) && !defined(SHADOW_FILTER_POISSON16)
+// The 3x3 grid of bilinear comparisons a texel apart, from four gathers: the nine taps around texel coordinate t
+// cover the 4x4 texels from floor(t - 0.5) - 1, each weighted (1 - f, 1, 1, f) along each axis (f the bilinear
+// fraction), so gathering those 16 comparisons and weighting them gives the nine taps' sum in fewer fetches. The
+// gathers' corners stay inside the view's square, as the taps' clamp keeps them.
+float shadowGrid3x3(vec4 rect, vec2 uv, float depth) {
+  vec2 t = uv * shadowAtlas.x - 0.5, base = floor(t), f = t - base;
+  vec2 lo = rect.xy * shadowAtlas.x + 1.0, hi = (rect.xy + rect.zw) * shadowAtlas.x - 3.0;
+  vec2 c = clamp(base, lo, hi) * shadowAtlas.y;  // the corner between the block's first two texels
+  float d = 2.0 * shadowAtlas.y;
+  // Gather order: (x0, y1), (x1, y1), (x1, y0), (x0, y0).
+  vec4 g00 = textureGather(shadowAtlasMap, c, depth);
+  vec4 g10 = textureGather(shadowAtlasMap, c + vec2(d, 0.0), depth);
+  vec4 g01 = textureGather(shadowAtlasMap, c + vec2(0.0, d), depth);
+  vec4 g11 = textureGather(shadowAtlasMap, c + vec2(d, d), depth);
+  vec4 wx = vec4(1.0 - f.x, 1.0, 1.0, f.x), wy = vec4(1.0 - f.y, 1.0, 1.0, f.y);
+  float sum = wy.x * (wx.x * g00.w + wx.y * g00.z + wx.z * g10.w + wx.w * g10.z) +
+              wy.y * (wx.x * g00.x + wx.y * g00.y + wx.z * g10.x + wx.w * g10.y) +
+              wy.z * (wx.x * g01.w + wx.y * g01.z + wx.z * g11.w + wx.w * g11.z) +
+              wy.w * (wx.x * g01.x + wx.y * g01.y + wx.z * g11.x + wx.w * g11.y);
+  return sum * (1.0 / 9.0);
+}
+#endif
+
 // Visibility from view `index` of the point `position` with unit normal `normal`, lit from unit direction L.
 // Normal-offset bias (Holbein 2011, "Normal Offset Shadows"): the point moves along its normal by what a plane
 // tilted by theta from the light needs over the filter's reach, reach tan(theta) in depth, i.e. reach sin(theta)
 // texels along the normal, plus half a texel for depth rounding.
-float shadowVisibility(uint index, vec3 position, vec3 normal, vec3 L) {
-  ShadowView v = shadowViews[index];
-  if (v.rect.z <= 0.0) return 1.0;
-  vec4 clip = v.viewProjection * vec4(position, 1.0);
-  // A perspective view's texel grows with w, the distance along its axis.
-  float texel = v.params.x * (v.params.y > 0.0 ? clip.w : 1.0);
-  float NoL = clamp(dot(normal, L), 0.0, 1.0);
-  clip += v.viewProjection * vec4(normal * (texel * (0.5 + SHADOW_REACH * sqrt(1.0 - NoL * NoL))), 0.0);
-  if (clip.w <= 0.0) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  vec2 uv = v.rect.xy + (ndc.xy * 0.5 + 0.5) * v.rect.zw;
-  float depth = ndc.z;
+// The filtered comparison of reversed-Z `depth` at atlas coordinate `uv` inside the square `rect` (atlas UV).
+float shadowFilter(vec4 rect, vec2 uv, float depth) {
 #if defined(SHADOW_FILTER_HARD)
-  return shadowTap(v.rect, (floor(uv * shadowAtlas.x) + 0.5) * shadowAtlas.y, depth);
+  return shadowTap(rect, (floor(uv * shadowAtlas.x) + 0.5) * shadowAtlas.y, depth);
 #elif defined(SHADOW_FILTER_POISSON16)
   float sum = 0.0;
-  for (int i = 0; i < 16; ++i) sum += shadowTap(v.rect, uv + kPoisson16[i] * (1.5 * shadowAtlas.y), depth);
+  for (int i = 0; i < 16; ++i) sum += shadowTap(rect, uv + kPoisson16[i] * (1.5 * shadowAtlas.y), depth);
   return sum * (1.0 / 16.0);
 #else
-  float sum = 0.0;
-  for (int y = -1; y <= 1; ++y) {
-    for (int x = -1; x <= 1; ++x) sum += shadowTap(v.rect, uv + vec2(x, y) * shadowAtlas.y, depth);
-  }
-  return sum * (1.0 / 9.0);
+  return shadowGrid3x3(rect, uv, depth);
 #endif
 }
 
-// A point or spot light's visibility; `entry` is its lightShadow value (non-zero).
-float lightShadowVisibility(uint entry, vec3 lightPosition, vec3 position, vec3 normal, vec3 L) {
-  uint first = (entry & ~SHADOW_CUBE) - 1u;
-  if ((entry & SHADOW_CUBE) == 0u) return shadowVisibility(first, position, normal, L);
-  // The cube face of the major axis from the light to the point: +X, -X, +Y, -Y, +Z, -Z.
-  vec3 d = position - lightPosition, a = abs(d);
-  uint face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u)
-            : a.y >= a.z              ? (d.y >= 0.0 ? 2u : 3u)
-                                      : (d.z >= 0.0 ? 4u : 5u);
-  return shadowVisibility(first + face, position, normal, L);
+// The offset's length along the normal for a texel of world size `texel` at the point.
+float normalOffset(float texel, vec3 normal, vec3 L) {
+  float NoL = clamp(dot(normal, L), 0.0, 1.0);
+  return texel * (0.5 + SHADOW_REACH * sqrt(1.0 - NoL * NoL));
 }
 
-// A directional light's visibility from the cascade that holds the pixel's view depth.
+float shadowVisibility(ShadowView v, vec3 position, vec3 normal, vec3 L) {
+  if (v.rect.z <= 0.0) return 1.0;
+  // A perspective view's texel grows with w, the distance along its axis (an orthographic view's w is 1).
+  mat4 m = v.viewProjection;
+  float w = m[0].w * position.x + m[1].w * position.y + m[2].w * position.z + m[3].w;
+  vec4 clip = m * vec4(position + normal * normalOffset(v.params.x * w, normal, L), 1.0);
+  if (clip.w <= 0.0) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  return shadowFilter(v.rect, v.rect.xy + (ndc.xy * 0.5 + 0.5) * v.rect.zw, ndc.z);
+}
+
+// Coordinates of d in the frame of cube face `face` (+X, -X, +Y, -Y, +Z, -Z): right, up and along the axis, as
+// pbr::frameAround builds the faces' views (a test checks the two agree).
+vec3 cubeFaceLocal(uint face, vec3 d) {
+  switch (face) {
+    case 0u: return vec3(d.z, d.y, d.x);
+    case 1u: return vec3(-d.z, d.y, -d.x);
+    case 2u: return vec3(-d.z, d.x, d.y);
+    case 3u: return vec3(d.z, d.x, -d.y);
+    case 4u: return vec3(-d.x, d.y, d.z);
+    default: return vec3(d.x, d.y, -d.z);
+  }
+}
+
+// The cube face of the major axis of d.
+uint cubeFace(vec3 d) {
+  vec3 a = abs(d);
+  return a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
+}
+
+// A cube light's visibility from its six faces, each a 90-degree view widened by SHADOW_BORDER_TEXELS with its near
+// plane at SHADOW_NEAR_SCALE R (pbr::perspectiveView): only the face's square is read from memory. The face is
+// chosen after the normal offset, so the filter's reach stays inside the face's border.
+float cubeShadowVisibility(uint entry, vec4 lightPositionRadius, vec3 position, vec3 normal, vec3 L) {
+  float side = float(1u << ((entry >> 26) & 15u));
+  float t = side / (side - 2.0 * SHADOW_BORDER_TEXELS);  // tan of the half angle with the border
+  vec3 d = position - lightPositionRadius.xyz, a = abs(d);
+  float w = max(max(a.x, a.y), a.z);  // distance along the nearest face's axis
+  d += normal * normalOffset(2.0 * t / side * w, normal, L);
+  uint face = cubeFace(d);
+  uint square = shadowSquares[(entry & 0x3ffffffu) - 1u + face];
+  if (square == 0u) return 1.0;
+  vec3 f = cubeFaceLocal(face, d);
+  if (f.z <= 0.0) return 1.0;
+  vec4 rect = vec4(float(square & 0x3fffu), float((square >> 14) & 0x3fffu), side, side) * shadowAtlas.y;
+  float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
+  return shadowFilter(rect, rect.xy + (f.xy / (t * f.z) * 0.5 + 0.5) * rect.zw, near / f.z);
+}
+
+// A point or spot light's visibility; `entry` is its lightShadow value (non-zero).
+float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec3 position, vec3 normal, vec3 L) {
+  if ((entry & SHADOW_CUBE) != 0u) return cubeShadowVisibility(entry, lightPositionRadius, position, normal, L);
+  return shadowVisibility(shadowViews[(entry & 0x3ffffffu) - 1u], position, normal, L);
+}
+
+// A directional light's visibility from the cascade that holds the pixel's view depth. Every cascade's view is
+// read, at an index the same for all pixels, and the pixel's picked among them: cheaper than reading one view at
+// an index that differs between pixels (a load per pixel rather than one shared).
 float directionalShadowVisibility(uint light, float viewDepth, vec3 position, vec3 normal, vec3 L) {
   uvec4 entry = directionalShadow[light];
   if (entry.x == 0u) return 1.0;
-  uint cascade = 0u;
-  while (cascade + 1u < entry.y && viewDepth > cascadeEnds[cascade]) ++cascade;
-  return shadowVisibility(entry.x - 1u + cascade, position, normal, L);
+  ShadowView v = shadowViews[entry.x - 1u];
+  for (uint c = 1u; c < entry.y; ++c) {
+    ShadowView next = shadowViews[entry.x - 1u + c];
+    bool beyond = viewDepth > cascadeEnds[c - 1u];
+    v.viewProjection = beyond ? next.viewProjection : v.viewProjection;
+    v.rect = beyond ? next.rect : v.rect;
+    v.params = beyond ? next.params : v.params;
+  }
+  return shadowVisibility(v, position, normal, L);
 }

@@ -1,0 +1,118 @@
+#include "app/accuracy/shadow_rows.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "renderer/display_image.hpp"
+#include "renderer/offscreen.hpp"
+
+namespace pbr {
+
+const char* const kDefaultShadowRows = "unshadowed,hard,pcf3x3,poisson16,pcf3x3:1024,pcf3x3:16384";
+
+namespace {
+
+ShadowRow parseShadowRow(const std::string& item) {
+  ShadowRow row;
+  if (item == "unshadowed") {
+    row.name = item;
+    row.settings.mode = ShadowMode::None;
+    return row;
+  }
+  const size_t colon = item.find(':');
+  try {
+    row.settings.filter = parseShadowFilter(item.substr(0, colon));
+    if (colon != std::string::npos) {
+      size_t used = 0;
+      const std::string atlas = item.substr(colon + 1);
+      row.settings.atlasSize = std::stoi(atlas, &used);
+      if (used != atlas.size()) throw std::invalid_argument("not a number");
+    }
+  } catch (const std::exception&) {
+    throw std::invalid_argument("shadow row '" + item + "': expected unshadowed, FILTER or FILTER:ATLAS (filters "
+                                "hard, pcf3x3, poisson16)");
+  }
+  const int a = row.settings.atlasSize;
+  if (a < kMinShadowAtlas || a > kMaxShadowAtlas || (a & (a - 1)) != 0)
+    throw std::invalid_argument("shadow row '" + item + "': the atlas must be a power of two from 256 to 16384");
+  row.settings.mode = ShadowMode::Auto;
+  row.name = std::string("shadow-") + toString(row.settings.filter) + "-" + std::to_string(a);
+  return row;
+}
+
+}  // namespace
+
+std::vector<ShadowRow> parseShadowRows(const std::string& list) {
+  std::vector<ShadowRow> rows;
+  if (list == "none") return rows;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) rows.push_back(parseShadowRow(item));
+  if (rows.empty()) throw std::invalid_argument("no shadow row listed (none for no rows)");
+  return rows;
+}
+
+const AccuracyVariant& shadowRowVariant() { return accuracyLadder().front(); }
+
+RendererConfig shadowRowConfig() {
+  RendererConfig config;
+  config.hdrFormat = shadowRowVariant().hdr;
+  config.gbuffer = shadowRowVariant().gbuffer;
+  return config;
+}
+
+FrameOptions shadowRowOptions(const ShadowRow& row, const Scene& scene) {
+  FrameOptions options;
+  options.model = shadowRowVariant().model;
+  options.variant = shadowRowVariant().shading;
+  options.exposure = scene.displayExposure();
+  options.shadows = row.settings;
+  return options;
+}
+
+ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
+                                   const reference::ReferenceOptions& referenceOptions, TimingMode timing)
+    : shaders_(shaders), scene_(scene), size_(size), timing_(timing) {
+  reference::ReferenceOptions options = referenceOptions;
+  options.shadows = ShadowMode::Auto;
+  reference_ = reference::renderReference(scene, size.x, size.y, options);
+  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure());
+  Scene dark = scene;
+  dark.ambient = glm::vec3(0.0f);
+  dark.lights.clear();
+  dark.directionalLights.clear();
+  std::vector<Scene> alone;
+  for (const PointLight& l : scene.lights) {
+    if (!castsShadows(l.castsShadows, ShadowMode::Auto)) continue;
+    alone.push_back(dark);
+    alone.back().lights = {l};
+  }
+  for (const DirectionalLight& l : scene.directionalLights) {
+    if (!castsShadows(l.castsShadows, ShadowMode::Auto)) continue;
+    alone.push_back(dark);
+    alone.back().directionalLights = {l};
+  }
+  const ShadowRow unshadowed = parseShadowRow("unshadowed");
+  for (Scene& s : alone) {
+    LightAlone l{std::move(s), {}, {}};
+    l.reference = reference::renderReference(l.scene, size.x, size.y, options);
+    const FrameOptions plain = shadowRowOptions(unshadowed, l.scene);
+    l.unshadowed = renderOffscreen(shaders, l.scene, size, plain, 2, shadowRowConfig(), timing).hdr;
+    lights_.push_back(std::move(l));
+  }
+}
+
+ShadowRowResult ShadowComparison::measure(const ShadowRow& row) const {
+  const RendererConfig config = shadowRowConfig();
+  ShadowRowResult r;
+  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, shadowRowOptions(row, scene_), 3, config, timing_);
+  r.error = measureError(f.hdr, f.ldr, reference_, referenceLdr_);
+  r.relativeError = relativeErrorPerPixel(f.hdr, reference_);
+  for (const LightAlone& l : lights_) {
+    const ImageRgbaF shadowed =
+        renderOffscreen(shaders_, l.scene, size_, shadowRowOptions(row, l.scene), 2, config, timing_).hdr;
+    r.agreement += compareShadowState(visibilityRatio(shadowed, l.unshadowed), l.reference, kShadowBandPx);
+  }
+  return r;
+}
+
+}  // namespace pbr
