@@ -42,6 +42,11 @@ MeshData makeSphereMesh(int segments, int rings) {
   return m;
 }
 
+float sphereTessellationDepth(float radius, int segments) {
+  const float s = std::sin(3.14159265f / static_cast<float>(segments));
+  return radius * s * s;
+}
+
 MeshData makeBoxMesh() {
   MeshData m;
   const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

@@ -23,6 +23,9 @@ struct MeshData {
 // Each shape fits the unit cube centred at the origin.
 MeshData makePlaneMesh();                      // the square y = 0, x and z in [-0.5, 0.5], normal +Y
 MeshData makeSphereMesh(int segments = 64, int rings = 32);  // radius 0.5
+// How far inside a sphere of `radius` its tessellation into `segments` around and segments / 2 rings lies at most:
+// a facet spanning 2 pi / segments both ways has its centre radius (1 - cos^2(pi / segments)) in.
+float sphereTessellationDepth(float radius, int segments);
 MeshData makeBoxMesh();                        // the unit cube, flat normals per face
 
 }  // namespace pbr

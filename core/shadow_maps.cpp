@@ -40,8 +40,9 @@ uint32_t log2Side(int size) {
 
 }  // namespace
 
-uint32_t lightShadowEntry(uint32_t firstView, int size, bool cube) {
-  return (firstView + 1u) | log2Side(size) << 26 | (cube ? kCubeShadow : 0u);
+uint32_t lightShadowEntry(uint32_t firstView, int size, LightShadowKind kind) {
+  const uint32_t flags = kind == LightShadowKind::Cube ? kCubeShadow : kind == LightShadowKind::SpotFrameX ? kShadowFrameX : 0u;
+  return (firstView + 1u) | log2Side(size) << 26 | flags;
 }
 
 uint32_t packShadowSquare(glm::ivec2 origin, int size) {

@@ -50,17 +50,24 @@ struct ShadowCasterView {
   // A point or spot light's sphere (centre, radius; w 0 for a cascade): what it lights lies inside, so only a caster
   // meeting it can stand between the light and a lit point.
   glm::vec4 reach{0.0f};
+  // A texel's world size per unit of the view's w (the distance along a perspective view's axis; an orthographic
+  // view's w is 1): how coarse a caster's tessellation may be in this view.
+  float texelWorld = 0.0f;
 };
 
 // A point or spot light's entry in `lightViews`: 0 without shadows; else its first view + 1 in bits 0-25, log2 of
-// its views' side in bits 26-29, and kCubeShadow set when it owns six cube faces (+X, -X, +Y, -Y, +Z, -Z) rather
-// than one perspective view.
+// its views' side in bits 26-29, kCubeShadow set when it owns six cube faces (+X, -X, +Y, -Y, +Z, -Z) rather than
+// one perspective view, and for a spot view kShadowFrameX set when its frame was built around the x axis rather
+// than y (frameAround's choice, which the shader cannot remake exactly from a rounded axis).
 constexpr uint32_t kCubeShadow = 0x80000000u;
-uint32_t lightShadowEntry(uint32_t firstView, int size, bool cube);
+constexpr uint32_t kShadowFrameX = 0x40000000u;
+enum class LightShadowKind { Spot, SpotFrameX, Cube };
+uint32_t lightShadowEntry(uint32_t firstView, int size, LightShadowKind kind);
 
-// A view's entry in `squares`: its atlas origin x | y << 14 | log2(side) << 28 in texels; 0 when not rendered. A cube
-// face is looked up from it alone: the face's frame, field of view and near plane follow from the light's position
-// and radius (shaders/shadows/shadow_sample.glsl), which saves reading its 96-byte view per light-pixel pair.
+// A view's entry in `squares`: its atlas origin x | y << 14 | log2(side) << 28 in texels; 0 when not rendered. Cube
+// faces and spot views are looked up from it alone: the view's frame, field of view and near plane follow from the
+// light's position, radius and cone (shaders/shadows/shadow_sample.glsl), which saves reading its 96-byte view per
+// light-pixel pair.
 uint32_t packShadowSquare(glm::ivec2 origin, int size);
 
 // A perspective view's border around its field of view, in texels: filter taps near an edge read rendered depth,

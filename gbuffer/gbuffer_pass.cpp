@@ -57,6 +57,9 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
 
 // The defines of the depth permutation a caster draws with (shaders/gbuffer/shadow_depth.*): ALPHA_MASK for an
 // alpha-masked material, and BASE_COLOR_MAP where its alpha comes from a texture.
+// The shadow casters' coarser spheres: segments around (half as many rings), coarsest first.
+constexpr std::array<int, 3> kSphereLodSegments = {8, 16, 32};
+
 ShaderDefines depthPermutation(bool masked, bool maskTexture) {
   return concat({{"ALPHA_MASK", masked ? "1" : "0"}, {"BASE_COLOR_MAP", maskTexture ? "1" : "0"}},
                 gbufferBindingDefines());
@@ -121,6 +124,17 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
     d.castsCutOut = o.material.alphaMode == AlphaMode::Mask;
     d.cutOutTexture = d.castsCutOut && o.material.baseColorTexture >= 0;
+    d.triangles = scene.meshes.at(static_cast<size_t>(o.mesh)).indices.size() / 3;
+    if (o.shape == Shape::Sphere) {
+      const glm::mat3 m(o.transform);
+      d.sphereCentre = glm::vec3(o.transform[3]);
+      d.sphereRadius = 0.5f * std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+      if (sphereLods_.empty()) {
+        for (const int segments : kSphereLodSegments) {
+          sphereLods_.emplace_back(makeSphereMesh(segments, segments / 2), "shadow sphere " + std::to_string(segments));
+        }
+      }
+    }
     bounds_.add(d.bounds);
     const std::array<int, kMapCount> maps = materialMaps(o.material);
     for (size_t unit = 0; unit < kMapCount; ++unit) {
@@ -179,6 +193,21 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+const GpuMesh& GBufferPass::casterMesh(const Draw& d, const glm::vec4& wRow, float texelWorld) const {
+  const GpuMesh& own = meshes_[static_cast<size_t>(d.mesh)];
+  if (!(d.sphereRadius > 0.0f)) return own;
+  // The smallest w on the sphere, where its texels are smallest.
+  const float w = glm::dot(glm::vec3(wRow), d.sphereCentre) + wRow.w - d.sphereRadius * glm::length(glm::vec3(wRow));
+  if (!(w > 0.0f)) return own;
+  const float texel = texelWorld * w;
+  for (size_t i = 0; i < kSphereLodSegments.size(); ++i) {
+    const int segments = kSphereLodSegments[i];
+    const size_t triangles = size_t(segments) * size_t(segments);  // segments x segments / 2 quads
+    if (triangles < d.triangles && sphereTessellationDepth(d.sphereRadius, segments) <= 0.25f * texel) return sphereLods_[i];
+  }
+  return own;
+}
+
 size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -202,6 +231,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
     glViewport(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
     for (const Program* p : distinctDepthPrograms_) glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
     const FrustumPlanes planes = frustumPlanes(v.viewProjection);
+    const glm::vec4 wRow(v.viewProjection[0][3], v.viewProjection[1][3], v.viewProjection[2][3], v.viewProjection[3][3]);
     const Program* bound = nullptr;
     for (size_t i = 0; i < draws_.size(); ++i) {
       const Draw& d = draws_[i];
@@ -216,7 +246,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
       }
       glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
                         sizeof(ObjectBlock));
-      meshes_[static_cast<size_t>(d.mesh)].draw();
+      casterMesh(d, wRow, v.texelWorld).draw();
       ++drawn;
     }
   }

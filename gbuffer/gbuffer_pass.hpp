@@ -47,7 +47,16 @@ class GBufferPass {
     WorldBounds bounds;
     bool castsCutOut;    // alpha-masked: discards below its cut-off in the shadow maps too
     bool cutOutTexture;  // its alpha comes from the base colour map
+    // An analytic sphere (Shape::Sphere): its centre and world radius (its largest axis), from which the shadow
+    // views pick a coarser tessellation; radius 0 for every other shape.
+    glm::vec3 sphereCentre;
+    float sphereRadius;
+    size_t triangles;
   };
+  // The tessellation a caster is drawn with in a view whose texels have world size texelWorld per unit of w, the
+  // view's w row being `wRow`: its own mesh, or for a sphere the coarsest of sphereLods_ that stays within a quarter
+  // texel of the sphere.
+  const GpuMesh& casterMesh(const Draw& d, const glm::vec4& wRow, float texelWorld) const;
   // The material's Scene::textures index per texture unit, -1 for none.
   static std::array<int, kMapCount> materialMaps(const Material& material);
 
@@ -56,6 +65,7 @@ class GBufferPass {
   std::vector<const Program*> depthPrograms_;  // per draw, once shadows are first drawn
   std::vector<const Program*> distinctDepthPrograms_;
   std::vector<GpuMesh> meshes_;
+  std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;
   GLsizeiptr blockStride_;

@@ -48,7 +48,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     const GpuShadowView gpu{v.viewProjection, glm::vec4(glm::vec2(v.origin) * scale, glm::vec2(float(v.size) * scale)),
                             glm::vec4(v.texelWorld, v.perspective ? 1.0f : 0.0f, 0.0f, 0.0f)};
     std::memcpy(bytes.data() + sizeof(GpuShadowHeader) + i * sizeof(GpuShadowView), &gpu, sizeof gpu);
-    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach});
+    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld});
   }
   ensureBuffer(views_, "shadows.views", bytes.size());
   views_->upload(bytes.data(), bytes.size());

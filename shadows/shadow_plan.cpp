@@ -201,7 +201,11 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     if (r.kind == Request::Directional) {
       plan.header.directional[r.index] = glm::uvec4(r.firstView + 1u, uint32_t(splits.count), 0u, 0u);
     } else {
-      plan.lightViews[r.index] = lightShadowEntry(r.firstView, r.size, r.kind == Request::Cube);
+      const PointLight& l = in.lights[in.bufferOrder[r.index]];
+      const LightShadowKind kind = r.kind == Request::Cube              ? LightShadowKind::Cube
+                                   : frameAroundX(l.spot->direction) ? LightShadowKind::SpotFrameX
+                                                                     : LightShadowKind::Spot;
+      plan.lightViews[r.index] = lightShadowEntry(r.firstView, r.size, kind);
     }
   }
   for (const AtlasSquare& s : squares) {

@@ -26,8 +26,10 @@ std::array<glm::vec3, 8> corners(const WorldBounds& b) {
 
 }  // namespace
 
+bool frameAroundX(const glm::vec3& axis) { return !(std::abs(axis.y) < 0.99f); }
+
 void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
-  const glm::vec3 helper = std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 helper = frameAroundX(axis) ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
   right = glm::normalize(glm::cross(axis, helper));
   up = glm::cross(right, axis);
 }

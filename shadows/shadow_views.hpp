@@ -8,8 +8,11 @@
 
 namespace pbr {
 
-// Two unit vectors completing unit `axis` to an orthonormal frame, the same for the same axis every frame.
+// Two unit vectors completing unit `axis` to an orthonormal frame, the same for the same axis every frame:
+// right = normalize(cross(axis, helper)), up = cross(right, axis), the helper y unless the axis is within 8 degrees
+// of it, then x.
 void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up);
+bool frameAroundX(const glm::vec3& axis);  // whether frameAround's helper is x
 
 // The view depths (distance along the camera's axis) the cascades of a directional light cover: from where the
 // receivers begin in view, or the near plane, to where they end, or the far plane.

@@ -175,6 +175,34 @@ TEST_CASE("bench: a tiny sweep writes CSV and JSON with every column filled and 
   }
 }
 
+TEST_CASE("bench: --shadows on shadows every light, and each configuration reports its shadow pass and views") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun run = runTinySweep(dir, {"--shadows", "on", "--shadow-atlas", "1024"});
+  CAPTURE(run.err);
+  REQUIRE(run.exitCode == 0);
+  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  CHECK(csv.provenance.at("shadows") == "on");
+  CHECK(csv.provenance.at("shadow_atlas") == "1024");
+  REQUIRE(csv.rows.size() == 4);
+  const Json json = Json::parse(pbr::test::readFile(dir.file("bench.json")));
+  CHECK(json.at("settings").at("shadows") == "on");
+  for (size_t i = 0; i < csv.rows.size(); ++i) {
+    const auto& row = csv.rows[i];
+    CAPTURE(row.at("lights"));
+    CAPTURE(row.at("culling"));
+    REQUIRE(isNumber(row.at("shadow_median_ms")));
+    CHECK(std::stod(row.at("shadow_median_ms")) >= 0.0);
+    // The random lights are point lights: six cube faces each, rendered or skipped (no receiver in view).
+    const int lights = std::stoi(row.at("lights"));
+    CHECK(std::stoi(row.at("shadowed_lights")) == lights);
+    CHECK(std::stoi(row.at("shadow_views_rendered")) + std::stoi(row.at("shadow_views_skipped")) == 6 * lights);
+    CHECK(std::stoi(row.at("shadow_views_rendered")) > 0);
+    const Json& stats = json.at("configurations").at(i).at("light_stats");
+    CHECK(stats.at("shadow_views_rendered").get<int>() == std::stoi(row.at("shadow_views_rendered")));
+  }
+}
+
 TEST_CASE("bench: the trace is Chrome trace-event JSON with one slice per pass per timed frame") {
   PBR_REQUIRE_GL();
   const TempDir dir;

@@ -172,11 +172,16 @@ TEST_CASE("shadow views: the cube faces' frames are those shadow_sample.glsl's c
 }
 
 TEST_CASE("shadow maps: a light's entry and a view's square pack what the shader unpacks") {
-  const uint32_t entry = pbr::lightShadowEntry(41, 256, true);
+  const uint32_t entry = pbr::lightShadowEntry(41, 256, pbr::LightShadowKind::Cube);
   CHECK((entry & 0x3ffffffu) == 42);
   CHECK(((entry >> 26) & 15u) == 8);
   CHECK((entry & pbr::kCubeShadow) != 0);
-  CHECK((pbr::lightShadowEntry(0, 16, false) & pbr::kCubeShadow) == 0);
+  CHECK((entry & pbr::kShadowFrameX) == 0);
+  const uint32_t spot = pbr::lightShadowEntry(0, 16, pbr::LightShadowKind::SpotFrameX);
+  CHECK((spot & pbr::kCubeShadow) == 0);
+  CHECK((spot & pbr::kShadowFrameX) != 0);
+  CHECK((spot & 0x3ffffffu) == 1);
+  CHECK((pbr::lightShadowEntry(0, 16, pbr::LightShadowKind::Spot) & (pbr::kCubeShadow | pbr::kShadowFrameX)) == 0);
   const uint32_t square = pbr::packShadowSquare({16320, 1024}, 64);
   CHECK((square & 0x3fffu) == 16320);
   CHECK(((square >> 14) & 0x3fffu) == 1024);

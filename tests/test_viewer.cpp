@@ -438,3 +438,35 @@ TEST_CASE("view: a scene's directional light stays lit through animated frames")
   CHECK(sum / double(shown.pixels.size() / 4) > 20.0);
   checkMatches(shown, rendered);
 }
+
+TEST_CASE("view: the overlay's shadow settings reach the frame, and the shadows debug view shows them") {
+  const TempDir dir;
+  const std::string scene = dir.file("sun.json");
+  std::ofstream(scene) << R"({
+    "camera": {"position": [0, 3, 6], "target": [0, 0.5, 0], "fov_y_deg": 50},
+    "objects": [
+      {"shape": "plane", "transform": {"scale": 8}, "material": {"base_color": [0.8, 0.8, 0.8], "roughness": 0.6}},
+      {"shape": "sphere", "transform": {"translate": [0, 1, 0]}, "material": {"base_color": [0.9, 0.3, 0.2], "roughness": 0.4}}
+    ],
+    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "illuminance_lux": 3}]
+  })";
+  const auto viewer = openViewer(kSize, "", scene);
+  if (!viewer) return;
+  const ImageRgba8 shadowed = show(*viewer);
+  checkMatches(shadowed, headless(dir, kSize, {"--scene", scene}));
+  pbr::ShadowSettings settings = viewer->frameOptions().shadows;
+  settings.mode = pbr::ShadowMode::None;
+  viewer->setShadows(settings);
+  const ImageRgba8 plain = show(*viewer);
+  checkMatches(plain, headless(dir, kSize, {"--scene", scene, "--shadows", "none"}));
+  CHECK(compare(plain, shadowed).mean > 0.5);  // the sphere's shadow on the floor is gone
+  settings.mode = pbr::ShadowMode::Auto;
+  settings.filter = pbr::ShadowFilter::Hard;
+  settings.atlasSize = 1024;
+  viewer->setShadows(settings);
+  checkMatches(show(*viewer),
+               headless(dir, kSize, {"--scene", scene, "--shadow-filter", "hard", "--shadow-atlas", "1024"}));
+  viewer->setView(pbr::DebugChannel::Shadows);
+  checkMatches(show(*viewer), headless(dir, kSize, {"--scene", scene, "--shadow-filter", "hard", "--shadow-atlas",
+                                                    "1024", "--debug", "shadows"}));
+}

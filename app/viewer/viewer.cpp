@@ -105,7 +105,9 @@ void Viewer::recordTimings(double frameMs) {
   const std::string configuration = std::string(toString(f.model)) + toString(f.variant) + toString(f.culling) +
                                     viewName(view_) + std::to_string(lightCount()) + "@" + std::to_string(size.x) +
                                     "x" + std::to_string(size.y) + (f.stats ? " counters " : " ") +
-                                    (scene_.environment ? scene_.environment->file + "|" : "none");
+                                    (scene_.environment ? scene_.environment->file + "|" : "none") + " shadows " +
+                                    toString(f.shadows.mode) + toString(f.shadows.filter) +
+                                    std::to_string(f.shadows.atlasSize);
   const int thisFrame = framesRendered_ - 1;
   if (configuration != lastConfiguration_) {
     lastConfiguration_ = configuration;

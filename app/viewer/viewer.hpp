@@ -141,7 +141,8 @@ class Viewer {
   Clock::time_point lastFrame_, lastTitle_, lastStats_;
   PassHistory passHistory_;  // every frame's pass times, warm or not: the graph shows what a change costs
   LightStats lightStats_;
-  // Warm frames only: a frame after a change of model, variant, culling, view, light count, environment or size
+  // Warm frames only: a frame after a change of model, variant, culling, view, light count, environment, shadow
+  // settings or size
   // compiles shaders and resizes lists, so timings restart two frames after any change.
   std::deque<FrameTiming> warmTimings_;
   std::deque<double> warmFrameMs_;  // wall time between presented warm frames

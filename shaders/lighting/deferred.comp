@@ -121,7 +121,7 @@ void visitLight(Surface s, uint k) {
   if (entry != 0u && c.r + c.g + c.b > 0.0) {
     float d2;
     vec3 L = directionToLight(s.position, s.normal, light, d2);
-    float v = lightShadowVisibility(entry, light.positionRadius, s.position, s.normal, L);
+    float v = lightShadowVisibility(entry, light.positionRadius, cone, s.position, s.normal, L);
 #if SHADOW_LIGHT_IMAGE
     addShadowLight(c, v);
 #endif

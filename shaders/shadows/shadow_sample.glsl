@@ -17,9 +17,10 @@ layout(std430, binding = SHADOW_VIEW_SSBO) readonly buffer ShadowViews {
   ShadowView shadowViews[];
 };
 // Per light-buffer index: 0 without shadows, else the first view + 1 (bits 0-25), log2 of its views' side (bits
-// 26-29), SHADOW_CUBE set for six cube faces (pbr::lightShadowEntry).
+// 26-29), SHADOW_CUBE set for six cube faces, SHADOW_FRAME_X for a spot view framed around x (pbr::lightShadowEntry).
 layout(std430, binding = LIGHT_SHADOW_SSBO) readonly buffer LightShadows { uint lightShadow[]; };
 #define SHADOW_CUBE 0x80000000u
+#define SHADOW_FRAME_X 0x40000000u
 // Per view: its atlas square, origin x | y << 14 | log2(side) << 28 in texels, 0 not rendered (pbr::packShadowSquare).
 layout(std430, binding = SHADOW_SQUARE_SSBO) readonly buffer ShadowSquares { uint shadowSquares[]; };
 
@@ -123,6 +124,15 @@ uint cubeFace(vec3 d) {
   return a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
 }
 
+// The visibility at view-frame coordinates f (right, up, along the axis; after the normal offset) of a perspective
+// view with half-angle tangent t (border included) whose square is `square` (pbr::packShadowSquare) of side `side`,
+// its near plane `near`: the projection pbr::perspectiveView renders with.
+float perspectiveShadow(uint square, float side, float t, float near, vec3 f) {
+  if (square == 0u || f.z <= 0.0) return 1.0;
+  vec4 rect = vec4(float(square & 0x3fffu), float((square >> 14) & 0x3fffu), side, side) * shadowAtlas.y;
+  return shadowFilter(rect, rect.xy + (f.xy / (t * f.z) * 0.5 + 0.5) * rect.zw, near / f.z);
+}
+
 // A cube light's visibility from its six faces, each a 90-degree view widened by SHADOW_BORDER_TEXELS with its near
 // plane at SHADOW_NEAR_SCALE R (pbr::perspectiveView): only the face's square is read from memory. The face is
 // chosen after the normal offset, so the filter's reach stays inside the face's border.
@@ -133,19 +143,32 @@ float cubeShadowVisibility(uint entry, vec4 lightPositionRadius, vec3 position, 
   float w = max(max(a.x, a.y), a.z);  // distance along the nearest face's axis
   d += normal * normalOffset(2.0 * t / side * w, normal, L);
   uint face = cubeFace(d);
-  uint square = shadowSquares[(entry & 0x3ffffffu) - 1u + face];
-  if (square == 0u) return 1.0;
-  vec3 f = cubeFaceLocal(face, d);
-  if (f.z <= 0.0) return 1.0;
-  vec4 rect = vec4(float(square & 0x3fffu), float((square >> 14) & 0x3fffu), side, side) * shadowAtlas.y;
   float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
-  return shadowFilter(rect, rect.xy + (f.xy / (t * f.z) * 0.5 + 0.5) * rect.zw, near / f.z);
+  return perspectiveShadow(shadowSquares[(entry & 0x3ffffffu) - 1u + face], side, t, near, cubeFaceLocal(face, d));
 }
 
-// A point or spot light's visibility; `entry` is its lightShadow value (non-zero).
-float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec3 position, vec3 normal, vec3 L) {
+// A spot light's visibility from its one view over the outer cone: the axis and the cone's angle from the light's
+// cone (pbr::GpuSpotCone: the axis times the falloff's scale s, offset -cos(outer) s), the frame as pbr::frameAround
+// builds it around the helper axis the entry names.
+float spotShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec3 position, vec3 normal, vec3 L) {
+  float side = float(1u << ((entry >> 26) & 15u));
+  float scale = length(cone.xyz);
+  vec3 axis = cone.xyz / scale;
+  float cosOuter = -cone.w / scale;
+  float t = sqrt(max(1.0 - cosOuter * cosOuter, 0.0)) / cosOuter * side / (side - 2.0 * SHADOW_BORDER_TEXELS);
+  vec3 right = normalize(cross(axis, (entry & SHADOW_FRAME_X) != 0u ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 up = cross(right, axis);
+  vec3 d = position - lightPositionRadius.xyz;
+  d += normal * normalOffset(2.0 * t / side * dot(d, axis), normal, L);
+  float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
+  return perspectiveShadow(shadowSquares[(entry & 0x3ffffffu) - 1u], side, t, near,
+                           vec3(dot(d, right), dot(d, up), dot(d, axis)));
+}
+
+// A point or spot light's visibility; `entry` is its lightShadow value (non-zero), `cone` its spot cone.
+float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec3 position, vec3 normal, vec3 L) {
   if ((entry & SHADOW_CUBE) != 0u) return cubeShadowVisibility(entry, lightPositionRadius, position, normal, L);
-  return shadowVisibility(shadowViews[(entry & 0x3ffffffu) - 1u], position, normal, L);
+  return spotShadowVisibility(entry, lightPositionRadius, cone, position, normal, L);
 }
 
 // A directional light's visibility from the cascade that holds the pixel's view depth. Every cascade's view is
