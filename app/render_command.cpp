@@ -50,10 +50,12 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--aa", "none|fxaa",
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
        "never filtered", toString(kDisplayAntiAliasing), ""},
-      {"--debug", "CHANNEL", "a debug channel with its legend in place of the frame: " + debugChannelNames() +
-                                 " (efficiency: contributing / evaluated light-pixel pairs per pixel; shadows: the light "
-                                 "casting lights bring over what they would unshadowed, 0 black, with the shadow "
-                                 "atlas inset; clusters and slices need --culling clustered)", "", "none, the frame itself"},
+      {"--debug", "CHANNEL",
+       "a debug channel with its legend in place of the frame: " + debugChannelNames() +
+           " (efficiency: contributing / evaluated light-pixel pairs per pixel; shadows: the light casting lights "
+           "bring over what they would unshadowed, 0 black, with the shadow atlas inset; clusters and slices need "
+           "--culling clustered)",
+       "", "none, the frame itself"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
       {"--exposure", "X", "exposure multiplier before ACES", "", "the scene's, 1"},

@@ -41,7 +41,9 @@ uint32_t log2Side(int size) {
 }  // namespace
 
 uint32_t lightShadowEntry(uint32_t firstView, int size, LightShadowKind kind) {
-  const uint32_t flags = kind == LightShadowKind::Cube ? kCubeShadow : kind == LightShadowKind::SpotFrameX ? kShadowFrameX : 0u;
+  const uint32_t flags = kind == LightShadowKind::Cube         ? kCubeShadow
+                         : kind == LightShadowKind::SpotFrameX ? kShadowFrameX
+                                                               : 0u;
   return (firstView + 1u) | log2Side(size) << 26 | flags;
 }
 

@@ -19,25 +19,23 @@ namespace pbr {
 // maps belong to their maker.
 struct ShadowMaps {
   GLuint atlas = 0, atlasSampler = 0;  // DEPTH_COMPONENT32F, reversed Z (1 nearest the light), compare GEQUAL
-  GLuint views = 0;                    // storage buffer: ShadowHeader then ShadowView[]
+  GLuint views = 0;                    // storage buffer: GpuShadowHeader then the cascades' GpuCascadeView[]
   GLuint lightViews = 0;               // storage buffer: per light-buffer index, its first view (see below)
   GLuint squares = 0;                  // storage buffer: per view, its square packed (packShadowSquare)
 };
 
-// std430 mirror of `ShadowView` in shaders/shadows/shadow_sample.glsl: one square of the atlas, rendered from a
-// light (a cube face, a spot light's cone, a cascade of a directional light).
-struct GpuShadowView {
-  glm::mat4 viewProjection;  // world -> the light's clip space, reversed Z
-  glm::vec4 rect;            // atlas UV of the square: offset xy, size zw; size 0: not rendered, everything lit
-  // x: world size of a texel, at unit distance along the view axis (perspective) or everywhere (orthographic);
-  // y: 1 perspective, 0 orthographic
-  glm::vec4 params;
+// std430 mirror of `CascadeView` in shaders/shadows/shadow_sample.glsl: one cascade of a directional light, an
+// orthographic view (cube faces and spot views need no record: see packShadowSquare).
+struct GpuCascadeView {
+  glm::vec4 rows[3];  // world -> the light's clip space x, y and reversed-Z depth (w is 1)
+  glm::vec4 rect;     // atlas UV of the square: offset xy, size zw; size 0: not rendered, everything lit
+  glm::vec4 params;   // x: world size of a texel
 };
-static_assert(sizeof(GpuShadowView) == 96, "GpuShadowView must match its std430 layout");
+static_assert(sizeof(GpuCascadeView) == 80, "GpuCascadeView must match its std430 layout");
 
 // std430 mirror of the header of `ShadowViews` in shaders/shadows/shadow_sample.glsl.
 struct GpuShadowHeader {
-  glm::uvec4 directional[kMaxDirectionalLights];  // per directional light: x first view + 1 (0: none), y cascades
+  glm::uvec4 directional[kMaxDirectionalLights];  // per directional light: x first cascade + 1 (0: none), y cascades
   glm::vec4 cascadeEnds;                          // view depth where each cascade ends
   glm::vec4 atlas;                                // x size in texels, y its inverse
 };

@@ -203,7 +203,9 @@ const GpuMesh& GBufferPass::casterMesh(const Draw& d, const glm::vec4& wRow, flo
   for (size_t i = 0; i < kSphereLodSegments.size(); ++i) {
     const int segments = kSphereLodSegments[i];
     const size_t triangles = size_t(segments) * size_t(segments);  // segments x segments / 2 quads
-    if (triangles < d.triangles && sphereTessellationDepth(d.sphereRadius, segments) <= 0.25f * texel) return sphereLods_[i];
+    if (triangles < d.triangles && sphereTessellationDepth(d.sphereRadius, segments) <= 0.5f * texel) {
+      return sphereLods_[i];
+    }
   }
   return own;
 }

@@ -280,8 +280,8 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   const DebugGroup group("cluster occupancy");
   occupancyProgram_.use();
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8), groupsFor(static_cast<uint32_t>(f.viewport.y), 8),
-                    1);
+  glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8),
+                    groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

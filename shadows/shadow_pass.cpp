@@ -4,6 +4,8 @@
 #include <cstring>
 #include <string>
 
+#include <glm/matrix.hpp>
+
 namespace pbr {
 
 namespace {
@@ -37,18 +39,35 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     framebuffer_->checkComplete();
   }
 
-  std::vector<unsigned char> bytes(sizeof(GpuShadowHeader) + plan.views.size() * sizeof(GpuShadowView));
-  std::memcpy(bytes.data(), &plan.header, sizeof plan.header);
+  // The header, its directional entries pointing at the cascades' records, which follow it.
+  GpuShadowHeader header = plan.header;
   const float scale = 1.0f / float(inputs.atlasSize);
+  std::vector<GpuCascadeView> cascades;
+  for (glm::uvec4& entry : header.directional) {
+    if (entry.x == 0u) continue;
+    const uint32_t first = entry.x - 1u;
+    entry.x = uint32_t(cascades.size()) + 1u;
+    for (uint32_t c = 0; c < entry.y; ++c) {
+      const ShadowViewPlan& v = plan.views[first + c];
+      const glm::mat4 rows = glm::transpose(v.viewProjection);
+      cascades.push_back({{rows[0], rows[1], rows[2]},
+                          glm::vec4(glm::vec2(v.origin) * scale, glm::vec2(float(v.size) * scale)),
+                          glm::vec4(v.texelWorld, 0.0f, 0.0f, 0.0f)});
+    }
+  }
+  std::vector<unsigned char> bytes(sizeof header + cascades.size() * sizeof(GpuCascadeView));
+  std::memcpy(bytes.data(), &header, sizeof header);
+  if (!cascades.empty()) {
+    std::memcpy(bytes.data() + sizeof header, cascades.data(), cascades.size() * sizeof(GpuCascadeView));
+  }
   std::vector<ShadowCasterView> casterViews;
   std::vector<uint32_t> squares(plan.views.size());
   for (size_t i = 0; i < plan.views.size(); ++i) {
     const ShadowViewPlan& v = plan.views[i];
     squares[i] = packShadowSquare(v.origin, v.size);
-    const GpuShadowView gpu{v.viewProjection, glm::vec4(glm::vec2(v.origin) * scale, glm::vec2(float(v.size) * scale)),
-                            glm::vec4(v.texelWorld, v.perspective ? 1.0f : 0.0f, 0.0f, 0.0f)};
-    std::memcpy(bytes.data() + sizeof(GpuShadowHeader) + i * sizeof(GpuShadowView), &gpu, sizeof gpu);
-    if (v.size > 0) casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld});
+    if (v.size > 0) {
+      casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld});
+    }
   }
   ensureBuffer(views_, "shadows.views", bytes.size());
   views_->upload(bytes.data(), bytes.size());

@@ -93,7 +93,8 @@ ShadowPlan planShadows(const ShadowInputs& in) {
   const auto holdsReceiver = [&](const PointLight& l, const glm::vec3& axis, float tanHalf) {
     if (!in.receivers) return mayHoldReceiver(cameraPlanes, in.scene, viewVolume(l.position, axis, tanHalf, l.radius));
     // The widest border the view can have, at the least size: conservative for every size.
-    const ShadowViewPlan widest = perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels);
+    const ShadowViewPlan widest =
+        perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels);
     return in.receivers->meets(glm::vec4(l.position, l.radius), frustumPlanes(widest.viewProjection));
   };
 
@@ -103,7 +104,8 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     Request r{Request::Directional, uint32_t(d), std::numeric_limits<float>::max(), in.atlasSize / 4, 0, {}};
     for (int c = 0; c < kCascades; ++c) {
       const float begin = c == 0 ? splits.begin : splits.ends[size_t(c - 1)];
-      r.visible.push_back(c < splits.count && (!in.receivers || in.receivers->holdsDepth(begin, splits.ends[size_t(c)])));
+      const bool holds = !in.receivers || in.receivers->holdsDepth(begin, splits.ends[size_t(c)]);
+      r.visible.push_back(c < splits.count && holds);
     }
     requests.push_back(r);
   }

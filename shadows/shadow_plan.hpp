@@ -34,8 +34,7 @@ struct ShadowViewPlan {
   glm::mat4 viewProjection{1.0f};
   glm::ivec2 origin{0};  // atlas texels
   int size = 0;
-  float texelWorld = 0.0f;  // GpuShadowView::params.x
-  bool perspective = true;
+  float texelWorld = 0.0f;  // world size of a texel per unit of the view's w (ShadowCasterView::texelWorld)
   glm::vec4 reach{0.0f};  // ShadowCasterView::reach
   uint32_t light = 0;     // which of the plan's shadowed lights owns it, counting from 0 (the debug view's colours)
 };
@@ -50,8 +49,8 @@ struct ShadowStats {
   uint64_t texelsUsed = 0;       // atlas texels of the rendered views
 };
 
-// The frame's shadow views and, per light, which views it owns: the GPU buffers' contents (GpuShadowView,
-// GpuShadowHeader, kCubeShadow entries) and the squares to render.
+// The frame's shadow views and, per light, which views it owns: what the GPU buffers are made from (the header, whose
+// directional entries here name views, the lights' entries) and the squares to render.
 struct ShadowPlan {
   std::vector<ShadowViewPlan> views;
   std::vector<uint32_t> lightViews;  // per light-buffer index

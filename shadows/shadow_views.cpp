@@ -101,7 +101,6 @@ ShadowViewPlan cascadeView(const Camera& camera, float aspect, const CascadeSpli
                               glm::vec4(-d / (tMax - tMin), tMax / (tMax - tMin)), glm::vec4(0, 0, 0, 1));
   v.size = size;
   v.texelWorld = texel;
-  v.perspective = false;
   return v;
 }
 
@@ -118,7 +117,6 @@ ShadowViewPlan perspectiveView(const glm::vec3& apex, const glm::vec3& axis, flo
                               glm::vec4(axis, -glm::dot(apex, axis)));
   v.size = size;
   v.texelWorld = 2.0f * t / float(size);
-  v.perspective = true;
   return v;
 }
 

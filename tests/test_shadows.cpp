@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/shadow_metrics.hpp"
+#include "core/mesh.hpp"
 #include "reference/raycast.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/offscreen.hpp"
@@ -373,4 +374,50 @@ TEST_CASE("shadows: a spot and a point light over a sphere agree with the refere
     CHECK(a.shadowed > 100);
     CHECK(a.misclassifiedShare() <= 0.01);
   }
+}
+
+TEST_CASE("shadows: a built-in sphere cast with a coarser tessellation shadows as its full mesh does") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{320, 180};
+  // A 256 atlas caps the light's faces at 64 texels, about 10 cm at the sphere (radius 1, 3 m below the light), so
+  // that a 16-segment sphere, within 3.8 cm of it, qualifies; the same sphere as a plain mesh (Shape::Mesh) is always
+  // drawn whole.
+  const glm::mat4 place = glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}), glm::vec3(2.0f));
+  pbr::Scene coarse;
+  coarse.camera.position = {0.0f, 7.0f, 9.0f};
+  coarse.camera.target = {0.0f, 0.0f, 0.0f};
+  coarse.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)), grey(0.6f));
+  pbr::Scene whole = coarse;
+  coarse.addShape(pbr::Shape::Sphere, place, grey(0.7f));
+  whole.meshes.push_back(pbr::makeSphereMesh());
+  whole.objects.push_back({pbr::Shape::Mesh, int(whole.meshes.size()) - 1, place, grey(0.7f)});
+  pbr::PointLight light;
+  light.position = {-0.5f, 5.0f, 0.3f};
+  light.radius = 8.0f;
+  light.luminousPower = 2000.0f;
+  light.castsShadows = true;
+  coarse.lights = whole.lights = {light};
+  pbr::FrameOptions options, plain;
+  options.shadows.atlasSize = 256;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  const std::vector<float> a = pbr::visibilityRatio(pbr::renderOffscreen(shaders, coarse, size, options, 2).hdr,
+                                                    pbr::renderOffscreen(shaders, coarse, size, plain, 2).hdr);
+  const std::vector<float> b = pbr::visibilityRatio(pbr::renderOffscreen(shaders, whole, size, options, 2).hdr,
+                                                    pbr::renderOffscreen(shaders, whole, size, plain, 2).hdr);
+  REQUIRE(a.size() == b.size());
+  size_t compared = 0, shadowed = 0, differ = 0;
+  float largest = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i] < 0.0f || b[i] < 0.0f) continue;
+    ++compared;
+    shadowed += b[i] < 0.5f ? 1 : 0;
+    differ += std::abs(a[i] - b[i]) > 0.25f ? 1 : 0;
+    largest = std::max(largest, std::abs(a[i] - b[i]));
+  }
+  MESSAGE(compared << " pixels, " << shadowed << " shadowed, " << differ << " differ by over 0.25, largest "
+                   << largest);
+  CHECK(shadowed > 300);
+  CHECK(largest > 0.0f);  // the coarser tessellation was drawn
+  CHECK(differ <= compared / 500);
 }

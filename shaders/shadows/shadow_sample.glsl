@@ -2,20 +2,21 @@
 // between inside the filter's penumbra. The atlas holds reversed-Z depth (1 nearest the light); a comparison passes
 // where the receiver is at least as near the light as the nearest caster.
 
-// Mirrors pbr::GpuShadowView, std430.
-struct ShadowView {
-  mat4 viewProjection;  // world -> the light's clip space
-  vec4 rect;            // atlas UV: offset xy, size zw; size 0: not rendered (nothing visible in it), lit
-  vec4 params;          // x: texel world size (per unit of w when perspective), y: 1 perspective
+// Mirrors pbr::GpuCascadeView, std430: one cascade of a directional light, an orthographic view.
+struct CascadeView {
+  vec4 row0, row1, row2;  // world -> the light's clip x, y and reversed-Z depth (w is 1)
+  vec4 rect;              // atlas UV: offset xy, size zw; size 0: not rendered (nothing visible in it), lit
+  vec4 params;            // x: texel world size
 };
 
-// Mirrors pbr::GpuShadowHeader, then the views.
+// Mirrors pbr::GpuShadowHeader, then the cascades.
 layout(std430, binding = SHADOW_VIEW_SSBO) readonly buffer ShadowViews {
-  uvec4 directionalShadow[MAX_DIRECTIONAL_LIGHTS];  // x: first view + 1 (0: none), y: cascades
+  uvec4 directionalShadow[MAX_DIRECTIONAL_LIGHTS];  // x: first cascade + 1 (0: none), y: cascades
   vec4 cascadeEnds;                                 // view depth where each cascade ends
   vec4 shadowAtlas;                                 // x: size in texels, y: its inverse
-  ShadowView shadowViews[];
+  CascadeView cascadeViews[];
 };
+
 // Per light-buffer index: 0 without shadows, else the first view + 1 (bits 0-25), log2 of its views' side (bits
 // 26-29), SHADOW_CUBE set for six cube faces, SHADOW_FRAME_X for a spot view framed around x (pbr::lightShadowEntry).
 layout(std430, binding = LIGHT_SHADOW_SSBO) readonly buffer LightShadows { uint lightShadow[]; };
@@ -71,10 +72,6 @@ float shadowGrid3x3(vec4 rect, vec2 uv, float depth) {
 }
 #endif
 
-// Visibility from view `index` of the point `position` with unit normal `normal`, lit from unit direction L.
-// Normal-offset bias (Holbein 2011, "Normal Offset Shadows"): the point moves along its normal by what a plane
-// tilted by theta from the light needs over the filter's reach, reach tan(theta) in depth, i.e. reach sin(theta)
-// texels along the normal, plus half a texel for depth rounding.
 // The filtered comparison of reversed-Z `depth` at atlas coordinate `uv` inside the square `rect` (atlas UV).
 float shadowFilter(vec4 rect, vec2 uv, float depth) {
 #if defined(SHADOW_FILTER_HARD)
@@ -88,21 +85,13 @@ float shadowFilter(vec4 rect, vec2 uv, float depth) {
 #endif
 }
 
-// The offset's length along the normal for a texel of world size `texel` at the point.
+// The offset's length along the normal for a texel of world size `texel` at the point, whose unit normal is `normal`
+// and unit direction to the light L. Normal-offset bias (Holbein 2011, "Normal Offset Shadows"): the point moves
+// along its normal by what a plane tilted by theta from the light needs over the filter's reach, reach tan(theta) in
+// depth, i.e. reach sin(theta) texels along the normal, plus half a texel for depth rounding.
 float normalOffset(float texel, vec3 normal, vec3 L) {
   float NoL = clamp(dot(normal, L), 0.0, 1.0);
   return texel * (0.5 + SHADOW_REACH * sqrt(1.0 - NoL * NoL));
-}
-
-float shadowVisibility(ShadowView v, vec3 position, vec3 normal, vec3 L) {
-  if (v.rect.z <= 0.0) return 1.0;
-  // A perspective view's texel grows with w, the distance along its axis (an orthographic view's w is 1).
-  mat4 m = v.viewProjection;
-  float w = m[0].w * position.x + m[1].w * position.y + m[2].w * position.z + m[3].w;
-  vec4 clip = m * vec4(position + normal * normalOffset(v.params.x * w, normal, L), 1.0);
-  if (clip.w <= 0.0) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  return shadowFilter(v.rect, v.rect.xy + (ndc.xy * 0.5 + 0.5) * v.rect.zw, ndc.z);
 }
 
 // Coordinates of d in the frame of cube face `face` (+X, -X, +Y, -Y, +Z, -Z): right, up and along the axis, as
@@ -121,7 +110,9 @@ vec3 cubeFaceLocal(uint face, vec3 d) {
 // The cube face of the major axis of d.
 uint cubeFace(vec3 d) {
   vec3 a = abs(d);
-  return a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
+  return a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u)
+       : a.y >= a.z              ? (d.y >= 0.0 ? 2u : 3u)
+                                 : (d.z >= 0.0 ? 4u : 5u);
 }
 
 // The visibility at view-frame coordinates f (right, up, along the axis; after the normal offset) of a perspective
@@ -171,19 +162,15 @@ float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec
   return spotShadowVisibility(entry, lightPositionRadius, cone, position, normal, L);
 }
 
-// A directional light's visibility from the cascade that holds the pixel's view depth. Every cascade's view is
-// read, at an index the same for all pixels, and the pixel's picked among them: cheaper than reading one view at
-// an index that differs between pixels (a load per pixel rather than one shared).
+// A directional light's visibility from the cascade that holds the pixel's view depth.
 float directionalShadowVisibility(uint light, float viewDepth, vec3 position, vec3 normal, vec3 L) {
   uvec4 entry = directionalShadow[light];
   if (entry.x == 0u) return 1.0;
-  ShadowView v = shadowViews[entry.x - 1u];
-  for (uint c = 1u; c < entry.y; ++c) {
-    ShadowView next = shadowViews[entry.x - 1u + c];
-    bool beyond = viewDepth > cascadeEnds[c - 1u];
-    v.viewProjection = beyond ? next.viewProjection : v.viewProjection;
-    v.rect = beyond ? next.rect : v.rect;
-    v.params = beyond ? next.params : v.params;
-  }
-  return shadowVisibility(v, position, normal, L);
+  uint cascade = 0u;
+  while (cascade + 1u < entry.y && viewDepth > cascadeEnds[cascade]) ++cascade;
+  CascadeView v = cascadeViews[entry.x - 1u + cascade];
+  if (v.rect.z <= 0.0) return 1.0;
+  vec4 p = vec4(position + normal * normalOffset(v.params.x, normal, L), 1.0);
+  vec3 ndc = vec3(dot(v.row0, p), dot(v.row1, p), dot(v.row2, p));
+  return shadowFilter(v.rect, v.rect.xy + (ndc.xy * 0.5 + 0.5) * v.rect.zw, ndc.z);
 }
