@@ -93,6 +93,21 @@ ImageRgba8 headless(const TempDir& dir, glm::ivec2 size, std::vector<std::string
   return pbr::readPng(out);
 }
 
+// A sun over a sphere on a floor, nothing else that lights, written into `dir`; returns the file's path.
+std::string writeSunScene(const TempDir& dir) {
+  const std::string scene = dir.file("sun.json");
+  std::ofstream(scene) << R"({
+    "camera": {"position": [0, 3, 6], "target": [0, 0.5, 0], "fov_y_deg": 50},
+    "objects": [
+      {"shape": "plane", "transform": {"scale": 8}, "material": {"base_color": [0.8, 0.8, 0.8], "roughness": 0.6}},
+      {"shape": "sphere", "transform": {"translate": [0, 1, 0]},
+       "material": {"base_color": [0.9, 0.3, 0.2], "roughness": 0.4}}
+    ],
+    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "illuminance_lux": 3}]
+  })";
+  return scene;
+}
+
 void checkMatches(const ImageRgba8& shown, const ImageRgba8& reference) {
   const Difference d = compare(shown, reference);
   CAPTURE(d.mean);
@@ -418,15 +433,7 @@ TEST_CASE("view: the environment picker lists .hdr files and its choice relights
 TEST_CASE("view: a scene's directional light stays lit through animated frames") {
   const TempDir dir;
   // A sun and nothing else that lights: animating the point lights must leave the sun as the scene has it.
-  const std::string scene = dir.file("sun.json");
-  std::ofstream(scene) << R"({
-    "camera": {"position": [0, 3, 6], "target": [0, 0.5, 0], "fov_y_deg": 50},
-    "objects": [
-      {"shape": "plane", "transform": {"scale": 8}, "material": {"base_color": [0.8, 0.8, 0.8], "roughness": 0.6}},
-      {"shape": "sphere", "transform": {"translate": [0, 1, 0]}, "material": {"base_color": [0.9, 0.3, 0.2], "roughness": 0.4}}
-    ],
-    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "illuminance_lux": 3}]
-  })";
+  const std::string scene = writeSunScene(dir);
   const auto viewer = openViewer(kSize, "", scene);
   if (!viewer) return;
   viewer->setPaused(false);
@@ -441,15 +448,7 @@ TEST_CASE("view: a scene's directional light stays lit through animated frames")
 
 TEST_CASE("view: the overlay's shadow settings reach the frame, and the shadows debug view shows them") {
   const TempDir dir;
-  const std::string scene = dir.file("sun.json");
-  std::ofstream(scene) << R"({
-    "camera": {"position": [0, 3, 6], "target": [0, 0.5, 0], "fov_y_deg": 50},
-    "objects": [
-      {"shape": "plane", "transform": {"scale": 8}, "material": {"base_color": [0.8, 0.8, 0.8], "roughness": 0.6}},
-      {"shape": "sphere", "transform": {"translate": [0, 1, 0]}, "material": {"base_color": [0.9, 0.3, 0.2], "roughness": 0.4}}
-    ],
-    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "illuminance_lux": 3}]
-  })";
+  const std::string scene = writeSunScene(dir);
   const auto viewer = openViewer(kSize, "", scene);
   if (!viewer) return;
   const ImageRgba8 shadowed = show(*viewer);
