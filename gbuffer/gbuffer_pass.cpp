@@ -1,6 +1,7 @@
 #include "gbuffer/gbuffer_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -193,13 +194,20 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-const GpuMesh& GBufferPass::casterMesh(const Draw& d, const glm::vec4& wRow, float texelWorld) const {
+const GpuMesh& GBufferPass::casterMesh(const Draw& d, const ShadowCasterView& v, const glm::vec4& wRow) const {
   const GpuMesh& own = meshes_[static_cast<size_t>(d.mesh)];
   if (!(d.sphereRadius > 0.0f)) return own;
-  // The smallest w on the sphere, where its texels are smallest.
-  const float w = glm::dot(glm::vec3(wRow), d.sphereCentre) + wRow.w - d.sphereRadius * glm::length(glm::vec3(wRow));
+  // The smallest w on the sphere's part in the view, where its texels are smallest: at least its smallest w, and in
+  // a perspective view (half-angle tangent t) at least its distance from the apex over sqrt(1 + 2 t^2), the most a
+  // point's distance exceeds its w inside the frustum.
+  float w = glm::dot(glm::vec3(wRow), d.sphereCentre) + wRow.w - d.sphereRadius * glm::length(glm::vec3(wRow));
+  if (v.reach.w > 0.0f) {
+    const float t = 0.5f * v.texelWorld * float(v.viewport.z);
+    const float nearest = glm::distance(d.sphereCentre, glm::vec3(v.reach)) - d.sphereRadius;
+    w = std::max(w, nearest / std::sqrt(1.0f + 2.0f * t * t));
+  }
   if (!(w > 0.0f)) return own;
-  const float texel = texelWorld * w;
+  const float texel = v.texelWorld * w;
   for (size_t i = 0; i < kSphereLodSegments.size(); ++i) {
     const int segments = kSphereLodSegments[i];
     const size_t triangles = size_t(segments) * size_t(segments);  // segments x segments / 2 quads
@@ -231,9 +239,12 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
   size_t drawn = 0;
   for (const ShadowCasterView& v : views) {
     glViewport(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
-    for (const Program* p : distinctDepthPrograms_) glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
+    for (const Program* p : distinctDepthPrograms_) {
+      glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
+    }
     const FrustumPlanes planes = frustumPlanes(v.viewProjection);
-    const glm::vec4 wRow(v.viewProjection[0][3], v.viewProjection[1][3], v.viewProjection[2][3], v.viewProjection[3][3]);
+    const glm::mat4& m = v.viewProjection;
+    const glm::vec4 wRow(m[0][3], m[1][3], m[2][3], m[3][3]);
     const Program* bound = nullptr;
     for (size_t i = 0; i < draws_.size(); ++i) {
       const Draw& d = draws_[i];
@@ -248,7 +259,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
       }
       glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
                         sizeof(ObjectBlock));
-      casterMesh(d, wRow, v.texelWorld).draw();
+      casterMesh(d, v, wRow).draw();
       ++drawn;
     }
   }

@@ -53,11 +53,11 @@ class GBufferPass {
     float sphereRadius;
     size_t triangles;
   };
-  // The tessellation a caster is drawn with in a view whose texels have world size texelWorld per unit of w, the
-  // view's w row being `wRow`: its own mesh, or for a sphere the coarsest of sphereLods_ that stays within half a
-  // texel of the sphere (the rasterizer's own rounding of a silhouette; the facets lie inside the sphere, so the
-  // sphere never shadows itself more).
-  const GpuMesh& casterMesh(const Draw& d, const glm::vec4& wRow, float texelWorld) const;
+  // The tessellation a caster is drawn with in view `v`, whose w row (the distance along a perspective view's axis,
+  // 1 in an orthographic one) is `wRow`: its own mesh, or for a sphere the coarsest of sphereLods_ that stays within
+  // half a texel of the sphere (the rasterizer's own rounding of a silhouette; the facets lie inside the sphere, so
+  // the sphere never shadows itself more).
+  const GpuMesh& casterMesh(const Draw& d, const ShadowCasterView& v, const glm::vec4& wRow) const;
   // The material's Scene::textures index per texture unit, -1 for none.
   static std::array<int, kMapCount> materialMaps(const Material& material);
 
