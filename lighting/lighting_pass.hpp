@@ -53,9 +53,10 @@ struct LightingOptions {
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
-// over at most: the loop, unrolled by 8, stays under llvmpipe's 65535 iterations per invocation. More take
-// several dispatches (LIGHT_CHUNKS). Shading every light, a dispatch takes one uniform-buffer window of lights.
-constexpr uint32_t kLightsPerDispatch = 262144;
+// over at most: one iteration each, with room for the pass's few other loops under llvmpipe's 65535 iterations per
+// invocation. More take several dispatches (LIGHT_CHUNKS). Shading every light, a dispatch takes one uniform-buffer
+// window of lights.
+constexpr uint32_t kLightsPerDispatch = 32768;
 
 // The brute-force path's light window: kLightWindowMax lights, or the largest power of two of them that the
 // driver's uniform blocks hold.

@@ -124,42 +124,41 @@ float perspectiveShadow(uint square, float side, float t, float near, vec3 f) {
   return shadowFilter(rect, rect.xy + (f.xy / (t * f.z) * 0.5 + 0.5) * rect.zw, near / f.z);
 }
 
-// A cube light's visibility from its six faces, each a 90-degree view widened by SHADOW_BORDER_TEXELS with its near
-// plane at SHADOW_NEAR_SCALE R (pbr::perspectiveView): only the face's square is read from memory. The face is
-// chosen after the normal offset, so the filter's reach stays inside the face's border.
-float cubeShadowVisibility(uint entry, vec4 lightPositionRadius, vec3 position, vec3 normal, vec3 L) {
-  float side = float(1u << ((entry >> 26) & 15u));
-  float t = side / (side - 2.0 * SHADOW_BORDER_TEXELS);  // tan of the half angle with the border
-  vec3 d = position - lightPositionRadius.xyz, a = abs(d);
-  float w = max(max(a.x, a.y), a.z);  // distance along the nearest face's axis
-  d += normal * normalOffset(2.0 * t / side * w, normal, L);
-  uint face = cubeFace(d);
-  float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
-  return perspectiveShadow(shadowSquares[(entry & 0x3ffffffu) - 1u + face], side, t, near, cubeFaceLocal(face, d));
-}
-
-// A spot light's visibility from its one view over the outer cone: the axis and the cone's angle from the light's
-// cone (pbr::GpuSpotCone: the axis times the falloff's scale s, offset -cos(outer) s), the frame as pbr::frameAround
-// builds it around the helper axis the entry names.
-float spotShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec3 position, vec3 normal, vec3 L) {
-  float side = float(1u << ((entry >> 26) & 15u));
-  float scale = length(cone.xyz);
-  vec3 axis = cone.xyz / scale;
-  float cosOuter = -cone.w / scale;
-  float t = sqrt(max(1.0 - cosOuter * cosOuter, 0.0)) / cosOuter * side / (side - 2.0 * SHADOW_BORDER_TEXELS);
-  vec3 right = normalize(cross(axis, (entry & SHADOW_FRAME_X) != 0u ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
-  vec3 up = cross(right, axis);
-  vec3 d = position - lightPositionRadius.xyz;
-  d += normal * normalOffset(2.0 * t / side * dot(d, axis), normal, L);
-  float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
-  return perspectiveShadow(shadowSquares[(entry & 0x3ffffffu) - 1u], side, t, near,
-                           vec3(dot(d, right), dot(d, up), dot(d, axis)));
-}
-
-// A point or spot light's visibility; `entry` is its lightShadow value (non-zero), `cone` its spot cone.
+// A point or spot light's visibility; `entry` is its lightShadow value (non-zero), `cone` its spot cone. Only the
+// view's square is read from memory: the view follows from the light (pbr::perspectiveView), widened by
+// SHADOW_BORDER_TEXELS with its near plane at SHADOW_NEAR_SCALE R.
+// - A cube light: six 90-degree faces; the face is chosen after the normal offset, so the filter's reach stays
+//   inside the face's border.
+// - A spot light: one view over the outer cone, the axis and the cone's angle from the light's cone
+//   (pbr::GpuSpotCone: the axis times the falloff's scale s, offset -cos(outer) s), the frame as pbr::frameAround
+//   builds it around the helper axis the entry names.
+// Both kinds end in the one filter call: each call site is another copy of the filter's code, and on llvmpipe a
+// larger shader runs slower.
 float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec3 position, vec3 normal, vec3 L) {
-  if ((entry & SHADOW_CUBE) != 0u) return cubeShadowVisibility(entry, lightPositionRadius, position, normal, L);
-  return spotShadowVisibility(entry, lightPositionRadius, cone, position, normal, L);
+  float side = float(1u << ((entry >> 26) & 15u));
+  uint view = (entry & 0x3ffffffu) - 1u;
+  vec3 d = position - lightPositionRadius.xyz, f;
+  float t;
+  if ((entry & SHADOW_CUBE) != 0u) {
+    t = side / (side - 2.0 * SHADOW_BORDER_TEXELS);  // tan of the half angle with the border
+    vec3 a = abs(d);
+    float w = max(max(a.x, a.y), a.z);  // distance along the nearest face's axis
+    d += normal * normalOffset(2.0 * t / side * w, normal, L);
+    uint face = cubeFace(d);
+    view += face;
+    f = cubeFaceLocal(face, d);
+  } else {
+    float scale = length(cone.xyz);
+    vec3 axis = cone.xyz / scale;
+    float cosOuter = -cone.w / scale;
+    t = sqrt(max(1.0 - cosOuter * cosOuter, 0.0)) / cosOuter * side / (side - 2.0 * SHADOW_BORDER_TEXELS);
+    vec3 right = normalize(cross(axis, (entry & SHADOW_FRAME_X) != 0u ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+    vec3 up = cross(right, axis);
+    d += normal * normalOffset(2.0 * t / side * dot(d, axis), normal, L);
+    f = vec3(dot(d, right), dot(d, up), dot(d, axis));
+  }
+  float near = max(lightPositionRadius.w * SHADOW_NEAR_SCALE, 1e-4);
+  return perspectiveShadow(shadowSquares[view], side, t, near, f);
 }
 
 // A directional light's visibility from the cascade that holds the pixel's view depth.
