@@ -140,6 +140,10 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 "(%.0f MiB, %.1f %% used)\n",
                 h.shadowedLights, h.viewsRendered, h.viewsSkipped, atlas, atlas,
                 double(shadowAtlasBytes(atlas)) / (1 << 20), 100.0 * double(h.texelsUsed) / (double(atlas) * atlas));
+    if (h.cascadeTexelMax > 0.0f) {
+      std::printf("shadows: directional cascades' texels %.3g-%.3g scene units (metres) across\n",
+                  double(h.cascadeTexelMin), double(h.cascadeTexelMax));
+    }
     if (h.shrunkLights) {
       std::printf("shadows: the atlas is full: %u lights got smaller maps than their size on screen asks "
                   "(--shadow-atlas)\n", h.shrunkLights);

@@ -46,9 +46,9 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
                             scene_.lights.order(),
                             sceneData_.directionalLights,
                             scene_.geometry.bounds(),
+                            receivers,
                             settings.mode,
-                            settings.atlasSize,
-                            &receivers};
+                            settings.atlasSize};
   scene_.shadows.render(inputs, [this](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
     scene_.geometry.renderDepth(framebuffer, views);
   });

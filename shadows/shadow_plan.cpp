@@ -19,22 +19,6 @@ namespace {
 // A spot light wider than this (half angle) takes a cube, as one perspective view would stretch its texels.
 constexpr float kMaxSpotViewHalfAngle = 1.0471976f;  // 60 degrees
 
-// The box around what a perspective view sees of the light's sphere: the apex and the pyramid's four corners at
-// distance R along the axis.
-WorldBounds viewVolume(const glm::vec3& apex, const glm::vec3& axis, float tanHalf, float R) {
-  glm::vec3 right, up;
-  frameAround(axis, right, up);
-  const glm::vec3 c = apex + axis * R, a = right * (R * tanHalf), b = up * (R * tanHalf);
-  WorldBounds box;
-  for (const glm::vec3& p : {apex, c + a + b, c + a - b, c - a + b, c - a - b}) box.add(p);
-  return box;
-}
-
-// Whether a view's volume may hold a receiver the camera sees: inside the camera's frustum and the scene's bounds.
-bool mayHoldReceiver(const FrustumPlanes& camera, const WorldBounds& scene, const WorldBounds& volume) {
-  return !outsideFrustum(camera, volume) && overlaps(scene, volume);
-}
-
 // A casting light's request: its views' directions, its size and how much it matters.
 struct Request {
   enum Kind { Cube, Spot, Directional } kind;
@@ -76,26 +60,16 @@ ShadowPlan planShadows(const ShadowInputs& in) {
   ShadowPlan plan;
   plan.lightViews.assign(in.bufferOrder.size(), 0u);
   plan.header.atlas = glm::vec4(float(in.atlasSize), 1.0f / float(in.atlasSize), 0.0f, 0.0f);
-  const glm::mat4 viewProjection = in.camera.projection(in.aspect) * in.camera.view();
-  const FrustumPlanes cameraPlanes = frustumPlanes(viewProjection);
   const int maxView = std::min(kMaxShadowView, in.atlasSize / 4);
-  float nearDepth = 0.0f, farDepth = -1.0f;
-  if (in.receivers) {
-    if (!in.receivers->empty()) {
-      nearDepth = in.receivers->nearDepth();
-      farDepth = in.receivers->farDepth();
-    }
-  } else {
-    depthRange(in.camera, in.scene, nearDepth, farDepth);
-  }
-  const CascadeSplits splits = cascadeSplits(in.camera, nearDepth, farDepth, kCascades);
-  // Whether a perspective view from the light may hold a visible receiver.
+  const CascadeSplits splits =
+      in.receivers.empty() ? CascadeSplits{}
+                           : cascadeSplits(in.camera, in.receivers.nearDepth(), in.receivers.farDepth(), kCascades);
+  // Whether a perspective view from the light may hold a visible receiver; the widest border the view can have, at
+  // the least size, is conservative for every size.
   const auto holdsReceiver = [&](const PointLight& l, const glm::vec3& axis, float tanHalf) {
-    if (!in.receivers) return mayHoldReceiver(cameraPlanes, in.scene, viewVolume(l.position, axis, tanHalf, l.radius));
-    // The widest border the view can have, at the least size: conservative for every size.
     const ShadowViewPlan widest =
         perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels);
-    return in.receivers->meets(glm::vec4(l.position, l.radius), frustumPlanes(widest.viewProjection));
+    return in.receivers.meets(glm::vec4(l.position, l.radius), frustumPlanes(widest.viewProjection));
   };
 
   std::vector<Request> requests;
@@ -104,8 +78,7 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     Request r{Request::Directional, uint32_t(d), std::numeric_limits<float>::max(), in.atlasSize / 4, 0, {}};
     for (int c = 0; c < kCascades; ++c) {
       const float begin = c == 0 ? splits.begin : splits.ends[size_t(c - 1)];
-      const bool holds = !in.receivers || in.receivers->holdsDepth(begin, splits.ends[size_t(c)]);
-      r.visible.push_back(c < splits.count && holds);
+      r.visible.push_back(c < splits.count && in.receivers.holdsDepth(begin, splits.ends[size_t(c)]));
     }
     requests.push_back(r);
   }
@@ -189,6 +162,9 @@ ShadowPlan planShadows(const ShadowInputs& in) {
       if (r.kind == Request::Directional) {
         const DirectionalLight& l = in.directional[r.index];
         view = cascadeView(in.camera, in.aspect, splits, int(v), l.direction, in.scene, r.size);
+        ShadowStats& s = plan.stats;
+        s.cascadeTexelMin = s.cascadeTexelMin > 0.0f ? std::min(s.cascadeTexelMin, view.texelWorld) : view.texelWorld;
+        s.cascadeTexelMax = std::max(s.cascadeTexelMax, view.texelWorld);
       } else {
         const PointLight& l = in.lights[in.bufferOrder[r.index]];
         const glm::vec3 axis = r.kind == Request::Spot ? l.spot->direction : kFaceAxes[v];

@@ -13,7 +13,8 @@
 
 namespace pbr {
 
-// What a frame's shadows are planned from: the camera, the frame's height, the lights and the receivers' bounds.
+// What a frame's shadows are planned from: the camera, the frame's height, the lights, the casters' bounds and the
+// visible surfaces (receivers) the cluster occupancy found.
 struct ShadowInputs {
   const Camera& camera;
   float aspect;
@@ -21,12 +22,10 @@ struct ShadowInputs {
   const std::vector<PointLight>& lights;       // scene order
   const std::vector<uint32_t>& bufferOrder;    // per light-buffer index, the scene's index of the light there
   const std::vector<DirectionalLight>& directional;
-  WorldBounds scene;  // every object's: receivers and casters
+  WorldBounds scene;  // every object's: the casters a cascade must hold
+  const ShadowReceivers& receivers;
   ShadowMode mode = ShadowMode::Auto;
   int atlasSize = 4096;
-  // The visible surfaces the cluster occupancy found; null: receivers are taken to be wherever the scene's bounds
-  // meet the camera's frustum.
-  const ShadowReceivers* receivers = nullptr;
 };
 
 // One square of the atlas, rendered from a light. `size` 0: not rendered, its frustum meets no receiver in view.
@@ -47,6 +46,8 @@ struct ShadowStats {
   uint32_t shrunkLights = 0;     // lights given less than their size on screen asks, the atlas being full
   uint32_t unshadowedLights = 0; // casting lights that got no map at all, the atlas being full at the least size
   uint64_t texelsUsed = 0;       // atlas texels of the rendered views
+  // World size of a texel of the rendered cascades, finest and coarsest (0 without one).
+  float cascadeTexelMin = 0.0f, cascadeTexelMax = 0.0f;
 };
 
 // The frame's shadow views and, per light, which views it owns: what the GPU buffers are made from (the header, whose
@@ -66,8 +67,7 @@ constexpr int kCascades = 4;
 
 // Plans a frame's shadows (Olsson et al. 2014, "Efficient Virtual Shadow Maps for Many Lights", in outline): each
 // casting light's resolution from its size on screen; cube faces and spot views whose frustum, bounded by the
-// light's radius, holds no visible receiver (an occupied cluster, or without them the scene's bounds inside the
-// camera's frustum) are not rendered; directional lights get kCascades texel-snapped cascades over the view depths
+// light's radius, holds no visible receiver (an occupied cluster) are not rendered; directional lights get kCascades texel-snapped cascades over the view depths
 // that hold receivers, a cascade whose depths hold none not rendered. When the atlas cannot hold every square, the
 // least important lights (smallest on screen) are halved first; a light left without a square is counted, never
 // silently dropped.

@@ -34,18 +34,6 @@ void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
   up = glm::cross(right, axis);
 }
 
-void depthRange(const Camera& camera, const WorldBounds& box, float& nearDepth, float& farDepth) {
-  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  nearDepth = 1e30f;
-  farDepth = -1e30f;
-  if (box.empty()) return;
-  for (const glm::vec3& c : corners(box)) {
-    const float depth = glm::dot(c - camera.position, forward);
-    nearDepth = std::min(nearDepth, depth);
-    farDepth = std::max(farDepth, depth);
-  }
-}
-
 CascadeSplits cascadeSplits(const Camera& camera, float nearDepth, float farDepth, int count) {
   CascadeSplits s;
   const float n = std::max(camera.nearPlane, nearDepth), f = std::min(camera.farPlane, farDepth);

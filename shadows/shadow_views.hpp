@@ -24,8 +24,6 @@ struct CascadeSplits {
 // Ends by the practical split scheme (Zhang et al. 2006, "Parallel-Split Shadow Maps"), lambda 0.75: three parts
 // logarithmic to one uniform.
 CascadeSplits cascadeSplits(const Camera& camera, float nearDepth, float farDepth, int count);
-// The view depths a box's corners span.
-void depthRange(const Camera& camera, const WorldBounds& box, float& nearDepth, float& farDepth);
 
 // Cascade `cascade` of a light travelling along unit `direction`: an orthographic square around the bounding
 // sphere of the camera frustum's slice (its size does not change as the camera turns), its centre snapped to whole

@@ -37,6 +37,21 @@ pbr::PointLight light(const glm::vec3& p, float radius) {
   return l;
 }
 
+// A box of receivers as the cluster occupancy would report it through `cam`: one view-space box, around the
+// box's corners seen from the camera.
+pbr::ShadowReceivers receiversIn(const pbr::Camera& cam, const pbr::WorldBounds& world) {
+  const glm::mat4 view = cam.view();
+  pbr::ViewSpaceBox box{glm::vec3(1e30f), glm::vec3(-1e30f), 0};
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner(i & 1 ? world.max.x : world.min.x, i & 2 ? world.max.y : world.min.y,
+                           i & 4 ? world.max.z : world.min.z);
+    const glm::vec3 p(view * glm::vec4(corner, 1.0f));
+    box.min = glm::min(box.min, p);
+    box.max = glm::max(box.max, p);
+  }
+  return pbr::ShadowReceivers({box}, glm::inverse(view));
+}
+
 std::vector<uint32_t> identity(size_t n) {
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
@@ -91,9 +106,10 @@ TEST_CASE("shadow plan: a point light's cube faces, all skipped for a light behi
   const std::vector<uint32_t> order = identity(lights.size());
   const std::vector<pbr::DirectionalLight> none;
   const pbr::Camera cam = camera();
-  const pbr::ShadowPlan plan = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, none, floorBounds()});
-  // The first light sits over the floor in view, each face's pyramid meeting the scene's bounds in view; the
-  // second is behind the camera, beyond the floor: every face skipped.
+  const pbr::ShadowReceivers floor = receiversIn(cam, floorBounds());
+  const pbr::ShadowPlan plan = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, none, floorBounds(), floor});
+  // The first light sits over the floor, each face's pyramid meeting the receivers; the second is behind the
+  // camera, beyond the floor: every face skipped.
   CHECK(plan.stats.shadowedLights == 2);
   CHECK(plan.views.size() == 12);
   CHECK((plan.lightViews[0] & pbr::kCubeShadow) != 0);
@@ -112,7 +128,8 @@ TEST_CASE("shadow plan: a full atlas halves the least important lights first and
   const std::vector<uint32_t> order = identity(lights.size());
   const std::vector<pbr::DirectionalLight> none;
   const pbr::Camera cam = camera();
-  pbr::ShadowInputs inputs{cam, 16.0f / 9.0f, 720, lights, order, none, floorBounds()};
+  const pbr::ShadowReceivers floor = receiversIn(cam, floorBounds());
+  pbr::ShadowInputs inputs{cam, 16.0f / 9.0f, 720, lights, order, none, floorBounds(), floor};
   inputs.atlasSize = 16384;
   const pbr::ShadowPlan roomy = pbr::planShadows(inputs);
   CHECK(roomy.stats.shrunkLights == 0);
@@ -131,13 +148,14 @@ TEST_CASE("shadow plan: a full atlas halves the least important lights first and
   checkSquares(full, 64);
 }
 
-TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the scene's depth range in view") {
+TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the receivers' depth range in view") {
   const std::vector<pbr::PointLight> lights;
   const std::vector<uint32_t> order;
   const std::vector<pbr::DirectionalLight> suns = {
       {glm::normalize(glm::vec3(-0.3f, -1.0f, 0.2f)), glm::vec3(1.0f), 1.0f}};
   pbr::Camera cam = camera();
-  const pbr::ShadowPlan a = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, suns, floorBounds()});
+  const pbr::ShadowReceivers floorA = receiversIn(cam, floorBounds());
+  const pbr::ShadowPlan a = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, suns, floorBounds(), floorA});
   REQUIRE(a.views.size() == size_t(pbr::kCascades));
   CHECK(a.header.directional[0].x == 1);
   CHECK(a.header.directional[0].y == unsigned(pbr::kCascades));
@@ -146,7 +164,8 @@ TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the scene's depth
   // whole texels in light space (the translation column, in texels, stays an integer apart).
   cam.position.x += 1e-3f;
   cam.target.x += 1e-3f;
-  const pbr::ShadowPlan b = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, suns, floorBounds()});
+  const pbr::ShadowReceivers floorB = receiversIn(cam, floorBounds());
+  const pbr::ShadowPlan b = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, suns, floorBounds(), floorB});
   for (int c = 0; c < pbr::kCascades; ++c) {
     const pbr::ShadowViewPlan &va = a.views[size_t(c)], &vb = b.views[size_t(c)];
     for (int axis = 0; axis < 2; ++axis) {
@@ -208,16 +227,15 @@ TEST_CASE("shadow plan: with the clusters' receivers, only views that hold an oc
   SUBCASE("a point light over the one occupied cluster renders the face looking down, and no other") {
     const pbr::ShadowReceivers receivers({{{-0.5f, -0.5f, -5.5f}, {0.5f, 0.5f, -4.5f}, 0}}, inverseView);
     const std::vector<pbr::PointLight> lights = {light({0.0f, 3.0f, -5.0f}, 6.0f)};
-    pbr::ShadowInputs in{cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene};
-    in.receivers = &receivers;
-    const pbr::ShadowPlan plan = pbr::planShadows(in);
+    const pbr::ShadowPlan plan = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene, receivers});
     REQUIRE(plan.views.size() == 6);
     CHECK(plan.stats.viewsRendered == 1);
     CHECK(plan.stats.viewsSkipped == 5);
     CHECK(plan.views[3].size > 0);  // -Y
-    // Without the receivers, the scene's bounds inside the camera's frustum meet more faces.
-    const pbr::ShadowPlan bounds = pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene});
-    CHECK(bounds.stats.viewsRendered > 1);
+    // The scene's bounds, all about the light, meet every face: the receivers, not the casters, decide.
+    const pbr::ShadowPlan everywhere =
+        pbr::planShadows({cam, 16.0f / 9.0f, 720, lights, order, noSuns, scene, receiversIn(cam, scene)});
+    CHECK(everywhere.stats.viewsRendered == 6);
   }
 
   SUBCASE("a sun's cascades span the receivers' depths, and a cascade over none of them is not rendered") {
@@ -232,9 +250,7 @@ TEST_CASE("shadow plan: with the clusters' receivers, only views that hold an oc
     sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
     const std::vector<pbr::DirectionalLight> suns = {sun};
     const std::vector<uint32_t> noOrder;
-    pbr::ShadowInputs in{cam, 16.0f / 9.0f, 720, none, noOrder, suns, scene};
-    in.receivers = &receivers;
-    const pbr::ShadowPlan plan = pbr::planShadows(in);
+    const pbr::ShadowPlan plan = pbr::planShadows({cam, 16.0f / 9.0f, 720, none, noOrder, suns, scene, receivers});
     REQUIRE(plan.views.size() == size_t(pbr::kCascades));
     CHECK(plan.header.cascadeEnds[3] == doctest::Approx(30.5f));
     CHECK(plan.views[0].size > 0);
@@ -242,5 +258,8 @@ TEST_CASE("shadow plan: with the clusters' receivers, only views that hold an oc
     CHECK(plan.views[2].size == 0);
     CHECK(plan.views[3].size > 0);
     CHECK(plan.stats.viewsSkipped == 2);
+    // The texel sizes of the two rendered cascades, as the stats report them.
+    CHECK(plan.stats.cascadeTexelMin == doctest::Approx(std::min(plan.views[0].texelWorld, plan.views[3].texelWorld)));
+    CHECK(plan.stats.cascadeTexelMax == doctest::Approx(std::max(plan.views[0].texelWorld, plan.views[3].texelWorld)));
   }
 }

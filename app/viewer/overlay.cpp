@@ -176,6 +176,10 @@ void Overlay::lightStatistics(Viewer& viewer) {
     row("  views skipped", "%.0f (no receiver in view)", double(s.shadows.viewsSkipped));
     const int atlas = viewer.frameOptions().shadows.atlasSize;
     row("  atlas used", "%.1f %%", 100.0 * double(s.shadows.texelsUsed) / (double(atlas) * atlas));
+    if (s.shadows.cascadeTexelMax > 0.0f) {
+      row("  cascade texels from", "%.3g m", double(s.shadows.cascadeTexelMin));
+      row("  to", "%.3g m", double(s.shadows.cascadeTexelMax));
+    }
     if (s.shadows.shrunkLights) row("  shrunk (atlas full)", "%.0f", double(s.shadows.shrunkLights));
     if (s.shadows.unshadowedLights) row("  no map (atlas full)", "%.0f", double(s.shadows.unshadowedLights));
   }
