@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include <glm/matrix.hpp>
 
@@ -25,9 +26,8 @@ ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL
 }
 
 void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters) {
-  const ShadowPlan plan = planShadows(inputs);
+  ShadowPlan plan = planShadows(inputs);
   stats_ = plan.stats;
-  lastViews_ = plan.views;
   ownersCurrent_ = false;
   if (!atlas_ || atlas_->width() != inputs.atlasSize) {
     framebuffer_.reset();
@@ -85,6 +85,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   }
   glDisable(GL_SCISSOR_TEST);
   if (!casterViews.empty()) drawCasters(framebuffer_->id(), casterViews);
+  lastViews_ = std::move(plan.views);  // kept for ownerMap, not copied
 }
 
 ShadowMaps ShadowPass::maps() const {
