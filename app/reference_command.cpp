@@ -9,6 +9,7 @@
 #include "app/common_options.hpp"
 #include "app/scene_source.hpp"
 #include "core/image.hpp"
+#include "core/messages.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
 
@@ -81,6 +82,10 @@ int runReference(const std::vector<std::string>& argv) {
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeHdr(out, frame.radiance);
+  if (frame.truncatedRays > 0) {
+    warnOnce("reference: " + std::to_string(frame.truncatedRays) + " pixels' rays met more than " +
+         std::to_string(reference::kMaxBlendLayers) + " BLEND layers: the surfaces beyond them are left out");
+  }
   std::printf("reference: %s (%s geometry), %dx%d, %zu lights, shadows %s, %s, %.2f s on %u threads (CPU, double "
               "precision)\nwrote %s\n",
               scene.name.c_str(), options.geometry == reference::Geometry::Meshes ? "mesh" : "analytic", size.x,

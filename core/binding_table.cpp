@@ -6,6 +6,10 @@
 namespace pbr {
 
 ShaderDefines bindingDefines(std::initializer_list<BindingPoint> points) {
+  return bindingDefines(std::vector<BindingPoint>(points));
+}
+
+ShaderDefines bindingDefines(const std::vector<BindingPoint>& points) {
   ShaderDefines defines;
   for (auto a = points.begin(); a != points.end(); ++a) {
     for (auto b = points.begin(); b != a; ++b) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <initializer_list>
+#include <vector>
 
 #include "core/shader_library.hpp"
 
@@ -19,6 +20,7 @@ struct BindingPoint {
 // "#define NAME index" for each point of the tables a program's sources read. Throws std::logic_error when two
 // points share a name, or a kind and an index: tables bound together must not overlap.
 ShaderDefines bindingDefines(std::initializer_list<BindingPoint> points);
+ShaderDefines bindingDefines(const std::vector<BindingPoint>& points);
 
 // `defines` followed by `more`.
 ShaderDefines concat(ShaderDefines defines, const ShaderDefines& more);

@@ -21,9 +21,8 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive (TRIANGLES,
 // strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
 // images they use are appended, and KHR_lights_punctual point lights join scene.lights. Normals missing from a
-// primitive are generated flat, tangents missing are generated per vertex. Points and lines, spot and directional
-// lights are skipped, alphaMode BLEND is drawn opaque and used extensions outside kSupportedGltfExtensions are
-// ignored, each with one line on stderr. Returns the world bounds of the geometry appended. Throws
+// primitive are generated flat, tangents missing are generated per vertex. Points and lines are skipped and used
+// extensions outside kSupportedGltfExtensions are ignored, each with one line on stderr. Returns the world bounds of the geometry appended. Throws
 // SceneError("<path>: <field>: <what>") for a malformed file or a required extension outside
 // kSupportedGltfExtensions, leaving `scene` as it was.
 // `policy` says where the file's buffers and images may be (readGltfFile).

@@ -131,7 +131,6 @@ Material GltfMaterials::convert(int index, const std::string& field) {
     m.alphaMode = AlphaMode::Mask;
   } else if (g.alphaMode == "BLEND") {
     m.alphaMode = AlphaMode::Blend;
-    file_.warn(name + " ('" + g.name + "'): alphaMode BLEND is drawn opaque");
   } else if (g.alphaMode != "OPAQUE") {
     file_.fail(name + ".alphaMode: '" + g.alphaMode + "' is not OPAQUE, MASK or BLEND");
   }

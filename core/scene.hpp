@@ -32,7 +32,13 @@ struct TextureData {
   int minFilter = 0x2703, magFilter = 0x2601;  // GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR
 };
 
+// OPAQUE ignores alpha; MASK keeps what reaches alphaCutoff; BLEND composites the lit colour over what lies behind
+// by its alpha (Porter-Duff "over").
 enum class AlphaMode { Opaque, Mask, Blend };
+
+// A BLEND material casts a shadow where its alpha is at least this, and none elsewhere: a cut-out at one half, so
+// that a faint pane casts nothing and the solid part of a fading decal casts its shape.
+constexpr float kBlendShadowCutoff = 0.5f;
 
 // The glTF metal-rough material; Blinn-Phong parameters are derived from it at shading time. Texture fields
 // index Scene::textures (-1: none); factors multiply the texture values as in glTF.

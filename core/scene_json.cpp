@@ -142,6 +142,22 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   m.metalness = f["metalness"].number(R::closed(0.0, 1.0), m.metalness);
   m.emissive = f["emissive"].vec3OrNumber(R::atLeast(0.0), m.emissive);
   m.doubleSided = f["double_sided"].boolean(m.doubleSided);
+  m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
+  const JsonField mode = f["alpha_mode"];
+  if (mode.present()) {
+    const std::string name = mode.string();
+    if (name == "opaque") {
+      m.alphaMode = AlphaMode::Opaque;
+    } else if (name == "mask") {
+      m.alphaMode = AlphaMode::Mask;
+    } else if (name == "blend") {
+      m.alphaMode = AlphaMode::Blend;
+    } else {
+      mode.expected("\"opaque\" (the default), \"mask\" or \"blend\"");
+    }
+  }
+  // glTF bounds the cutoff below only; one above 1 cuts the whole surface away.
+  m.alphaCutoff = f["alpha_cutoff"].number(R::atLeast(0.0), m.alphaCutoff);
   if (f["base_color_texture"].present()) m.baseColorTexture = readTexture(f["base_color_texture"], folder, scene);
   return m;
 }

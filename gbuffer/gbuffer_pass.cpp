@@ -43,7 +43,8 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     b.normalMatrix = glm::transpose(glm::inverse(o.transform));
     b.baseColor = glm::vec4(m.baseColor, m.alpha);
     b.material = glm::vec4(m.roughness, m.metalness, m.normalScale, m.occlusionStrength);
-    b.emissive = glm::vec4(m.emissive, m.alphaCutoff);
+    // A BLEND material casts a cut-out shadow at kBlendShadowCutoff (the depth permutation's ALPHA_MASK).
+    b.emissive = glm::vec4(m.emissive, m.alphaMode == AlphaMode::Blend ? kBlendShadowCutoff : m.alphaCutoff);
     b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, 0.0f, 0.0f, 0.0f);
     using namespace gbuffer_binding;
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
@@ -104,26 +105,37 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   textures_.reserve(scene.textures.size());
   for (const TextureData& t : scene.textures) textures_.emplace_back(t);
 
-  std::map<std::string, size_t> programIndex;  // by the permutation's define list
+  std::map<std::string, size_t> programIndex, blendedIndex;  // by the permutation's define list
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     const ShaderDefines defines = permutation(o.material);
     std::string key;
     for (const ShaderDefine& d : defines) key += d.value;
-    auto it = programIndex.find(key);
-    if (it == programIndex.end()) {
-      programs_.push_back(
-          &programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", concat(defines, gbufferBindingDefines())));
-      it = programIndex.emplace(key, programs_.size() - 1).first;
-    }
     Draw d{};
+    d.blended = o.material.alphaMode == AlphaMode::Blend;
+    if (d.blended) {
+      // Drawn by other passes' programs (drawBlended): no G-buffer program.
+      auto it = blendedIndex.find(key);
+      if (it == blendedIndex.end()) {
+        blendedPermutations_.push_back(defines);
+        it = blendedIndex.emplace(key, blendedPermutations_.size() - 1).first;
+      }
+      d.program = it->second;
+    } else {
+      auto it = programIndex.find(key);
+      if (it == programIndex.end()) {
+        programs_.push_back(&programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag",
+                                               concat(defines, gbufferBindingDefines())));
+        it = programIndex.emplace(key, programs_.size() - 1).first;
+      }
+      d.program = it->second;
+    }
     d.mesh = o.mesh;
-    d.program = it->second;
     d.blockOffset = static_cast<GLintptr>(i) * blockStride_;
     d.doubleSided = o.material.doubleSided;
     d.mirrored = mirrors(o.transform);
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
-    d.castsCutOut = o.material.alphaMode == AlphaMode::Mask;
+    d.castsCutOut = o.material.alphaMode == AlphaMode::Mask || d.blended;
     d.cutOutTexture = d.castsCutOut && o.material.baseColorTexture >= 0;
     d.triangles = scene.meshes.at(static_cast<size_t>(o.mesh)).indices.size() / 3;
     if (o.shape == Shape::Sphere) {
@@ -148,7 +160,10 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     draws_.push_back(d);
   }
   // Fewer program switches; the depth test makes the order of opaque draws otherwise irrelevant.
-  std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.program < b.program; });
+  std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) {
+    return a.blended != b.blended ? b.blended : a.program < b.program;
+  });
+  opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {
@@ -167,7 +182,8 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
 
   frame.bind(kFrameUbo.index);
   size_t bound = std::numeric_limits<size_t>::max();
-  for (const Draw& d : draws_) {
+  for (size_t i = 0; i < opaqueDraws_; ++i) {
+    const Draw& d = draws_[i];
     if (d.program != bound) programs_[d.program]->use();
     bound = d.program;
     if (d.doubleSided) {
@@ -216,6 +232,63 @@ const GpuMesh& GBufferPass::casterMesh(const Draw& d, const ShadowCasterView& v,
     }
   }
   return own;
+}
+
+void GBufferPass::drawBlended(GLuint framebuffer, const glm::vec3& viewer, const BlendedProgram& program,
+                              BlendOrder order, int repeats) const {
+  std::vector<const Draw*> blended;
+  for (size_t i = opaqueDraws_; i < draws_.size(); ++i) blended.push_back(&draws_[i]);
+  if (order == BlendOrder::BackToFront) {
+    // By the distance of the bounds' centres, which orders them as their view depths do for objects ahead of the
+    // camera and keeps the order when the camera turns on the spot (glTF-Sample-Viewer sorts by the centre's depth).
+    auto distance2 = [&](const Draw* d) {
+      const glm::vec3 c = 0.5f * (d->bounds.min + d->bounds.max) - viewer;
+      return glm::dot(c, c);
+    };
+    std::stable_sort(blended.begin(), blended.end(),
+                     [&](const Draw* a, const Draw* b) { return distance2(a) > distance2(b); });
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  const std::vector<BindingPoint> bindings = {gbuffer_binding::kObjectUbo, gbuffer_binding::kBaseColorMapUnit,
+                                              gbuffer_binding::kMetallicRoughnessMapUnit,
+                                              gbuffer_binding::kNormalMapUnit, gbuffer_binding::kOcclusionMapUnit,
+                                              gbuffer_binding::kEmissiveMapUnit};
+  for (const Draw* d : blended) {
+    glFrontFace(d->mirrored ? GL_CW : GL_CCW);
+    if (d->textured) {
+      glBindTextures(0, static_cast<GLsizei>(kMapCount), d->textures.data());
+      glBindSamplers(0, static_cast<GLsizei>(kMapCount), d->samplers.data());
+    }
+    glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d->blockOffset,
+                      sizeof(ObjectBlock));
+    // The faces each round draws: the front ones; both at once (GL_NONE); or for a double-sided object composited
+    // in order its back faces, then its front faces over them.
+    std::vector<GLenum> culled = {GL_BACK};
+    if (d->doubleSided) culled = order == BlendOrder::BackToFront ? std::vector<GLenum>{GL_FRONT, GL_BACK}
+                                                                  : std::vector<GLenum>{GL_NONE};
+    for (const GLenum cull : culled) {
+      if (cull == GL_NONE) {
+        glDisable(GL_CULL_FACE);
+      } else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(cull);
+      }
+      for (int r = 0; r < repeats; ++r) {
+        program(r, "gbuffer/gbuffer.vert", blendedPermutations_[d->program], bindings).use();
+        meshes_[static_cast<size_t>(d->mesh)].draw();
+      }
+    }
+  }
+  glBindSamplers(0, static_cast<GLsizei>(kMapCount), nullptr);
+  glCullFace(GL_BACK);
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views) {

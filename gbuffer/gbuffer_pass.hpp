@@ -2,6 +2,7 @@
 #include <array>
 #include <vector>
 
+#include "core/blended_surfaces.hpp"
 #include "core/bounds.hpp"
 #include "core/frame_block.hpp"
 #include "core/gpu_mesh.hpp"
@@ -26,6 +27,13 @@ class GBufferPass {
   // an open mesh casts from either side), once per view into its square, objects outside the view's frustum left
   // out. The depth programs are compiled on first use. Returns the draws made.
   size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views);
+  // Whether the scene has BLEND objects, which the G-buffer leaves out and drawBlended draws.
+  bool hasBlended() const { return opaqueDraws_ < draws_.size(); }
+  // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
+  // the program `program` makes from this pass's vertex shader and the object's permutation. `viewer` is the
+  // camera's position, from which BackToFront orders them.
+  void drawBlended(GLuint framebuffer, const glm::vec3& viewer, const BlendedProgram& program, BlendOrder order,
+                   int repeats) const;
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }
 
@@ -37,7 +45,8 @@ class GBufferPass {
   static constexpr size_t kMapCount = 5;
   struct Draw {
     int mesh;
-    size_t program;
+    bool blended;    // alphaMode BLEND: not in the G-buffer
+    size_t program;  // programs_ index, or for a blended draw blendedPermutations_ index
     GLintptr blockOffset;
     bool doubleSided;
     bool mirrored;  // det(model) < 0: front faces wind clockwise
@@ -68,7 +77,9 @@ class GBufferPass {
   std::vector<GpuMesh> meshes_;
   std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
   std::vector<GpuTexture> textures_;
-  std::vector<Draw> draws_;
+  std::vector<Draw> draws_;  // the opaque and masked first, then the blended
+  size_t opaqueDraws_ = 0;
+  std::vector<ShaderDefines> blendedPermutations_;
   GLsizeiptr blockStride_;
   Buffer objectBlocks_;
   WorldBounds bounds_;

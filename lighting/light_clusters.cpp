@@ -203,7 +203,7 @@ void LightClusters::growTo(uint32_t demand) {
 }
 
 void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
-                           const Texture& depth, bool stats) {
+                           const Texture& depth, const BlendedSurfaces* blended, bool stats) {
   if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
   growFromPastDemand();
   const uint32_t count = lights.count();
@@ -213,7 +213,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   blockData_.counts = glm::uvec4(count, clusters, capacity_, stats ? 1u : 0u);
   block_.update(blockData_);
   if (stats && (!visible_ || visible_->size() < count * 4ull)) visible_ = zeroedBuffer("clusters.visibleLights", count * 4ull);
-  occupy(f, frame, depth);
+  occupy(f, frame, depth, blended);
   lights.bind();
   headers_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterSsbo.index);
   cursors_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterCursorSsbo.index);
@@ -270,7 +270,8 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
 
-void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const Texture& depth) {
+void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const Texture& depth,
+                           const BlendedSurfaces* blended) {
   const uint32_t empty = 0xFFFFFFFFu;  // a box no pixel grew (cluster_occupancy.comp)
   glClearNamedBufferData(occupancy_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
   frame.bind(kFrameUbo.index);
@@ -283,12 +284,24 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8),
                     groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!blended) return;
+  const DebugGroup blendedGroup("cluster occupancy (blended surfaces)");
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  blended->draw(
+      [this](int, const std::string& vertexShader, const ShaderDefines& material,
+             const std::vector<BindingPoint>& bindings) -> const Program& {
+        return programs_.graphics(vertexShader, "lighting/cluster_occupancy.frag",
+                                  concat(material, occupancyBindingDefines(bindings)));
+      },
+      BlendOrder::Any, 1);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void LightClusters::measureOccupancy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame,
-                                     const Texture& depth) {
+                                     const Texture& depth, const BlendedSurfaces* blended) {
   if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
-  occupy(f, frame, depth);
+  occupy(f, frame, depth, blended);
 }
 
 std::vector<ViewSpaceBox> LightClusters::occupiedBoxes() const {

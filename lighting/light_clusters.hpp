@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/blended_surfaces.hpp"
 #include "core/bounds.hpp"
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
@@ -55,12 +56,14 @@ class LightClusters {
   LightClusters& operator=(const LightClusters&) = delete;
 
   // Culls `lights` into the clusters holding the surfaces of `depth` (the G-buffer's reversed-Z depth) for this
-  // frame; `frameData` is what `frame` holds.
+  // frame; `frameData` is what `frame` holds. With `blended`, the clusters its surfaces reach in front of `depth`
+  // are occupied too, so that the forward lighting of BLEND surfaces finds their lights listed.
   void assign(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
-              const Texture& depth, bool stats);
-  // The first step of assign alone, the occupancy of the clusters by the surfaces of `depth`: for a frame shaded
-  // without the lists (brute force) that still asks where its surfaces are (shadow planning).
-  void measureOccupancy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth);
+              const Texture& depth, const BlendedSurfaces* blended, bool stats);
+  // The first step of assign alone, the occupancy of the clusters by the surfaces of `depth` (and `blended`): for a
+  // frame shaded without the lists (brute force) that still asks where its surfaces are (shadow planning).
+  void measureOccupancy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth,
+                        const BlendedSurfaces* blended);
   // The boxes of the surface points each occupied cluster holds, as the last assign or measureOccupancy measured
   // them, with their screen tiles, in view space. Waits for the GPU (a read-back of 24 bytes per cluster).
   std::vector<ViewSpaceBox> occupiedBoxes() const;
@@ -105,8 +108,10 @@ class LightClusters {
   void fillWindow(uint32_t windowLights, bool first, bool last);
   void setWindow(uint32_t begin, uint32_t end);
   uint32_t readActiveCount() const;
-  // Clears the occupancy and runs its pass over `depth` (cluster_occupancy.comp), binding the frame and the block.
-  void occupy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth);
+  // Clears the occupancy and runs its pass over `depth` (cluster_occupancy.comp), then over the fragments of
+  // `blended` (cluster_occupancy.frag), binding the frame and the block.
+  void occupy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth,
+              const BlendedSurfaces* blended);
 
   ClusterConfig config_;
   ProgramCache& programs_;

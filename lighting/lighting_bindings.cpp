@@ -18,4 +18,21 @@ ShaderDefines lightingBindingDefines() {
   return defines;
 }
 
+ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
+  using namespace lighting_binding;
+  std::vector<BindingPoint> points = {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo,
+                                      kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo, kSpotConeSsbo,
+                                      kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit,
+                                      kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo};
+  points.insert(points.end(), geometry.begin(), geometry.end());
+  return bindingDefines(points);
+}
+
+ShaderDefines occupancyBindingDefines(const std::vector<BindingPoint>& geometry) {
+  using namespace lighting_binding;
+  std::vector<BindingPoint> points = {kFrameUbo, kClusterUbo, kClusterOccupancySsbo};
+  points.insert(points.end(), geometry.begin(), geometry.end());
+  return bindingDefines(points);
+}
+
 }  // namespace pbr

@@ -49,5 +49,11 @@ constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::Te
 // The frame block's, the lighting module's, the environment maps' and the shadow maps' points: everything bound
 // while the lighting module's programs run.
 ShaderDefines lightingBindingDefines();
+// The points of the programs drawn with the geometry pass's vertex shader (BlendedSurfaces), the geometry pass's
+// `geometry` points (object block, material maps) with those of the lighting module they read: the forward
+// lighting's (forward.frag), or the clusters' occupancy's (cluster_occupancy.frag). Throws std::logic_error where
+// the two tables overlap.
+ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry);
+ShaderDefines occupancyBindingDefines(const std::vector<BindingPoint>& geometry);
 
 }  // namespace pbr

@@ -1,6 +1,7 @@
 #include "lighting/lighting_pass.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -66,28 +67,14 @@ const Program& LightingPass::program(const LightingOptions& o, bool clustered, u
                                   lightingBindingDefines()));
 }
 
-void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
-                          const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
-                          const LightClusters* clusters, const Texture* partialRadiance) {
+void LightingPass::bindShading(const LightBuffer& lights, const LightingOptions& options,
+                               const UniformBuffer<FrameBlock>& frame, const LightClusters* clusters) {
   // Made (on first use) before anything is bound for this pass: making a table dispatches a pass of its own.
   const bool ibl = options.model == ShadingModel::Pbr && options.environment;
   const Texture* ambient = options.model == ShadingModel::Pbr && !ibl
                                ? &ambientAlbedo_.table(shaderDefines(options.variant))
                                : nullptr;
-  const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
-  const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
-  const bool clustered = clusters != nullptr;
-  const uint32_t perDispatch = lightsPerDispatch(clustered);
-  const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
-  const bool chunked = needsLightChunks(lights.count(), clustered);
-  if (chunked && (!partialRadiance || partialRadiance->format() != GL_RGBA32F ||
-                  partialRadiance->width() != radiance.width() || partialRadiance->height() != radiance.height())) {
-    throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
-                           std::to_string(perDispatch) + " lights");
-  }
-  const Program& shader = program(options, clustered, radiance.format(), chunked, lights.hasSpotLights());
-  shader.use();
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);
   lights.bind();
@@ -99,6 +86,25 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
     glBindTextureUnit(lighting_binding::kAmbientAlbedoUnit.index, ambient->id());
     glBindSampler(lighting_binding::kAmbientAlbedoUnit.index, ambientSampler_.id());
   }
+}
+
+void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
+                          const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
+                          const LightClusters* clusters, const Texture* partialRadiance) {
+  const GLuint groupsX = static_cast<GLuint>((radiance.width() + 7) / 8);
+  const GLuint groupsY = static_cast<GLuint>((radiance.height() + 7) / 8);
+  const bool clustered = clusters != nullptr;
+  const uint32_t perDispatch = lightsPerDispatch(clustered);
+  const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
+  const bool chunked = needsLightChunks(lights.count(), clustered);
+  if (chunked && (!partialRadiance || partialRadiance->format() != GL_RGBA32F ||
+                  partialRadiance->width() != radiance.width() || partialRadiance->height() != radiance.height())) {
+    throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
+                           std::to_string(perDispatch) + " lights");
+  }
+  const Program& shader = program(options, clustered, radiance.format(), chunked, lights.hasSpotLights());
+  bindShading(lights, options, frame, clusters);
+  shader.use();
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
     if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) {
@@ -138,6 +144,48 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights,
+                                 const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
+                                 unsigned radianceFormat, const LightClusters* clusters) {
+  // The counts and pictures of the debug views are the deferred pass's.
+  LightingOptions forward = options;
+  forward.stats = false;
+  forward.pairCounts = nullptr;
+  forward.shadowLight = nullptr;
+  const bool clustered = clusters != nullptr;
+  const uint32_t perDispatch = lightsPerDispatch(clustered);
+  const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
+  const bool chunked = chunks > 1;
+  const ShaderDefines lighting =
+      permutation(forward, clustered, radianceFormat, chunked, lights.hasSpotLights(), lightWindow_);
+  bindShading(lights, forward, frame, clusters);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT);
+  // Premultiplied "over" (forward.frag writes the lit colour times alpha, and alpha): each object's later light
+  // chunks write alpha 0, so they add to what its first one composited.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  std::map<const ShaderDefines*, const Program*> made;  // by material permutation, for this frame's draws
+  surfaces.draw(
+      [&](int repeat, const std::string& vertexShader, const ShaderDefines& material,
+          const std::vector<BindingPoint>& bindings) -> const Program& {
+        const Program*& p = made[&material];
+        if (!p) {
+          p = &programs_.graphics(vertexShader, "lighting/forward.frag",
+                                  concat(concat(material, lighting), forwardBindingDefines(bindings)));
+        }
+        const uint32_t first = uint32_t(repeat) * perDispatch;
+        if (!clustered) lights.bindWindow(first, perDispatch);
+        if (chunked) {
+          glProgramUniform4ui(p->id(), 0, first, first + perDispatch, repeat == 0 ? 1u : 0u,
+                              uint32_t(repeat) + 1 == chunks ? 1u : 0u);
+        }
+        return *p;
+      },
+      BlendOrder::BackToFront, int(chunks));
+  glDisable(GL_BLEND);
 }
 
 PairCounts LightingPass::readPairCounts() const {

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/blended_surfaces.hpp"
 #include "core/environment_maps.hpp"
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
@@ -85,6 +86,13 @@ class LightingPass {
               const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
               const Texture* partialRadiance);
 
+  // The BLEND surfaces, lit as render lights the G-buffer's (the same lights, lists, models, environment and
+  // shadows: shaders/lighting/forward.frag) and composited back to front over the radiance target, whose format is
+  // `radianceFormat`. Over kLightsPerDispatch lights (or a brute-force window), each object is drawn once per
+  // chunk of lights, the later chunks adding to the first.
+  void renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights, const LightingOptions& options,
+                     const UniformBuffer<FrameBlock>& frame, unsigned radianceFormat, const LightClusters* clusters);
+
   // Whether a frame of `lights` lights takes several dispatches, and so a running-sum image.
   bool needsLightChunks(uint32_t lights, bool clustered) const { return lights > lightsPerDispatch(clustered); }
 
@@ -99,6 +107,9 @@ class LightingPass {
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked,
                          bool spotLights);
+  // Binds the frame, the lights, the lists, the environment or ambient table and the shadow maps for shading.
+  void bindShading(const LightBuffer& lights, const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
+                   const LightClusters* clusters);
   uint32_t lightsPerDispatch(bool clustered) const { return clustered ? kLightsPerDispatch : lightWindow_; }
 
   ProgramCache& programs_;  // permutations compiled on first use

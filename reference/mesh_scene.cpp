@@ -24,6 +24,7 @@ MeshScene::MeshScene(const Scene& scene) {
     object.indices = &mesh.indices;
     object.frontSign = glm::determinant(glm::dmat3(model)) < 0.0 ? -1.0 : 1.0;
     object.doubleSided = o.material.doubleSided;
+    object.stopsShadowRays = stopsShadowRays(o.material);
     for (const Vertex& v : mesh.vertices) {
       object.positions.push_back(dvec3(model * glm::dvec4(dvec3(v.position), 1.0)));
       object.normals.push_back(normalMatrix * dvec3(v.normal));
@@ -87,7 +88,10 @@ std::optional<Hit> MeshScene::closestHit(const Ray& ray, double tMin, double tMa
 }
 
 bool MeshScene::occluded(const Ray& ray, double tMin, double tMax) const {
-  return bvh_.any(ray, tMin, tMax, [&](uint32_t i) { return cross(triangles_[i], ray, tMin, tMax, true).has_value(); });
+  return bvh_.any(ray, tMin, tMax, [&](uint32_t i) {
+    const Triangle& triangle = triangles_[i];
+    return objects_[triangle.object].stopsShadowRays && cross(triangle, ray, tMin, tMax, true).has_value();
+  });
 }
 
 }  // namespace pbr::reference

@@ -14,8 +14,9 @@ namespace pbr::reference {
 // vertex normals through the inverse transpose of the model matrix, interpolated with the hit's barycentrics
 // (which equal the rasterizer's perspective-correct ones at that point) and normalised. Back faces are culled
 // unless the material is double-sided, whose back faces flip the normal; a mirroring transform swaps the winding
-// that counts as front, as the G-buffer pass's glFrontFace does. Shadow rays meet both faces of every triangle.
-// Texture coordinates and maps are not used, so alpha-masked cut-outs are solid.
+// that counts as front, as the G-buffer pass's glFrontFace does. Shadow rays meet both faces of every triangle of
+// the objects that stop them (stopsShadowRays, raycast.hpp). Texture coordinates and maps are not used, so
+// alpha-masked cut-outs are solid.
 class MeshScene final : public RayCaster {
  public:
   // Throws SceneError when an object's mesh index names no mesh of the scene.
@@ -31,6 +32,7 @@ class MeshScene final : public RayCaster {
     const std::vector<uint32_t>* indices = nullptr;
     double frontSign = 1.0;  // -1 where the transform mirrors: the winding of front faces is reversed
     bool doubleSided = false;
+    bool stopsShadowRays = true;
   };
   struct Triangle {
     uint32_t object;

@@ -96,6 +96,10 @@ Ray objectRay(const glm::dmat4& toObject, const Ray& ray) {
 
 }  // namespace
 
+bool stopsShadowRays(const Material& material) {
+  return material.alphaMode != AlphaMode::Blend || material.alpha >= kBlendShadowCutoff;
+}
+
 AnalyticScene::AnalyticScene(const Scene& scene) {
   Aabb bounds;  // of the shapes' unit boxes
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -107,7 +111,7 @@ AnalyticScene::AnalyticScene(const Scene& scene) {
     }
     const glm::dmat4 toWorld(o.transform);
     const glm::dmat4 toObject = glm::inverse(toWorld);
-    shapes_.push_back({o.shape, toObject, toWorld, glm::transpose(glm::dmat3(toObject))});
+    shapes_.push_back({o.shape, toObject, toWorld, glm::transpose(glm::dmat3(toObject)), stopsShadowRays(o.material)});
     for (int corner = 0; corner < 8; ++corner) {
       const dvec3 unit(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);  // a corner of the box [0, 1]^3
       bounds.grow(dvec3(toWorld * glm::dvec4(unit - 0.5, 1.0)));
@@ -133,6 +137,7 @@ std::optional<Hit> AnalyticScene::closestHit(const Ray& ray, double tMin, double
 
 bool AnalyticScene::occluded(const Ray& ray, double tMin, double tMax) const {
   for (const Shape& s : shapes_) {
+    if (!s.stopsShadowRays) continue;
     const auto [o, d] = objectRay(s.toObject, ray);
     if (crosses(s.kind, o, d, tMin, tMax)) return true;
   }

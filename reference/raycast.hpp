@@ -29,12 +29,17 @@ class RayCaster {
   virtual ~RayCaster() = default;
   // The nearest surface the camera sees along the ray within [tMin, tMax]: the faces the rasterizer draws.
   virtual std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const = 0;
-  // Whether the ray meets any surface within [tMin, tMax], front or back face: the GPU draws its shadow casters
-  // without back-face culling. Stops at the first surface found.
+  // Whether the ray meets any surface that stops shadow rays (stopsShadowRays below) within [tMin, tMax],
+  // front or back face: the GPU draws its shadow casters without back-face culling. Stops at the first found.
   virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
   // The diagonal of a box around all the geometry, 0 for none: the scene's scale.
   virtual double extent() const = 0;
 };
+
+// Whether a surface of this material stops shadow rays: every one but a BLEND surface whose alpha factor is below
+// kBlendShadowCutoff (0.5, core/scene.hpp), where the GPU's shadow maps cut BLEND casters out (textures are not
+// read here, so the factor decides for the whole surface; MASK surfaces are solid for the same reason).
+bool stopsShadowRays(const Material& material);
 
 // The analytic shapes of a scene, each with its transform inverted once, intersected exactly in double.
 // Camera rays meet front faces only, as the rasterizer culls back faces (a plane seen from below is not there).
@@ -52,6 +57,7 @@ class AnalyticScene final : public RayCaster {
     glm::dmat4 toObject;
     glm::dmat4 toWorld;
     glm::dmat3 normalToWorld;
+    bool stopsShadowRays;
   };
   std::vector<Shape> shapes_;
   double extent_ = 0.0;

@@ -109,6 +109,25 @@ void addDirectLight(const Scene& scene, const Hit& hit, const dvec3& V, const Re
   }
 }
 
+// The radiance one surface that a camera ray meets sends back along it: ambient light through its albedo table
+// (empty without ambient light), then the lights, each that casts shadows counted in `shadows`.
+dvec3 shade(const Scene& scene, const Hit& hit, const Ray& ray, const AlbedoTable& albedo, const BrdfForms& forms,
+            ShadowRays& shadows) {
+  const ReferenceMaterial m = toReference(scene.objects[hit.object].material);
+  const dvec3 V = -ray.direction;
+  const double NoV = std::max(glm::dot(hit.normal, V), 1e-4);
+  dvec3 color(0.0);
+  if (!albedo.empty()) color += dvec3(scene.ambient) * albedo(NoV);
+  addDirectLight(scene, hit, V, m, forms, shadows, color);
+  return color;
+}
+
+// A camera ray goes on past a BLEND layer from this share of the scene's extent beyond it, as shadow rays leave
+// their surface: far past the rounding of the hit, so that it never meets that surface again (nor the triangle
+// beside it along a shared edge), far short of any gap a frame resolves. Surfaces nearer each other than that along
+// the ray count as one, the nearer.
+constexpr double kLayerGap = 1e-6;
+
 }  // namespace
 
 Geometry parseGeometry(const std::string& name) {
@@ -144,27 +163,47 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
   const dvec3 forward = glm::normalize(dvec3(scene.camera.target) - dvec3(scene.camera.position));
   const size_t pixels = size_t(width) * height;
   ReferenceFrame frame{{width, height, std::vector<float>(pixels * 4, 0.0f)}, std::vector<int>(pixels, -1),
-                       std::vector<float>(options.shadows != ShadowMode::None ? pixels : 0, -1.0f)};
+                       std::vector<float>(options.shadows != ShadowMode::None ? pixels : 0, -1.0f), 0};
+  const double layerGap = kLayerGap * geometry->extent();
+  std::atomic<int> truncatedRays{0};
 
   auto shadeRow = [&](int y) {
     for (int x = 0; x < width; ++x) {
+      const size_t pixel = size_t(y) * width + x;
       const Ray ray = cameraRay(scene.camera, width, height, x, y);
       // Clip to the camera's near and far planes along the view axis, as the rasterizer does.
       const double axial = glm::dot(ray.direction, forward);
-      const std::optional<Hit> hit =
-          geometry->closestHit(ray, scene.camera.nearPlane / axial, scene.camera.farPlane / axial);
+      const double tMax = scene.camera.farPlane / axial;
+      double tMin = scene.camera.nearPlane / axial;
+      // Front to back through the BLEND layers; T is the share of what lies behind them that still shows. The first
+      // surface that is not a layer ends the walk: alone on the ray, it gives C = 0 + 1 L = L exactly.
       dvec3 color(0.0);
-      if (hit) {
-        const ReferenceMaterial m = toReference(scene.objects[hit->object].material);
-        const dvec3 V = -ray.direction;
-        const double NoV = std::max(glm::dot(hit->normal, V), 1e-4);
-        if (!albedo[hit->object].empty()) color += dvec3(scene.ambient) * albedo[hit->object](NoV);
+      double T = 1.0;
+      for (int layer = 0; T > 0.0; ++layer) {
+        const std::optional<Hit> hit = geometry->closestHit(ray, tMin, tMax);
+        if (!hit) break;
+        const Material& material = scene.objects[hit->object].material;
+        const bool blend = material.alphaMode == AlphaMode::Blend;
+        if (blend && layer == kMaxBlendLayers) {
+          ++truncatedRays;
+          break;
+        }
         ShadowRays shadows(*geometry, options.shadows, *hit);
-        addDirectLight(scene, *hit, V, m, options.forms, shadows, color);
-        frame.objectIds[size_t(y) * width + x] = int(hit->object);
-        if (!frame.visibility.empty()) frame.visibility[size_t(y) * width + x] = shadows.visibility();
+        const dvec3 L = shade(scene, *hit, ray, albedo[hit->object], options.forms, shadows);
+        if (layer == 0) {
+          frame.objectIds[pixel] = int(hit->object);
+          if (!frame.visibility.empty()) frame.visibility[pixel] = shadows.visibility();
+        }
+        if (!blend) {
+          color += T * L;
+          break;
+        }
+        // Porter & Duff 1984, A over B with premultiplied colour a L: C += T a L, and B shows through by 1 - a.
+        color += T * double(material.alpha) * L;
+        T *= 1.0 - double(material.alpha);
+        tMin = hit->t + layerGap;
       }
-      float* p = &frame.radiance.pixels[(size_t(y) * width + x) * 4];
+      float* p = &frame.radiance.pixels[pixel * 4];
       p[0] = float(color.x);
       p[1] = float(color.y);
       p[2] = float(color.z);
@@ -173,6 +212,7 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
   };
 
   parallelFor(height, threads, shadeRow);
+  frame.truncatedRays = truncatedRays;
   return frame;
 }
 

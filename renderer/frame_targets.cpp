@@ -21,7 +21,12 @@ FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererC
       hdr("frame.radiance", glInternalFormat(config.hdrFormat), w, h),
       gbuffer(w, h, hdr, config.gbuffer),
       ldr("frame.display", GL_RGBA8, w, h),
-      clusters(programs, config.clusters) {}
+      clusters(programs, config.clusters),
+      blendTarget("frame.blendTarget") {
+  blendTarget.attach(GL_COLOR_ATTACHMENT0, hdr);
+  blendTarget.attach(GL_DEPTH_ATTACHMENT, gbuffer.depth);
+  blendTarget.checkComplete();
+}
 
 const Texture& FrameTargets::partialRadiance() {
   if (!partialRadiance_) {

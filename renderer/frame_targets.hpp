@@ -22,6 +22,8 @@ struct FrameTargets {
   GBuffer gbuffer;
   Texture ldr;  // the final RGBA8 frame, rows bottom-up as GL stores them
   LightClusters clusters;
+  // The radiance target over the G-buffer's depth: BLEND surfaces are drawn into it, in front of the opaque ones.
+  Framebuffer blendTarget;
 
   // RGBA32F running sums of the lighting pass when it needs several dispatches (over kLightsPerDispatch lights):
   // made on first use, as only such frames need its 16 bytes per pixel.

@@ -37,7 +37,11 @@ bool Renderer::shadowed(ShadowMode mode) {
 void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   FrameTargets& t = *targets_;
-  if (!clustered) t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth);
+  if (!clustered) {
+    const BlendedSurfaces blended = blendedSurfaces();
+    t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,
+                                scene_.geometry.hasBlended() ? &blended : nullptr);
+  }
   const ShadowReceivers receivers(t.clusters.occupiedBoxes(), frameData_.inverseView);
   const ShadowInputs inputs{camera_,
                             float(width()) / float(height()),
@@ -52,6 +56,14 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   scene_.shadows.render(inputs, [this](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
     scene_.geometry.renderDepth(framebuffer, views);
   });
+}
+
+BlendedSurfaces Renderer::blendedSurfaces() {
+  return {[this](const BlendedProgram& program, BlendOrder order, int repeats) {
+    frame_.bind(kFrameUbo.index);
+    glViewport(0, 0, width(), height());
+    scene_.geometry.drawBlended(targets_->blendTarget.id(), camera_.position, program, order, repeats);
+  }};
 }
 
 void Renderer::resize(int width, int height) {
@@ -84,12 +96,18 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   // for them; all write every display pixel, so the passes whose output they would replace are left out.
   const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
   const bool replacesDisplay = surfaceChannel || efficiency || shadowView;
+  // Surfaces with alphaMode BLEND: left out of the G-buffer, lit and composited by a pass of their own.
+  const bool blended = scene_.geometry.hasBlended();
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
   if (clustered) {
-    passes.push_back({"cluster", {R::Lights, R::Camera, R::GBuffer}, {R::ClusterLists}, [this, &t, stats = options.stats] {
-                        t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth, stats);
+    std::vector<R> clusterReads = {R::Lights, R::Camera, R::GBuffer};
+    if (blended) clusterReads.push_back(R::Geometry);  // the BLEND surfaces occupy clusters too
+    passes.push_back({"cluster", clusterReads, {R::ClusterLists}, [this, &t, blended, stats = options.stats] {
+                        const BlendedSurfaces surfaces = blendedSurfaces();
+                        t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth,
+                                          blended ? &surfaces : nullptr, stats);
                       }});
   }
   // After the cluster pass: the shadow views are planned from the clusters the surfaces occupy.
@@ -128,6 +146,23 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
                                                clustered ? &t.clusters : nullptr, partial);
+                      }});
+  }
+  if (blended && !emission && !replacesDisplay) {
+    std::vector<R> reads = lightingReads;
+    reads.push_back(R::Geometry);
+    passes.push_back({"transparency", reads, {R::Radiance}, [this, &t, options, clustered, ibl, shadows] {
+                        const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
+                        const ShadowMaps shadowMaps = scene_.shadows.maps();
+                        LightingOptions lighting;
+                        lighting.model = options.model;
+                        lighting.variant = options.variant;
+                        lighting.ambient = sceneData_.ambient;
+                        lighting.environment = ibl ? &maps : nullptr;
+                        lighting.shadows = shadows ? &shadowMaps : nullptr;
+                        lighting.shadowFilter = options.shadows.filter;
+                        scene_.lighting.renderBlended(blendedSurfaces(), scene_.lights, lighting, frame_,
+                                                      t.hdr.format(), clustered ? &t.clusters : nullptr);
                       }});
   }
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster

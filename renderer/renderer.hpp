@@ -122,6 +122,8 @@ class Renderer {
   // Whether any light casts under `mode` (cached until the lights change).
   bool shadowed(ShadowMode mode);
   // The shadow pass: plans the views from where the surfaces are (the cluster occupancy) and renders them.
+  // The scene's BLEND surfaces as the lighting module draws them (core/blended_surfaces.hpp).
+  BlendedSurfaces blendedSurfaces();
   void renderShadows(const ShadowSettings& settings, bool clustered);
 
   const Scene& sceneData_;

@@ -70,3 +70,28 @@ TEST_CASE("pass list: the renderer declares each configuration's passes in order
   const PassList bpPasses = withSky.passList(blinnPhong);
   CHECK((bpPasses[2].reads.back() == R::ClusterLists));
 }
+
+TEST_CASE("pass list: BLEND surfaces add a transparency pass after lighting, and only they do") {
+  PBR_REQUIRE_GL();
+  const ShaderLibrary shaders;
+  Scene scene = makeBuiltinScene("default");
+  FrameOptions options;
+  {
+    // The default scene has no BLEND material: the frame is as before, with no pass for transparency.
+    Renderer renderer(shaders, scene, 64, 36);
+    CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "cluster", "lighting", "post"});
+  }
+  scene.objects.back().material.alphaMode = AlphaMode::Blend;
+  scene.objects.back().material.alpha = 0.5f;
+  Renderer renderer(shaders, scene, 64, 36);
+  const PassList passes = renderer.passList(options);
+  CHECK(names(passes) == std::vector<std::string>{"gbuffer", "cluster", "lighting", "transparency", "post"});
+  // The clusters the BLEND surfaces reach get lists: the cluster pass draws their geometry too.
+  CHECK((passes[1].reads == std::vector<R>{R::Lights, R::Camera, R::GBuffer, R::Geometry}));
+  CHECK((passes[3].reads ==
+         std::vector<R>{R::GBuffer, R::Radiance, R::Lights, R::Camera, R::ClusterLists, R::Geometry}));
+  CHECK((passes[3].writes == std::vector<R>{R::Radiance}));
+  // A channel that replaces the frame draws no transparency.
+  options.debug = DebugChannel::Efficiency;
+  CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "cluster", "lighting", "debug"});
+}

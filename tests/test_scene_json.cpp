@@ -41,8 +41,9 @@ TEST_CASE("scene file: every field of a valid file reaches the scene") {
     "objects": [
       {"shape": "plane", "transform": {"scale": 10}},
       {"shape": "box", "transform": {"translate": [1, 0.5, -2], "scale": [1, 2, 3]},
-       "material": {"base_color": 0.25, "double_sided": true}},
-      {"shape": "sphere", "material": {"base_color": [0.9, 0.1, 0.2], "roughness": 0.3, "metalness": 1, "emissive": [2, 1, 0]}}
+       "material": {"base_color": 0.25, "double_sided": true, "alpha": 0.25, "alpha_mode": "blend"}},
+      {"shape": "sphere", "material": {"base_color": [0.9, 0.1, 0.2], "roughness": 0.3, "metalness": 1,
+                                       "emissive": [2, 1, 0], "alpha_mode": "mask", "alpha_cutoff": 0.75}}
     ],
     "lights": [
       {"position": [0, 3, 0], "color": [1, 0.5, 0.25], "luminous_power": 800, "radius": 6},
@@ -69,10 +70,15 @@ TEST_CASE("scene file: every field of a valid file reaches the scene") {
   CHECK(s.objects[0].material.baseColor == defaults.baseColor);
   CHECK(s.objects[0].material.roughness == defaults.roughness);
   CHECK_FALSE(s.objects[0].material.doubleSided);
+  CHECK(s.objects[0].material.alpha == defaults.alpha);
+  CHECK(s.objects[0].material.alphaMode == pbr::AlphaMode::Opaque);
+  CHECK(s.objects[0].material.alphaCutoff == defaults.alphaCutoff);
   CHECK(s.objects[1].shape == pbr::Shape::Box);
   CHECK(s.objects[1].transform == glm::scale(glm::translate(glm::mat4(1.0f), {1, 0.5f, -2}), {1, 2, 3}));
   checkVec(s.objects[1].material.baseColor, glm::vec3(0.25f));
   CHECK(s.objects[1].material.doubleSided);
+  CHECK(s.objects[1].material.alpha == 0.25f);
+  CHECK(s.objects[1].material.alphaMode == pbr::AlphaMode::Blend);
   CHECK(s.objects[2].shape == pbr::Shape::Sphere);
   CHECK(s.objects[2].transform == glm::mat4(1.0f));
   checkVec(s.objects[2].material.baseColor, {0.9f, 0.1f, 0.2f});
@@ -80,6 +86,9 @@ TEST_CASE("scene file: every field of a valid file reaches the scene") {
   CHECK(s.objects[2].material.metalness == 1.0f);
   checkVec(s.objects[2].material.emissive, {2, 1, 0});
   CHECK(s.objects[2].material.baseColorTexture == -1);
+  CHECK(s.objects[2].material.alphaMode == pbr::AlphaMode::Mask);
+  CHECK(s.objects[2].material.alphaCutoff == 0.75f);
+  CHECK(s.objects[2].material.alpha == defaults.alpha);
 
   REQUIRE(s.lights.size() == 2 + 5);
   checkVec(s.lights[0].position, {0, 3, 0});

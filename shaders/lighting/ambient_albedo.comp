@@ -31,7 +31,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   int size = pass.sizes.x;
   if (p.x >= size || p.y >= size) return;
-  // Shading clamps n.v to 1e-4 (lighting/surface.glsl), so the n.v = 0 column holds that value.
+  // Shading clamps n.v to 1e-4 (lighting/gbuffer_surface.glsl), so the n.v = 0 column holds that value.
   float NoV = max(float(p.x) / float(size - 1), 1e-4);
   float roughness = float(p.y) / float(size - 1);
   float a = alphaFromRoughness(roughness);

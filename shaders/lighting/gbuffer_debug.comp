@@ -7,7 +7,7 @@
 // alone (pbr::Renderer skips the lighting pass for it) and adds the legend.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "surface.glsl"
+#include "gbuffer_surface.glsl"
 #include "legend.glsl"
 #include "../post/srgb.glsl"
 

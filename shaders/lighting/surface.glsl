@@ -1,10 +1,6 @@
+// A shaded surface point, as the deferred pass reads it from the G-buffer (gbuffer_surface.glsl) and the forward
+// pass from a BLEND material's fragment (forward.frag).
 #include "../common/frame.glsl"
-#include "../common/octahedral.glsl"
-
-layout(binding = SURFACE_BASE_COLOR_UNIT) uniform sampler2D gBaseColor;  // SRGB8_ALPHA8, linear when fetched
-layout(binding = SURFACE_NORMAL_UNIT) uniform sampler2D gNormal;         // RG16 octahedral
-layout(binding = SURFACE_MATERIAL_UNIT) uniform sampler2D gMaterial;     // RGBA8 roughness, metalness, occlusion
-layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;           // 32F reversed-Z
 
 struct Surface {
   vec3 position;      // world
@@ -18,24 +14,20 @@ struct Surface {
   float occlusion;    // of the ambient term only: point lights are direct light
 };
 
-// False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
-bool readSurface(ivec2 p, out Surface s) {
-  float depth = texelFetch(gDepth, p, 0).r;
-  if (depth <= 0.0) return false;
-  vec2 ndc = (vec2(p) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  // Reversed-Z projection: depth = -P22 - P32 / z_view, solved for z_view; exact where the inverse
-  // view-projection matrix would lose digits.
+// The view-space point at pixel p (integer coordinates of its lower-left corner) with reversed-Z depth `depth`.
+// Reversed-Z projection: depth = -P22 - P32 / z_view, solved for z_view; exact where the inverse view-projection
+// matrix would lose digits.
+vec3 viewPositionAt(vec2 p, float depth) {
+  vec2 ndc = (p + 0.5) * frame.viewport.zw * 2.0 - 1.0;
   float zView = -frame.projParams.w / (depth + frame.projParams.z);
-  vec3 viewPos = vec3(-zView * ndc.x / frame.projParams.x, -zView * ndc.y / frame.projParams.y, zView);
+  return vec3(-zView * ndc.x / frame.projParams.x, -zView * ndc.y / frame.projParams.y, zView);
+}
+
+// The point's place and view terms from its view-space position and unit normal.
+void placeSurface(vec3 viewPos, vec3 normal, inout Surface s) {
   s.position = (frame.inverseView * vec4(viewPos, 1.0)).xyz;
-  s.viewDepth = -zView;
-  s.normal = octDecode(texelFetch(gNormal, p, 0).xy);
+  s.viewDepth = -viewPos.z;
+  s.normal = normal;
   s.V = normalize(frame.cameraPosition.xyz - s.position);
   s.NoV = max(dot(s.normal, s.V), 1e-4);
-  s.baseColor = texelFetch(gBaseColor, p, 0).rgb;
-  vec3 m = texelFetch(gMaterial, p, 0).xyz;
-  s.roughness = m.x;
-  s.metalness = m.y;
-  s.occlusion = m.z;
-  return true;
 }

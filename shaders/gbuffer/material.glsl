@@ -1,0 +1,80 @@
+// The glTF metal-rough material at a fragment, shared by the G-buffer pass and the forward lighting of BLEND
+// materials (shaders/lighting/forward.frag). Each *_MAP define (0 or 1) says whether the draw samples that texture,
+// so untextured draws sample nothing, and each map is sampled through its own UV transform.
+#include "object.glsl"
+
+layout(location = 0) in vec3 vNormal;
+layout(location = 1) in vec2 vUv;
+#if NORMAL_MAP
+layout(location = 2) in vec4 vTangent;
+#endif
+
+#if BASE_COLOR_MAP
+layout(binding = BASE_COLOR_MAP_UNIT) uniform sampler2D baseColorMap;  // SRGB8_ALPHA8
+#endif
+#if METALLIC_ROUGHNESS_MAP
+layout(binding = METALLIC_ROUGHNESS_MAP_UNIT) uniform sampler2D metallicRoughnessMap;  // G roughness, B metalness
+#endif
+#if NORMAL_MAP
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D normalMap;  // tangent space, +Y up the image
+#endif
+#if OCCLUSION_MAP
+layout(binding = OCCLUSION_MAP_UNIT) uniform sampler2D occlusionMap;  // R
+#endif
+#if EMISSIVE_MAP
+layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;  // SRGB8_ALPHA8
+#endif
+
+// A map's texture coordinates after its KHR_texture_transform: (u, v, 1) times the rows of the affine map.
+vec2 mapUv(int unit) { return vec3(vUv, 1.0) * object.uvTransform[unit]; }
+
+struct MaterialSample {
+  vec4 base;        // linear base colour and alpha
+  vec3 normal;      // unit, facing the viewer's side of a double-sided surface
+  float roughness;  // perceptual
+  float metalness;
+  float occlusion;  // of ambient light
+  vec3 emitted;     // radiance
+};
+
+MaterialSample sampleMaterial() {
+  MaterialSample m;
+  m.base = object.baseColor;
+#if BASE_COLOR_MAP
+  m.base *= texture(baseColorMap, mapUv(BASE_COLOR_MAP_UNIT));
+#endif
+  m.roughness = object.material.x;
+  m.metalness = object.material.y;
+#if METALLIC_ROUGHNESS_MAP
+  vec4 metallicRoughness = texture(metallicRoughnessMap, mapUv(METALLIC_ROUGHNESS_MAP_UNIT));
+  m.roughness *= metallicRoughness.g;
+  m.metalness *= metallicRoughness.b;
+#endif
+  vec3 n = normalize(vNormal);
+#if NORMAL_MAP
+  // glTF scales the tangent-space normal's xy by normalTexture.scale.
+  vec3 encoded = texture(normalMap, mapUv(NORMAL_MAP_UNIT)).xyz;
+  vec3 tangentNormal = normalize((encoded * 2.0 - 1.0) * vec3(object.material.zz, 1.0));
+  // The frame stays the mesh's under a rotating UV transform, as in Blender, whose Normal Map node takes its
+  // tangents from the UV map and not from a Mapping node's coordinates.
+  // Gram-Schmidt: interpolation and non-uniform scaling leave the tangent off the surface.
+  vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
+  if (dot(t, t) > 1e-12) {
+    t = normalize(t);
+    vec3 b = cross(n, t) * vTangent.w;
+    n = normalize(mat3(t, b, n) * tangentNormal);
+  }
+#endif
+  // Only double-sided draws show back faces; seen from behind, the surface faces the other way.
+  if (!gl_FrontFacing) n = -n;
+  m.normal = n;
+  m.occlusion = 1.0;
+#if OCCLUSION_MAP
+  m.occlusion = 1.0 + object.material.w * (texture(occlusionMap, mapUv(OCCLUSION_MAP_UNIT)).r - 1.0);
+#endif
+  m.emitted = object.emissive.rgb;
+#if EMISSIVE_MAP
+  m.emitted *= texture(emissiveMap, mapUv(EMISSIVE_MAP_UNIT)).rgb;
+#endif
+  return m;
+}

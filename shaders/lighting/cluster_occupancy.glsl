@@ -1,0 +1,34 @@
+// Where the surfaces are: each surface point grows the view-space box of its cluster and of its screen tile, so
+// that lights are tested against the surfaces a cluster holds rather than its whole froxel, and clusters without
+// surface get no list. A point within 1e-3 of a slice boundary joins both clusters: the lighting passes compute the
+// slice in other programs, whose logarithm may round the other way.
+#include "surface.glsl"
+#include "clusters.glsl"
+
+layout(std430, binding = CLUSTER_OCCUPANCY_SSBO) buffer Occupancy { uint occupancy[]; };
+
+// Most points leave a box as it is: a plain read saves the atomic.
+void keepLess(uint word, uint value) {
+  if (value < occupancy[word]) atomicMin(occupancy[word], value);
+}
+
+void growBox(uint base, vec3 p) {
+  keepLess(base, orderedBits(p.x));
+  keepLess(base + 1u, orderedBits(p.y));
+  keepLess(base + 2u, orderedBits(p.z));
+  keepLess(base + 3u, ~orderedBits(p.x));
+  keepLess(base + 4u, ~orderedBits(p.y));
+  keepLess(base + 5u, ~orderedBits(p.z));
+}
+
+// The surface point seen at pixel p with reversed-Z depth `depth` occupies its clusters.
+void occupy(uvec2 p, float depth) {
+  vec3 viewPos = viewPositionAt(vec2(p), depth);
+  uvec2 tileXY = min(p / clusterGrid.dims.w, clusterGrid.dims.xy - 1u);
+  uint tile = tileXY.y * clusterGrid.dims.x + tileXY.x;
+  float s = sliceCoordinate(-viewPos.z);
+  uint lo = clampSlice(floor(s - 1e-3)), hi = clampSlice(floor(s + 1e-3));
+  growBox(tileBoxBase(tile), viewPos);
+  growBox(clusterBoxBase(lo * tileCount() + tile), viewPos);
+  if (hi != lo) growBox(clusterBoxBase(hi * tileCount() + tile), viewPos);
+}

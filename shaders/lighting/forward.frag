@@ -1,0 +1,37 @@
+#version 450 core
+// Forward lighting of a BLEND material's fragment, drawn after the deferred pass over the radiance it left: the
+// material (../gbuffer/material.glsl) lit by the same lights, lists, models, environment and shadows as the deferred
+// pass (shade_lights.glsl), written premultiplied by its alpha for the blend unit's src + (1 - src.a) dst, the
+// "over" of Porter & Duff 1984, "Compositing Digital Images". With LIGHT_CHUNKS a draw adds one chunk of the lights:
+// the first also brings the environment, the directional lights and the emission, and the alpha that composites;
+// the others write alpha 0 and so add to it.
+#include "../gbuffer/material.glsl"
+#include "shade_lights.glsl"
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  MaterialSample m = sampleMaterial();
+  Surface s;
+  // The point the G-buffer would hold here: the same reconstruction, so the same cluster as the occupancy found.
+  placeSurface(viewPositionAt(floor(gl_FragCoord.xy), gl_FragCoord.z), m.normal, s);
+  s.baseColor = m.base.rgb;
+  s.roughness = m.roughness;
+  s.metalness = m.metalness;
+  s.occlusion = m.occlusion;
+  beginShading(s);
+  uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
+#if LIGHT_CHUNKS
+  bool first = lightChunk.z != 0u;
+  uint begin = min(lightChunk.x, count), end = min(lightChunk.y, count);
+#else
+  bool first = true;
+  uint begin = 0u, end = count;
+#endif
+  gColor = first ? m.emitted + shadeEnvironment(s) : vec3(0.0);
+  visitLights(s, begin, end);
+  // NaN compares false everywhere: keep only values known to be finite and non-negative.
+  vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
+  float alpha = clamp(m.base.a, 0.0, 1.0);
+  outColor = vec4(min(finishShading(color), vec3(HDR_MAX)) * alpha, first ? alpha : 0.0);
+}
