@@ -52,6 +52,15 @@ ShadowSettings readShadowSettings(const Args& args) {
   return s;
 }
 
+OptionSpec transparencyOption() {
+  return {"--transparency", "T",
+          "how BLEND materials composite: sorted (back to front by their bounds, Porter-Duff over) or oit (weighted "
+          "blended order-independent transparency, one pass in any order; 18 bytes per pixel)",
+          toString(Transparency::Sorted), ""};
+}
+
+Transparency readTransparency(const Args& args) { return parseTransparency(args.get("--transparency")); }
+
 void applySceneShapeOptions(const Args& args, SceneParams& params) {
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 0.0f, 89.0f);

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "app/args.hpp"
+#include "core/blended_surfaces.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/shadow_maps.hpp"
 
@@ -18,6 +19,9 @@ OptionSpec shadowFilterOption();  // --shadow-filter hard|pcf3x3|poisson16
 OptionSpec shadowAtlasOption();   // --shadow-atlas SIZE
 // The three shadow options as settings.
 ShadowSettings readShadowSettings(const Args& args);
+
+OptionSpec transparencyOption();  // --transparency sorted|oit
+Transparency readTransparency(const Args& args);
 
 // `--lights` and `--view-angle` into the scene parameters, where given.
 void applySceneShapeOptions(const Args& args, SceneParams& params);

@@ -43,6 +43,7 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--culling", "C", "clustered or none (brute force: every light for every pixel)", toString(frame.culling), ""},
       shadowModeOption(),
       shadowFilterOption(),
+      transparencyOption(),
       shadowAtlasOption(),
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
@@ -276,7 +277,7 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows};
+  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows, readTransparency(args)};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

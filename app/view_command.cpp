@@ -24,6 +24,7 @@ const std::vector<OptionSpec>& viewOptions() {
       {"--culling", "C", "clustered or none at start (key C switches)", toString(viewer.frame.culling), ""},
       shadowModeOption(),
       shadowFilterOption(),
+      transparencyOption(),
       shadowAtlasOption(),
       {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
        toString(kDisplayAntiAliasing), ""},
@@ -82,6 +83,7 @@ int runView(const std::vector<std::string>& argv) {
   options.frame.culling = parseCulling(args.get("--culling"));
   options.frame.aa = parseAntiAliasing(args.get("--aa"));
   options.frame.shadows = readShadowSettings(args);
+  options.frame.transparency = readTransparency(args);
   options.size = args.getSize("--size");
   options.paused = args.has("--paused");
   const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;

@@ -16,6 +16,14 @@ using BlendedProgram = std::function<const Program&(int repeat, const std::strin
                                                     const ShaderDefines& material,
                                                     const std::vector<BindingPoint>& bindings)>;
 
+// How BLEND surfaces are composited: sorted, back to front by their bounds with Porter-Duff "over" (exact where that
+// order is the depth order at every pixel); or oit, order-independent weighted blended transparency (McGuire &
+// Bavoil 2013), one pass in any order whose weights approximate the depth order (docs/transparency.md).
+enum class Transparency { Sorted, Oit };
+// "sorted", "oit"; throws std::invalid_argument naming the choices otherwise.
+Transparency parseTransparency(const std::string& name);
+const char* toString(Transparency transparency);
+
 // The order of the draws: any (each object once, both faces of a double-sided one together), or back to front for
 // compositing: by the view depth of the objects' bounds' centres, farthest first, a double-sided object's back
 // faces before its front faces.

@@ -14,7 +14,7 @@ ShaderDefines lightingBindingDefines() {
                          kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
                          kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
                          kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
-                         kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit});
+                         kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit, kOitRevealageUnit});
   return defines;
 }
 

@@ -42,6 +42,9 @@ constexpr BindingPoint kPairCountImage{"PAIR_COUNT_IMAGE", BindingKind::ImageUni
 constexpr BindingPoint kShadowLightImage{"SHADOW_LIGHT_IMAGE_UNIT", BindingKind::ImageUnit, 3};
 constexpr BindingPoint kShadowDepthUnit{"SHADOW_DEPTH_UNIT", BindingKind::TextureUnit, 12};
 constexpr BindingPoint kShadowOwnerUnit{"SHADOW_OWNER_UNIT", BindingKind::TextureUnit, 13};
+// Weighted blended order-independent transparency's sums, read by its composite pass (OitTargets).
+constexpr BindingPoint kOitAccumulationUnit{"OIT_ACCUMULATION_UNIT", BindingKind::TextureUnit, 4};
+constexpr BindingPoint kOitRevealageUnit{"OIT_REVEALAGE_UNIT", BindingKind::TextureUnit, 5};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding

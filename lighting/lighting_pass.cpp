@@ -148,25 +148,37 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
 
 void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights,
                                  const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
-                                 unsigned radianceFormat, const LightClusters* clusters) {
+                                 const Texture& radiance, const LightClusters* clusters, const OitTargets& oit) {
   // The counts and pictures of the debug views are the deferred pass's.
   LightingOptions forward = options;
   forward.stats = false;
   forward.pairCounts = nullptr;
   forward.shadowLight = nullptr;
   const bool clustered = clusters != nullptr;
+  const bool orderIndependent = oit.accumulation != nullptr;
   const uint32_t perDispatch = lightsPerDispatch(clustered);
   const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
   const bool chunked = chunks > 1;
-  const ShaderDefines lighting =
-      permutation(forward, clustered, radianceFormat, chunked, lights.hasSpotLights(), lightWindow_);
+  ShaderDefines lighting =
+      permutation(forward, clustered, radiance.format(), chunked, lights.hasSpotLights(), lightWindow_);
+  lighting.push_back({"OIT_WEIGHTED", orderIndependent ? "1" : "0"});
   bindShading(lights, forward, frame, clusters);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
-                  GL_FRAMEBUFFER_BARRIER_BIT);
-  // Premultiplied "over" (forward.frag writes the lit colour times alpha, and alpha): each object's later light
-  // chunks write alpha 0, so they add to what its first one composited.
+                  GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (orderIndependent) {
+    // Sums of weighted premultiplied colour and weight, and the product of the layers' 1 - a (dst (1 - src)).
+    const float zeros[4] = {0.0f, 0.0f, 0.0f, 0.0f}, ones[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearTexImage(oit.accumulation->id(), 0, GL_RGBA, GL_FLOAT, zeros);
+    glClearTexImage(oit.revealage->id(), 0, GL_RGBA, GL_FLOAT, ones);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
+  } else {
+    // Premultiplied "over" (forward.frag writes the lit colour times alpha, and alpha).
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  // Each object's later light chunks write alpha 0 (and no weight, no revealage): they add to what its first one
+  // composited.
   std::map<const ShaderDefines*, const Program*> made;  // by material permutation, for this frame's draws
   surfaces.draw(
       [&](int repeat, const std::string& vertexShader, const ShaderDefines& material,
@@ -184,8 +196,22 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
         }
         return *p;
       },
-      BlendOrder::BackToFront, int(chunks));
+      orderIndependent ? BlendOrder::Any : BlendOrder::BackToFront, int(chunks));
   glDisable(GL_BLEND);
+  if (!orderIndependent) return;
+  const auto [qualifier, maximum] = imageFormat(radiance.format());
+  const Program& composite = programs_.compute(
+      "lighting/oit_composite.comp",
+      concat({{"HDR_IMAGE_FORMAT", qualifier}, {"HDR_MAX", maximum}}, lightingBindingDefines()));
+  composite.use();
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glBindTextureUnit(lighting_binding::kOitAccumulationUnit.index, oit.accumulation->id());
+  glBindTextureUnit(lighting_binding::kOitRevealageUnit.index, oit.revealage->id());
+  glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                     radiance.format());
+  glDispatchCompute(static_cast<GLuint>((radiance.width() + 7) / 8), static_cast<GLuint>((radiance.height() + 7) / 8),
+                    1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 PairCounts LightingPass::readPairCounts() const {

@@ -34,6 +34,14 @@ struct SurfaceTextures {
   const Texture& depth;
 };
 
+// Weighted blended order-independent transparency's targets, the frame's size (McGuire & Bavoil 2013): RGBA32F
+// accumulation (the sums of w a C and of w a; float, as lit HDR colour times weights up to 3,000 overflows fp16) and
+// R16F revealage (the product of 1 - a). Null: BLEND surfaces are composited back to front instead.
+struct OitTargets {
+  const Texture* accumulation = nullptr;
+  const Texture* revealage = nullptr;
+};
+
 struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;
   ShadingVariant variant;  // PBR only
@@ -87,11 +95,13 @@ class LightingPass {
               const Texture* partialRadiance);
 
   // The BLEND surfaces, lit as render lights the G-buffer's (the same lights, lists, models, environment and
-  // shadows: shaders/lighting/forward.frag) and composited back to front over the radiance target, whose format is
-  // `radianceFormat`. Over kLightsPerDispatch lights (or a brute-force window), each object is drawn once per
-  // chunk of lights, the later chunks adding to the first.
+  // shadows: shaders/lighting/forward.frag) and composited over `radiance`: back to front, drawn into it, or with
+  // `oit` order-independent, drawn into its targets (which `surfaces` draws into) and composited from them
+  // (shaders/lighting/oit_composite.comp). Over kLightsPerDispatch lights (or a brute-force window), each object is
+  // drawn once per chunk of lights, the later chunks adding to the first.
   void renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights, const LightingOptions& options,
-                     const UniformBuffer<FrameBlock>& frame, unsigned radianceFormat, const LightClusters* clusters);
+                     const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
+                     const OitTargets& oit);
 
   // Whether a frame of `lights` lights takes several dispatches, and so a running-sum image.
   bool needsLightChunks(uint32_t lights, bool clustered) const { return lights > lightsPerDispatch(clustered); }

@@ -52,4 +52,20 @@ const Texture& FrameTargets::pairCounts() {
   return *pairCounts_;
 }
 
+const FrameTargets::OrderIndependent& FrameTargets::orderIndependent() {
+  if (!orderIndependent_) {
+    orderIndependent_.reset(new OrderIndependent{Texture("frame.oitAccumulation", GL_RGBA32F, width, height),
+                                                 Texture("frame.oitRevealage", GL_R16F, width, height),
+                                                 Framebuffer("frame.oitTarget")});
+    OrderIndependent& o = *orderIndependent_;
+    o.framebuffer.attach(GL_COLOR_ATTACHMENT0, o.accumulation);
+    o.framebuffer.attach(GL_COLOR_ATTACHMENT1, o.revealage);
+    o.framebuffer.attach(GL_DEPTH_ATTACHMENT, gbuffer.depth);
+    const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(o.framebuffer.id(), 2, drawBuffers);
+    o.framebuffer.checkComplete();
+  }
+  return *orderIndependent_;
+}
+
 }  // namespace pbr

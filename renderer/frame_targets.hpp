@@ -34,9 +34,17 @@ struct FrameTargets {
   const Texture& pairCounts();
   // RG32F luminance from casting lights (with shadows, without) for the shadows debug view: made on first use.
   const Texture& shadowLight();
+  // Order-independent transparency's targets over the G-buffer's depth (LightingPass::renderBlended): RGBA32F
+  // accumulation and R16F revealage, 18 bytes per pixel made on first use.
+  struct OrderIndependent {
+    Texture accumulation, revealage;
+    Framebuffer framebuffer;
+  };
+  const OrderIndependent& orderIndependent();
 
  private:
   std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_, shadowLight_;
+  std::unique_ptr<OrderIndependent> orderIndependent_;
 };
 
 }  // namespace pbr

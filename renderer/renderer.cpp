@@ -38,7 +38,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   FrameTargets& t = *targets_;
   if (!clustered) {
-    const BlendedSurfaces blended = blendedSurfaces();
+    const BlendedSurfaces blended = blendedSurfaces(t.blendTarget.id());
     t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,
                                 scene_.geometry.hasBlended() ? &blended : nullptr);
   }
@@ -58,11 +58,11 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   });
 }
 
-BlendedSurfaces Renderer::blendedSurfaces() {
-  return {[this](const BlendedProgram& program, BlendOrder order, int repeats) {
+BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {
+  return {[this, framebuffer](const BlendedProgram& program, BlendOrder order, int repeats) {
     frame_.bind(kFrameUbo.index);
     glViewport(0, 0, width(), height());
-    scene_.geometry.drawBlended(targets_->blendTarget.id(), camera_.position, program, order, repeats);
+    scene_.geometry.drawBlended(framebuffer, camera_.position, program, order, repeats);
   }};
 }
 
@@ -105,7 +105,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
     std::vector<R> clusterReads = {R::Lights, R::Camera, R::GBuffer};
     if (blended) clusterReads.push_back(R::Geometry);  // the BLEND surfaces occupy clusters too
     passes.push_back({"cluster", clusterReads, {R::ClusterLists}, [this, &t, blended, stats = options.stats] {
-                        const BlendedSurfaces surfaces = blendedSurfaces();
+                        const BlendedSurfaces surfaces = blendedSurfaces(t.blendTarget.id());
                         t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth,
                                           blended ? &surfaces : nullptr, stats);
                       }});
@@ -161,8 +161,14 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.environment = ibl ? &maps : nullptr;
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
-                        scene_.lighting.renderBlended(blendedSurfaces(), scene_.lights, lighting, frame_,
-                                                      t.hdr.format(), clustered ? &t.clusters : nullptr);
+                        const bool oit = options.transparency == Transparency::Oit;
+                        const FrameTargets::OrderIndependent* targets = oit ? &t.orderIndependent() : nullptr;
+                        const BlendedSurfaces surfaces =
+                            blendedSurfaces(oit ? targets->framebuffer.id() : t.blendTarget.id());
+                        const OitTargets oitTargets{oit ? &targets->accumulation : nullptr,
+                                                    oit ? &targets->revealage : nullptr};
+                        scene_.lighting.renderBlended(surfaces, scene_.lights, lighting, frame_, t.hdr,
+                                                      clustered ? &t.clusters : nullptr, oitTargets);
                       }});
   }
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster

@@ -30,6 +30,7 @@ struct FrameOptions {
   std::optional<DebugChannel> debug;
   AntiAliasing aa = AntiAliasing::None;  // of the display image, before any debug view
   ShadowSettings shadows;                // a frame none of whose lights casts runs no shadow pass
+  Transparency transparency = Transparency::Sorted;  // of BLEND surfaces; a frame without any runs no such pass
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -123,7 +124,8 @@ class Renderer {
   bool shadowed(ShadowMode mode);
   // The shadow pass: plans the views from where the surfaces are (the cluster occupancy) and renders them.
   // The scene's BLEND surfaces as the lighting module draws them (core/blended_surfaces.hpp).
-  BlendedSurfaces blendedSurfaces();
+  // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
+  BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);
 
   const Scene& sceneData_;

@@ -5,10 +5,21 @@
 // "over" of Porter & Duff 1984, "Compositing Digital Images". With LIGHT_CHUNKS a draw adds one chunk of the lights:
 // the first also brings the environment, the directional lights and the emission, and the alpha that composites;
 // the others write alpha 0 and so add to it.
+// With OIT_WEIGHTED the fragment is instead summed into weighted blended order-independent transparency's targets
+// (McGuire & Bavoil 2013), resolved by oit_composite.comp.
 #include "../gbuffer/material.glsl"
 #include "shade_lights.glsl"
 
+#if OIT_WEIGHTED
+layout(location = 0) out vec4 outAccumulation;  // blended ONE, ONE: w a C, w a
+layout(location = 1) out vec4 outRevealage;     // blended ZERO, ONE_MINUS_SRC_COLOR: the target keeps its 1 - a
+
+// McGuire & Bavoil 2013, eq. 7: nearer layers weigh more, so that the average leans to the front one, for view
+// depths z in metres from centimetres to hundreds of metres.
+float depthWeight(float z) { return clamp(10.0 / (1e-5 + pow(z / 5.0, 2.0) + pow(z / 200.0, 6.0)), 1e-2, 3e3); }
+#else
 layout(location = 0) out vec4 outColor;
+#endif
 
 void main() {
   MaterialSample m = sampleMaterial();
@@ -33,5 +44,12 @@ void main() {
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
   float alpha = clamp(m.base.a, 0.0, 1.0);
-  outColor = vec4(min(finishShading(color), vec3(HDR_MAX)) * alpha, first ? alpha : 0.0);
+  vec3 lit = min(finishShading(color), vec3(HDR_MAX));
+#if OIT_WEIGHTED
+  float w = alpha * depthWeight(s.viewDepth);
+  outAccumulation = vec4(lit * w, first ? w : 0.0);
+  outRevealage = vec4(first ? alpha : 0.0);
+#else
+  outColor = vec4(lit * alpha, first ? alpha : 0.0);
+#endif
 }
