@@ -241,6 +241,9 @@ int runRender(const std::vector<std::string>& argv) {
     throw UsageError("--debug shadows: no light of the scene casts shadows under --shadows " +
                      std::string(toString(shadows.mode)) + " (--shadows on makes every light cast)");
   }
+  if (debug == DebugChannel::Transparency && !hasBlendMaterial(scene)) {
+    throw UsageError("--debug transparency: the scene has no material with alphaMode BLEND");
+  }
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.
   std::optional<OutputFile> pngFile, hdrFile, jsonFile;

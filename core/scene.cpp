@@ -182,4 +182,9 @@ void validateScene(const Scene& scene, const std::string& source) {
   }
 }
 
+bool hasBlendMaterial(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [](const SceneObject& o) { return o.material.alphaMode == AlphaMode::Blend; });
+}
+
 }  // namespace pbr

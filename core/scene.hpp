@@ -173,6 +173,9 @@ struct Scene {
   SceneObject& addShape(Shape shape, const glm::mat4& transform, const Material& material);
 };
 
+// Whether any object's material has alphaMode BLEND (drawn by the transparency pass).
+bool hasBlendMaterial(const Scene& scene);
+
 class SceneError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

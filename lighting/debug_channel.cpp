@@ -17,6 +17,7 @@ const char* toString(DebugChannel channel) {
     case DebugChannel::Slices: return "slices";
     case DebugChannel::Efficiency: return "efficiency";
     case DebugChannel::Shadows: return "shadows";
+    case DebugChannel::Transparency: return "transparency";
   }
   return "?";
 }

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "lighting/transparency_debug_pass.hpp"
+
 namespace pbr {
 
 namespace {
@@ -59,6 +61,9 @@ LegendText legendText(DebugChannel channel, const FrameBlock& frame, uint32_t sl
       return {"culling efficiency: contributing / evaluated pairs", "0", "1", "no pair evaluated"};
     case DebugChannel::Shadows:
       return {"shadow visibility: light arriving / unshadowed; atlas inset", "0", "1", "no shadowed light"};
+    case DebugChannel::Transparency:
+      return {"blend layers per pixel in front of the opaque surface", "0", std::to_string(kMaxShownLayers) + "+",
+              "no blend layer"};
   }
   return {};
 }

@@ -22,7 +22,8 @@ const char* channelDefine(DebugChannel channel) {
     case DebugChannel::Clusters:
     case DebugChannel::Slices:
     case DebugChannel::Efficiency:
-    case DebugChannel::Shadows: return nullptr;
+    case DebugChannel::Shadows:
+    case DebugChannel::Transparency: return nullptr;
   }
   return nullptr;
 }

@@ -68,4 +68,15 @@ const FrameTargets::OrderIndependent& FrameTargets::orderIndependent() {
   return *orderIndependent_;
 }
 
+const FrameTargets::LayerCount& FrameTargets::layerCount() {
+  if (!layerCount_) {
+    layerCount_.reset(new LayerCount{Texture("frame.layerCount", GL_R32F, width, height),
+                                     Framebuffer("frame.layerCountTarget")});
+    layerCount_->framebuffer.attach(GL_COLOR_ATTACHMENT0, layerCount_->layers);
+    layerCount_->framebuffer.attach(GL_DEPTH_ATTACHMENT, gbuffer.depth);
+    layerCount_->framebuffer.checkComplete();
+  }
+  return *layerCount_;
+}
+
 }  // namespace pbr

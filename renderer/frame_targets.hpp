@@ -41,10 +41,17 @@ struct FrameTargets {
     Framebuffer framebuffer;
   };
   const OrderIndependent& orderIndependent();
+  // R32F BLEND layers per pixel over the G-buffer's depth, for the transparency debug view: made on first use.
+  struct LayerCount {
+    Texture layers;
+    Framebuffer framebuffer;
+  };
+  const LayerCount& layerCount();
 
  private:
   std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_, shadowLight_;
   std::unique_ptr<OrderIndependent> orderIndependent_;
+  std::unique_ptr<LayerCount> layerCount_;
 };
 
 }  // namespace pbr

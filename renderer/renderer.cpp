@@ -85,19 +85,21 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   const bool clustered = options.culling == Culling::Clustered;
   const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
   const bool shadows = shadowed(options.shadows.mode);
-  // The cluster views need the grid that only clustered culling builds, the shadows view a light that casts:
-  // without them the frame shows no debug view.
+  const bool blended = scene_.geometry.hasBlended();
+  // The cluster views need the grid that only clustered culling builds, the shadows view a light that casts, the
+  // transparency view a BLEND surface: without them the frame shows no debug view.
   const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug)) &&
-                     (shadows || *options.debug != DebugChannel::Shadows);
+                     (shadows || *options.debug != DebugChannel::Shadows) &&
+                     (blended || *options.debug != DebugChannel::Transparency);
   const bool emission = debug && *options.debug == DebugChannel::Emission;
   const bool efficiency = debug && *options.debug == DebugChannel::Efficiency;
   const bool shadowView = debug && *options.debug == DebugChannel::Shadows;
+  const bool layerView = debug && *options.debug == DebugChannel::Transparency;
   // The surface channels draw the G-buffer alone, the efficiency and shadows channels what the lighting pass counts
-  // for them; all write every display pixel, so the passes whose output they would replace are left out.
+  // for them, the transparency channel the BLEND layers it counts itself; all write every display pixel, so the
+  // passes whose output they would replace are left out.
   const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
-  const bool replacesDisplay = surfaceChannel || efficiency || shadowView;
-  // Surfaces with alphaMode BLEND: left out of the G-buffer, lit and composited by a pass of their own.
-  const bool blended = scene_.geometry.hasBlended();
+  const bool replacesDisplay = surfaceChannel || efficiency || shadowView || layerView;
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
@@ -111,7 +113,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                       }});
   }
   // After the cluster pass: the shadow views are planned from the clusters the surfaces occupy.
-  if (shadows && !emission && !surfaceChannel) {
+  if (shadows && !emission && !surfaceChannel && !layerView) {
     std::vector<R> shadowReads = {R::Geometry, R::Lights, R::Camera, R::GBuffer};
     if (clustered) shadowReads.push_back(R::ClusterLists);
     passes.push_back({"shadow", shadowReads, {R::ShadowMaps},
@@ -126,7 +128,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (shadowView) lightingWrites.push_back(R::ShadowLight);
   // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
   // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
-  if (!emission && !surfaceChannel) {
+  if (!emission && !surfaceChannel && !layerView) {
     passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency,
                                                                   shadows, shadowView] {
                         const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
@@ -214,6 +216,8 @@ FramePass Renderer::debugPass(DebugChannel channel) {
     reads = {R::ClusterLists, R::GBuffer, R::Camera, R::Display};
   } else if (channel == DebugChannel::Shadows) {
     reads = {R::ShadowLight, R::ShadowMaps, R::Camera};
+  } else if (channel == DebugChannel::Transparency) {
+    reads = {R::Geometry, R::GBuffer, R::Camera};
   } else {
     reads = {R::PairCounts, R::Camera};
   }
@@ -223,6 +227,10 @@ FramePass Renderer::debugPass(DebugChannel channel) {
               scene_.gbufferDebug.render(channel, t.gbuffer, frame_, scene_.debugLegend, t.ldr);
             } else if (needsClusterGrid(channel)) {
               scene_.clusterDebug.render(channel, t.clusters, t.gbuffer.depth, frame_, scene_.debugLegend, t.ldr);
+            } else if (channel == DebugChannel::Transparency) {
+              const FrameTargets::LayerCount& count = t.layerCount();
+              scene_.transparencyDebug.render(blendedSurfaces(count.framebuffer.id()), count.layers, frame_,
+                                              scene_.debugLegend, t.ldr);
             } else if (channel == DebugChannel::Shadows) {
               scene_.shadowDebug.render(t.shadowLight(), scene_.shadows.maps(), scene_.shadows.ownerMap(), frame_,
                                         scene_.debugLegend, t.ldr);

@@ -24,7 +24,8 @@ SceneResources::SceneResources(const ShaderLibrary& shaders, const Scene& scene,
       clusterDebug(programs),
       gbufferDebug(programs),
       efficiencyDebug(programs),
-      shadowDebug(programs) {
+      shadowDebug(programs),
+      transparencyDebug(programs) {
   lights.uploadPoints(scene.lights);
   lights.uploadDirectional(scene.directionalLights);
 }

@@ -8,6 +8,7 @@
 #include "ibl/ibl_maps.hpp"
 #include "lighting/cluster_debug_pass.hpp"
 #include "lighting/efficiency_debug_pass.hpp"
+#include "lighting/transparency_debug_pass.hpp"
 #include "lighting/gbuffer_debug_pass.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/lighting_pass.hpp"
@@ -39,6 +40,7 @@ struct SceneResources {
   GBufferDebugPass gbufferDebug;
   EfficiencyDebugPass efficiencyDebug;
   ShadowDebugPass shadowDebug;
+  TransparencyDebugPass transparencyDebug;
   UniformBuffer<LegendBlock> debugLegend{"debug.legend"};  // the text of the debug channel's legend, set by the frame that shows it
 };
 

@@ -12,9 +12,9 @@ using pbr::test::isOneLine;
 using pbr::test::runPbr;
 using pbr::test::TempDir;
 
-TEST_CASE("debug channels: eleven names, each parsed back to its channel, unknown ones refused naming the valid ones") {
+TEST_CASE("debug channels: twelve names, each parsed back to its channel, unknown ones refused naming the valid ones") {
   const std::string names = "basecolor, normal, roughness, metalness, occlusion, emission, depth, clusters, slices, "
-                            "efficiency, shadows";
+                            "efficiency, shadows, transparency";
   CHECK(pbr::debugChannelNames(", ") == names);
   for (const pbr::DebugChannel channel : pbr::kDebugChannels) {
     CHECK((pbr::parseDebugChannel(pbr::toString(channel)) == channel));

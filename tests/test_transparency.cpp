@@ -14,6 +14,7 @@
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "core/gltf_loader.hpp"
+#include "lighting/transparency_debug_pass.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
@@ -368,4 +369,53 @@ TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, o
   const double sortedError = relativeRmse(sorted.hdr, ref.radiance), oitError = relativeRmse(oit.hdr, ref.radiance);
   MESSAGE("relative RMSE against the reference: sorted " << sortedError << ", oit " << oitError);
   CHECK(oitError < 0.05);
+}
+
+TEST_CASE("transparency debug view: each pixel shows how many BLEND layers cover it") {
+  PBR_REQUIRE_GL();
+  const pbr::Scene scene = crossingPanes();
+  pbr::FrameOptions o = unshadowed();
+  const pbr::test::RenderedFrame lit = renderExact(scene, o);
+  // The layers each pixel shows, counted here: each pane alone changes the lit frame where it covers a pixel.
+  std::vector<int> layers(size_t(kSize.x) * kSize.y, 0);
+  for (size_t pane = 2; pane < scene.objects.size(); ++pane) {
+    pbr::Scene without = scene;
+    without.objects.erase(without.objects.begin() + std::ptrdiff_t(pane));
+    const pbr::ImageRgbaF f = renderExact(without, o).hdr;
+    for (int y = 0; y < kSize.y; ++y) {
+      for (int x = 0; x < kSize.x; ++x) layers[size_t(y) * kSize.x + x] += rgb(f, x, y) != rgb(lit.hdr, x, y);
+    }
+  }
+  o.debug = pbr::DebugChannel::Transparency;
+  const pbr::test::RenderedFrame view = renderExact(scene, o);
+  // heat.glsl's ramp at count / 8: black, blue, cyan, green, yellow, red at 0, 1.6, 3.2, 4.8, 6.4 and 8 layers.
+  const auto heat = [](float t) {
+    const glm::vec3 stops[6] = {glm::vec3(0.0f), {0.0f, 0.1f, 0.9f}, {0.0f, 0.8f, 0.9f}, {0.1f, 0.85f, 0.1f},
+                                {1.0f, 0.9f, 0.0f}, {1.0f, 0.05f, 0.0f}};
+    const float x = std::clamp(t, 0.0f, 1.0f) * 5.0f;
+    const int i = std::min(int(x), 4);
+    return glm::mix(stops[i], stops[i + 1], x - float(i));
+  };
+  size_t seen[4] = {0, 0, 0, 0};
+  // The upper half of the frame (captures hold rows top-down): the legend sits at the bottom.
+  for (int y = 0; y < kSize.y / 2; ++y) {
+    for (int x = 0; x < kSize.x; ++x) {
+      const int n = layers[size_t(y) * kSize.x + x];
+      const uint8_t* p = &view.ldr.pixels[(size_t(y) * kSize.x + x) * 4];
+      CAPTURE(x);
+      CAPTURE(y);
+      CAPTURE(n);
+      if (n == 0) {
+        CHECK((p[0] == p[1] && p[1] == p[2]));  // the grey no-data pattern
+      } else {
+        // The ramp's values are stored as they are (the debug views write the RGBA8 frame directly).
+        const glm::vec3 expected = heat(float(n) / float(pbr::kMaxShownLayers));
+        for (int c = 0; c < 3; ++c) CHECK(std::abs(int(p[c]) - int(std::lround(expected[c] * 255.0f))) <= 1);
+      }
+      ++seen[std::min(n, 3)];
+    }
+  }
+  MESSAGE("pixels with 0, 1, 2, 3 layers: " << seen[0] << ", " << seen[1] << ", " << seen[2] << ", " << seen[3]);
+  CHECK(seen[1] > 0);
+  CHECK(seen[2] > 0);
 }

@@ -256,6 +256,17 @@ void Overlay::controls(Viewer& viewer) {
 
   shadowControls(viewer);
 
+  // BLEND materials' compositing, for the scenes that have any.
+  const bool blends = hasBlendMaterial(viewer.scene());
+  if (blends) {
+    int transparency = f.transparency == Transparency::Sorted ? 0 : 1;
+    ImGui::TextUnformatted("blending");
+    ImGui::SameLine(90.0f);
+    if (ImGui::RadioButton("sorted", &transparency, 0)) viewer.setTransparency(Transparency::Sorted);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("order-independent", &transparency, 1)) viewer.setTransparency(Transparency::Oit);
+  }
+
   if (ImGui::BeginCombo("debug view", viewName(viewer.view()))) {
     if (ImGui::Selectable("final", !viewer.view())) viewer.setView(std::nullopt);
     for (const DebugChannel channel : kDebugChannels) {
@@ -268,6 +279,9 @@ void Overlay::controls(Viewer& viewer) {
   }
   if (viewer.view() == DebugChannel::Shadows && !viewer.lightStats().shadows.shadowedLights) {
     ImGui::TextDisabled("(no light casts: shadows on makes every light cast)");
+  }
+  if (viewer.view() == DebugChannel::Transparency && !blends) {
+    ImGui::TextDisabled("(no material of the scene blends)");
   }
 
   // Exposure in stops of the display multiplier, and the camera's EV100 that gives it with the scene's

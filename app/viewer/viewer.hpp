@@ -64,6 +64,7 @@ class Viewer {
   void setVariant(const ShadingVariant& variant) { options_.frame.variant = variant; }
   void setCulling(Culling culling) { options_.frame.culling = culling; }
   void setShadows(const ShadowSettings& shadows) { options_.frame.shadows = shadows; }
+  void setTransparency(Transparency transparency) { options_.frame.transparency = transparency; }
   void setView(std::optional<DebugChannel> view) { view_ = view; }
   void setExposure(float exposure) { options_.frame.exposure = exposure; }
   void setPaused(bool paused) { options_.paused = paused; }
