@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/debug_group.hpp"
+#include "lighting/blended_programs.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
@@ -287,11 +288,11 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   if (!blended) return;
   const DebugGroup blendedGroup("cluster occupancy (blended surfaces)");
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  BlendedPrograms programs(programs_, "lighting/cluster_occupancy.frag", occupancyBindingDefines);
   blended->draw(
-      [this](int, const std::string& vertexShader, const ShaderDefines& material,
-             const std::vector<BindingPoint>& bindings) -> const Program& {
-        return programs_.graphics(vertexShader, "lighting/cluster_occupancy.frag",
-                                  concat(material, occupancyBindingDefines(bindings)));
+      [&](int, const std::string& vertexShader, const ShaderDefines& material,
+          const std::vector<BindingPoint>& bindings) -> const Program& {
+        return programs.get(vertexShader, material, bindings);
       },
       BlendOrder::Any, 1);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

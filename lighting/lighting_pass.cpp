@@ -1,12 +1,12 @@
 #include "lighting/lighting_pass.hpp"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "lighting/blended_programs.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
@@ -179,22 +179,20 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   }
   // Each object's later light chunks write alpha 0 (and no weight, no revealage): they add to what its first one
   // composited.
-  std::map<const ShaderDefines*, const Program*> made;  // by material permutation, for this frame's draws
+  BlendedPrograms programs(programs_, "lighting/forward.frag", [&](const std::vector<BindingPoint>& bindings) {
+    return concat(lighting, forwardBindingDefines(bindings));
+  });
   surfaces.draw(
       [&](int repeat, const std::string& vertexShader, const ShaderDefines& material,
           const std::vector<BindingPoint>& bindings) -> const Program& {
-        const Program*& p = made[&material];
-        if (!p) {
-          p = &programs_.graphics(vertexShader, "lighting/forward.frag",
-                                  concat(concat(material, lighting), forwardBindingDefines(bindings)));
-        }
+        const Program& p = programs.get(vertexShader, material, bindings);
         const uint32_t first = uint32_t(repeat) * perDispatch;
         if (!clustered) lights.bindWindow(first, perDispatch);
         if (chunked) {
-          glProgramUniform4ui(p->id(), 0, first, first + perDispatch, repeat == 0 ? 1u : 0u,
+          glProgramUniform4ui(p.id(), 0, first, first + perDispatch, repeat == 0 ? 1u : 0u,
                               uint32_t(repeat) + 1 == chunks ? 1u : 0u);
         }
-        return *p;
+        return p;
       },
       orderIndependent ? BlendOrder::Any : BlendOrder::BackToFront, int(chunks));
   glDisable(GL_BLEND);

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "lighting/blended_programs.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
@@ -15,12 +16,15 @@ void TransparencyDebugPass::render(const BlendedSurfaces& surfaces, const Textur
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   // Every face the transparency pass composites is a layer: both faces of a double-sided surface count.
+  BlendedPrograms programs(programs_, "lighting/layer_count.frag", [](const std::vector<BindingPoint>& bindings) {
+    std::vector<BindingPoint> points = {kFrameUbo};
+    points.insert(points.end(), bindings.begin(), bindings.end());
+    return bindingDefines(points);
+  });
   surfaces.draw(
-      [this](int, const std::string& vertexShader, const ShaderDefines& material,
-             const std::vector<BindingPoint>& bindings) -> const Program& {
-        std::vector<BindingPoint> points = {kFrameUbo};
-        points.insert(points.end(), bindings.begin(), bindings.end());
-        return programs_.graphics(vertexShader, "lighting/layer_count.frag", concat(material, bindingDefines(points)));
+      [&](int, const std::string& vertexShader, const ShaderDefines& material,
+          const std::vector<BindingPoint>& bindings) -> const Program& {
+        return programs.get(vertexShader, material, bindings);
       },
       BlendOrder::Any, 1);
   glDisable(GL_BLEND);

@@ -7,7 +7,7 @@
 
 using namespace pbr;
 
-TEST_CASE("pair cost: in the fixture every pixel is surface and every light-pixel pair contributes") {
+TEST_CASE("pair cost: in the fixture every pixel is surface under the BLEND pane, every light-pixel pair contributes") {
   PBR_REQUIRE_GL();
   const glm::ivec2 size{128, 72};
   for (const ShadingModel model : {ShadingModel::Pbr, ShadingModel::BlinnPhong}) {
@@ -18,6 +18,18 @@ TEST_CASE("pair cost: in the fixture every pixel is surface and every light-pixe
     const test::RenderedFrame f = test::renderScene(pairCostScene(16), size, options);
     CHECK(f.stats.pairs.evaluated == uint64_t(size.x) * size.y * 16);
     CHECK(f.stats.pairs.contributing == f.stats.pairs.evaluated);
+    // The pane covers every pixel: the frame differs everywhere from the floor alone (in PBR: Blinn-Phong's LDR
+    // clamp saturates both).
+    if (model != ShadingModel::Pbr) continue;
+    Scene floor = pairCostScene(16);
+    floor.objects.pop_back();
+    const test::RenderedFrame alone = test::renderScene(floor, size, options);
+    for (int y = 0; y < size.y; ++y) {
+      for (int x = 0; x < size.x; ++x) {
+        const float *a = f.hdr.at(x, y), *b = alone.hdr.at(x, y);
+        CHECK((a[0] != b[0] || a[1] != b[1] || a[2] != b[2]));
+      }
+    }
   }
 }
 
@@ -41,5 +53,9 @@ TEST_CASE("pair cost: the measurement returns finite positive spreads for every 
     CHECK(costs[i].nsPerPair.p10 <= costs[i].nsPerPair.median);
     CHECK(costs[i].nsPerPair.median <= costs[i].nsPerPair.p90);
     CHECK(costs[i].fixedShare > 0.0);
+    CHECK(costs[i].transparentNsPerPair.p10 > 0.0);
+    CHECK(costs[i].transparentNsPerPair.p10 <= costs[i].transparentNsPerPair.median);
+    CHECK(costs[i].transparentNsPerPair.median <= costs[i].transparentNsPerPair.p90);
+    CHECK(costs[i].transparentFixedShare > 0.0);
   }
 }

@@ -10,7 +10,6 @@ namespace pbr {
 
 namespace {
 
-double lightingMs(const FrameTiming& f) { return f.pass("lighting"); }
 
 }  // namespace
 
@@ -25,6 +24,11 @@ Scene pairCostScene(int lights) {
   s.camera.farPlane = 20.0f;
   s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f, 1.0f, 20.0f)),
              {glm::vec3(0.6f, 0.5f, 0.4f), 0.4f, 0.0f});
+  Material pane{glm::vec3(0.4f, 0.5f, 0.6f), 0.4f, 0.0f};
+  pane.alpha = 0.5f;
+  pane.alphaMode = AlphaMode::Blend;
+  s.addShape(Shape::Plane,
+             glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, 0.3f, 0.0f}), glm::vec3(20.0f, 1.0f, 20.0f)), pane);
   Pcg32 random(0x5eed);
   for (int i = 0; i < lights; ++i) {
     PointLight l;
@@ -44,13 +48,15 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   struct Run {
     std::unique_ptr<Renderer> renderer;
     FrameOptions options;
-    std::vector<double> withLights, withoutLights;  // lighting pass ms per round
+    // Per round, the lighting and transparency passes' ms.
+    std::vector<double> withLights, withoutLights, blendedWithLights, blendedWithoutLights;
   };
   std::vector<Run> runs;
   for (const PairCostVariant& v : variants) {
     RendererConfig config = v.config;
     config.sizeOption = settings.sizeOption;
-    Run run{std::make_unique<Renderer>(shaders, scene, settings.size.x, settings.size.y, config), v.options, {}, {}};
+    Run run{std::make_unique<Renderer>(shaders, scene, settings.size.x, settings.size.y, config), v.options,
+            {}, {}, {}, {}};
     run.options.culling = Culling::None;
     run.options.stats = false;
     Profiler untimed(settings.timing);
@@ -68,19 +74,29 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
       run.renderer->renderFrame(run.options, profiler);
       run.renderer->setLights(scene.lights);
       const std::vector<FrameTiming> frames = profiler.takeResults(true);
-      run.withLights.push_back(lightingMs(frames.at(0)));
-      run.withoutLights.push_back(lightingMs(frames.at(1)));
+      run.withLights.push_back(frames.at(0).pass("lighting"));
+      run.withoutLights.push_back(frames.at(1).pass("lighting"));
+      run.blendedWithLights.push_back(frames.at(0).pass("transparency"));
+      run.blendedWithoutLights.push_back(frames.at(1).pass("transparency"));
       if (progress) progress(++done, total);
     }
   }
   const uint64_t pairs = uint64_t(settings.size.x) * uint64_t(settings.size.y) * uint64_t(settings.lights);
   std::vector<PairCost> out;
-  for (size_t i = 0; i < runs.size(); ++i) {
+  // ns per pair of each round, and the pass without lights over the pass with them (medians).
+  const auto perPair = [pairs](const std::vector<double>& ms) {
     std::vector<double> ns;
-    for (double ms : runs[i].withLights) ns.push_back(pairs ? ms * 1e6 / double(pairs) : 0.0);
-    PairCost c{variants[i].name, summarizeTimes(ns), 0.0, pairs};
-    const double withMs = summarizeTimes(runs[i].withLights).median;
-    c.fixedShare = withMs > 0.0 ? summarizeTimes(runs[i].withoutLights).median / withMs : 0.0;
+    for (double m : ms) ns.push_back(pairs ? m * 1e6 / double(pairs) : 0.0);
+    return summarizeTimes(ns);
+  };
+  const auto fixedShare = [](const std::vector<double>& with, const std::vector<double>& without) {
+    const double withMs = summarizeTimes(with).median;
+    return withMs > 0.0 ? summarizeTimes(without).median / withMs : 0.0;
+  };
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const Run& r = runs[i];
+    PairCost c{variants[i].name, perPair(r.withLights), fixedShare(r.withLights, r.withoutLights), pairs,
+               perPair(r.blendedWithLights), fixedShare(r.blendedWithLights, r.blendedWithoutLights)};
     out.push_back(c);
   }
   return out;

@@ -36,13 +36,17 @@ struct PairCost {
   // per pair (reading the G-buffer, ambient, the store), which the ratio includes.
   double fixedShare = 0.0;
   uint64_t pairs = 0;  // per frame
+  // The same for the transparency pass's pairs (forward lighting of the fixture's BLEND pane, every pixel too).
+  TimeSummary transparentNsPerPair;
+  double transparentFixedShare = 0.0;
 };
 
-// The fixture: a matte-to-glossy dielectric floor seen from above, filling a 16:9 frame, and `lights` seeded
-// lights in a layer above it with radii far larger than the scene.
+// The fixture: a matte-to-glossy dielectric floor seen from above, filling a 16:9 frame, under a BLEND pane (alpha
+// 0.5) filling it too, and `lights` seeded lights in a layer above both with radii far larger than the scene. The
+// lighting pass shades the floor's pairs, the transparency pass the pane's: the same pixels and lights.
 Scene pairCostScene(int lights);
 
-// Times every variant's lighting pass `rounds` times, visiting the variants in turn (A B C A B C ...) so that a
+// Times every variant's lighting and transparency passes `rounds` times, visiting the variants in turn (A B C A B C ...) so that a
 // drift of a shared machine hits all alike; each round also times the pass with no lights for fixedShare.
 // `progress` is called with (timed frames done, total).
 std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::vector<PairCostVariant>& variants,
