@@ -18,6 +18,7 @@
 #include "app/accuracy/error_map.hpp"
 #include "app/accuracy/shadow_cost.hpp"
 #include "app/accuracy/shadow_rows.hpp"
+#include "app/accuracy/transparency_rows.hpp"
 #include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
@@ -45,8 +46,11 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(cost.size), ""},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
        std::to_string(cost.lights), ""},
-      {"--rounds", "R", "timing rounds, each timing every variant (and then every shadow row) once, in turn", "9", ""},
-      {"--no-cost", "", "skip the timings: cost per pair and the shadow rows' pass times (the chart needs them)"},
+      {"--rounds", "R",
+       "timing rounds, each timing every variant (and then every shadow row, then every transparency row) once, in "
+       "turn", "9", ""},
+      {"--no-cost", "",
+       "skip the timings: cost per pair and the shadow and transparency rows' pass times (the chart needs them)"},
       {"--shadow-rows", "LIST",
        "shadow settings measured on --shadow-scene with the exact variant: unshadowed, FILTER or FILTER:ATLAS "
        "(hard, pcf3x3, poisson16; a power-of-two atlas, 256 to 16384, else 4096), or none",
@@ -55,6 +59,14 @@ const std::vector<OptionSpec>& accuracyOptions() {
        "shadow-trio", ""},
       {"--shadow-cost-size", "WxH", "frame size at which the shadow rows' shadow and lighting passes are timed",
        sizeText({640, 360}), ""},
+      {"--transparency-rows", "LIST",
+       "orderings of BLEND surfaces measured on --transparency-scene with the exact variant and no shadows: sorted, "
+       "oit, or none",
+       kDefaultTransparencyRows, ""},
+      {"--transparency-scene", "NAME", "the transparency rows' scene, built-in or a file, with BLEND materials",
+       "transparency", ""},
+      {"--transparency-cost-size", "WxH", "frame size at which the transparency rows' transparency pass and frame "
+       "are timed", sizeText({640, 360}), ""},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go", "out/accuracy", ""},
       {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
       {"--slice-size", "AxR", "slice grid: view angles x roughness values", sizeText({90, 64}), ""},
@@ -86,6 +98,23 @@ std::string shadowCells(const ShadowRow& row, const ShadowCost* c, const ShadowA
                           c ? c->passesMs.p10 : 0.0, c ? c->passesMs.p90 : 0.0})
     cells += ',' + (c ? fixedDecimals(ms, 3) : std::string("n/a"));
   return cells + ',' + fixedDecimals(agreement.misclassifiedShare(), 5) + ',' + std::to_string(agreement.compared);
+}
+
+// A transparency row's own CSV columns: its ordering, then the transparency pass's and the frame's ms, median, p10
+// and p90 (n/a without timings).
+std::string transparencyCells(const TransparencyRow& row, const TransparencyCost* c) {
+  std::string cells = toString(row.transparency);
+  if (!c) return cells + ",n/a,n/a,n/a,n/a,n/a,n/a";
+  for (const TimeSummary& t : {c->transparencyMs, c->frameMs}) {
+    for (const double ms : {t.median, t.p10, t.p90}) cells += ',' + fixedDecimals(ms, 3);
+  }
+  return cells;
+}
+
+// "median (p10-p90)" of `t` in ms, "-" without timings.
+std::string msSpread(const TimeSummary* t) {
+  return t ? fixedDecimals(t->median, 2) + " (" + fixedDecimals(t->p10, 2) + "-" + fixedDecimals(t->p90, 2) + ")"
+           : std::string("-");
 }
 
 void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant>& variants, glm::ivec2 grid,
@@ -136,13 +165,18 @@ int runAccuracy(const std::vector<std::string>& argv) {
                                 "setting and compare it with the reference's shadow rays: relative RMSE of the frame, "
                                 "and the share of pixels whose lit/shadowed state, each casting light alone, differs "
                                 "outside a penumbra band of " + std::to_string(kShadowBandPx) + " pixels; their cost "
-                                "is the shadow and lighting passes' ms.",
+                                "is the shadow and lighting passes' ms. Transparency rows (--transparency-rows) "
+                                "render --transparency-scene with the exact variant, no shadows, and each ordering "
+                                "of BLEND surfaces against the reference's exact per-ray compositing; their cost is "
+                                "the transparency pass's and the frame's ms.",
                                 specs);
     return 0;
   }
   const std::vector<AccuracyVariant> variants = selectVariants(args.get("--variants"));
   const std::vector<ShadowRow> shadowRows = parseShadowRows(args.get("--shadow-rows"));
   const glm::ivec2 shadowCostSize = args.getSize("--shadow-cost-size");
+  const std::vector<TransparencyRow> transparencyRows = parseTransparencyRows(args.get("--transparency-rows"));
+  const glm::ivec2 transparencyCostSize = args.getSize("--transparency-cost-size");
   const std::vector<std::string> sceneSpecs = splitList(args.get("--scenes"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
   const glm::ivec2 size = args.getSize("--size");
@@ -163,6 +197,11 @@ int runAccuracy(const std::vector<std::string>& argv) {
   std::vector<AccuracyScene> scenes;
   for (const std::string& spec : sceneSpecs) scenes.push_back(loadAccuracyScene(spec, sceneFileParams(args)));
   const AccuracyScene shadowScene = loadAccuracyScene(args.get("--shadow-scene"), sceneFileParams(args));
+  const AccuracyScene transparencyScene = loadAccuracyScene(args.get("--transparency-scene"), sceneFileParams(args));
+  if (!transparencyRows.empty() && !hasBlendMaterial(transparencyScene.scene))
+    throw UsageError("--transparency-scene " + args.get("--transparency-scene") +
+                     ": the scene has no BLEND material for the transparency rows to measure (--transparency-rows "
+                     "none for no rows)");
 
   auto context = createHeadlessContext(platform);
   const ContextInfo& info = context->info();
@@ -190,6 +229,13 @@ int runAccuracy(const std::vector<std::string>& argv) {
     shadowCosts = measureShadowCost(shaders, shadowScene.scene, shadowCostSize, shadowRowConfig(), options,
                                     cost.rounds, mode);
   }
+  std::vector<TransparencyCost> transparencyCosts;
+  if (measureCost && !transparencyRows.empty()) {
+    std::printf("transparency rows' passes: %s at %dx%d, %d rounds\n", transparencyScene.label.c_str(),
+                transparencyCostSize.x, transparencyCostSize.y, cost.rounds);
+    transparencyCosts = measureTransparencyCost(shaders, transparencyScene.scene, transparencyCostSize,
+                                                transparencyRows, cost.rounds, mode);
+  }
 
   const std::string csvPath = (dir / "accuracy.csv").string();
   OutputFile csvFile(csvPath);
@@ -203,27 +249,37 @@ int runAccuracy(const std::vector<std::string>& argv) {
         << "lit where shadowed over unshadowed radiance >= 0.5, against the reference's shadow rays; pixels within "
         << kShadowBandPx << " px of a change of the reference's state are not compared\n";
   }
+  if (!transparencyRows.empty()) {
+    csv << "# transparency_cost_frame: " << transparencyScene.label << ", " << transparencyCostSize.x << "x"
+        << transparencyCostSize.y << ", transparency pass and frame, " << cost.rounds << " rounds\n"
+        << "# transparency_rows: the exact variant without shadows, GPU and reference\n";
+  }
   csv << "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
          "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels,shadow_filter,shadow_atlas,"
          "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
-         "shadow_pixels\n";
+         "shadow_pixels,transparency,transparency_ms_median,transparency_ms_p10,transparency_ms_p90,frame_ms_median,"
+         "frame_ms_p10,frame_ms_p90\n";
   std::printf("%-16s %-18s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
               "mean lv", "max", ">2 lv");
-  // The geometry and shadow rows have no cost per pair, and the variant and geometry rows no shadow columns: "n/a"
-  // in the CSV ("-" for the settings), "-" in the table.
+  // The geometry, shadow and transparency rows have no cost per pair, and each row kind no columns of the others:
+  // "n/a" in the CSV ("-" for the settings), "-" in the table.
+  const std::string noShadowCells = "-,-,n/a,n/a,n/a,n/a,n/a,n/a,n/a";
+  const std::string noTransparencyCells = "-,n/a,n/a,n/a,n/a,n/a,n/a";
   const auto writeCsvRow = [&](const std::string& name, const std::string& scene, const std::string& model,
                                const std::string& terms, const std::string& hdr, const std::string& gbuffer,
-                               const PairCost* c, const ErrorMetrics& m, const std::string& shadowCells) {
+                               const PairCost* c, const ErrorMetrics& m, const std::string& shadowCells,
+                               const std::string& transparencyCells) {
     const auto cell = [&](double v, int decimals) { return c ? fixedDecimals(v, decimals) : std::string("n/a"); };
     csv << name << ',' << scene << ',' << model << ",\"" << terms << "\"," << hdr << ',' << gbuffer << ','
         << cell(c ? c->nsPerPair.median : 0, 4) << ',' << cell(c ? c->nsPerPair.p10 : 0, 4) << ','
         << cell(c ? c->nsPerPair.p90 : 0, 4) << ',' << cell(c ? c->fixedShare : 0, 4) << ',' << m.relativeRmse << ','
-        << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << ',' << shadowCells << '\n';
+        << m.meanLevels << ',' << m.maxLevels << ',' << m.shareOver2 << ',' << m.pixels << ',' << shadowCells << ','
+        << transparencyCells << '\n';
   };
   const auto writeRow = [&](const std::string& name, const std::string& scene, const std::string& model,
                             const std::string& terms, const std::string& hdr, const std::string& gbuffer,
                             const PairCost* c, const ErrorMetrics& m) {
-    writeCsvRow(name, scene, model, terms, hdr, gbuffer, c, m, "-,-,n/a,n/a,n/a,n/a,n/a,n/a,n/a");
+    writeCsvRow(name, scene, model, terms, hdr, gbuffer, c, m, noShadowCells, noTransparencyCells);
     const std::string perPair = c ? fixedDecimals(c->nsPerPair.median, 3) : "-";
     const std::string spread =
         c ? fixedDecimals(c->nsPerPair.p10, 3) + "-" + fixedDecimals(c->nsPerPair.p90, 3) : std::string("-");
@@ -269,16 +325,35 @@ int runAccuracy(const std::vector<std::string>& argv) {
       const ShadowRowResult r = comparison.measure(row);
       const ShadowCost* c = shadowCosts.empty() ? nullptr : &shadowCosts[i];
       writeCsvRow(row.name, shadowScene.label, toString(exact.model), describeTerms(exact.model, exact.shading),
-                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, shadowCells(row, c, r.agreement));
+                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, shadowCells(row, c, r.agreement),
+                  noTransparencyCells);
       const std::string shadowMs = c ? fixedDecimals(c->shadowMs.median, 2) : "-";
       const std::string lightingMs = c ? fixedDecimals(c->lightingMs.median, 2) : "-";
-      const std::string both = c ? fixedDecimals(c->passesMs.median, 2) + " (" + fixedDecimals(c->passesMs.p10, 2) +
-                                       "-" + fixedDecimals(c->passesMs.p90, 2) + ")"
-                                 : std::string("-");
+      const std::string both = msSpread(c ? &c->passesMs : nullptr);
       std::printf("%-20s %-12s %11s %12s %17s %10.4g %12.3f%% %8zu\n", row.name.c_str(), shadowScene.label.c_str(),
                   shadowMs.c_str(), lightingMs.c_str(), both.c_str(), r.error.relativeRmse,
                   100.0 * r.agreement.misclassifiedShare(), r.agreement.compared);
       writePng((dir / ("error-" + row.name + "-" + shadowScene.label + ".png")).string(),
+               errorMapImage(r.relativeError, size.x, size.y, 1e-4, 1.0));
+    }
+  }
+  if (!transparencyRows.empty()) {
+    std::printf("\n%-20s %-12s %25s %22s %10s %8s %6s %8s\n", "transparency row", "scene",
+                "transparency ms (p10-p90)", "frame ms (p10-p90)", "rel RMSE", "mean lv", "max", ">2 lv");
+    const TransparencyComparison comparison(shaders, transparencyScene.scene, size, referenceOptions, mode);
+    const AccuracyVariant& exact = shadowRowVariant();
+    for (size_t i = 0; i < transparencyRows.size(); ++i) {
+      const TransparencyRow& row = transparencyRows[i];
+      const TransparencyRowResult r = comparison.measure(row);
+      const TransparencyCost* c = transparencyCosts.empty() ? nullptr : &transparencyCosts[i];
+      writeCsvRow(row.name, transparencyScene.label, toString(exact.model), describeTerms(exact.model, exact.shading),
+                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, noShadowCells,
+                  transparencyCells(row, c));
+      std::printf("%-20s %-12s %25s %22s %10.4g %8.3f %6.0f %8.4f\n", row.name.c_str(),
+                  transparencyScene.label.c_str(), msSpread(c ? &c->transparencyMs : nullptr).c_str(),
+                  msSpread(c ? &c->frameMs : nullptr).c_str(), r.error.relativeRmse, r.error.meanLevels,
+                  r.error.maxLevels, r.error.shareOver2);
+      writePng((dir / ("error-" + row.name + "-" + transparencyScene.label + ".png")).string(),
                errorMapImage(r.relativeError, size.x, size.y, 1e-4, 1.0));
     }
   }

@@ -116,7 +116,8 @@ const Builtin kBuiltins[] = {{"default", nullptr, nullptr},
                              {"helmet", lightRing, nullptr},
                              {"helmet-grid", nullptr, nullptr},
                              {"many-lights", nullptr, nullptr},
-                             {"shadow-trio", nullptr, nullptr}};
+                             {"shadow-trio", nullptr, nullptr},
+                             {"transparency", nullptr, nullptr}};
 
 const Builtin* findBuiltin(const std::string& name) {
   const auto it =

@@ -7,7 +7,10 @@ no variant's error, but the error a comparison with exact shapes would have adde
 (shadow settings on the shadow scene, the exact variant) have their own panel, since their cost is ms per frame
 (the shadow and lighting passes) rather than ns per pair: relative RMSE of the shadowed frame (squares, left axis)
 and the share of pixels whose lit/shadowed state differs from the reference's shadow rays (triangles, right
-axis)."""
+axis). Transparency rows (orderings of BLEND surfaces on the transparency scene, the exact variant, no shadows) have
+a panel of their own too: the transparency pass's ms per frame against the relative RMSE of the frame (diamonds, left
+axis) and the share of pixels more than 2 8-bit levels off (triangles, right axis), each labelled with its frame's
+ms."""
 import argparse
 import csv
 import statistics
@@ -78,6 +81,11 @@ def is_shadow_row(row):
     return row.get("shadow_filter", "-") != "-"
 
 
+def is_transparency_row(row):
+    # CSVs written before the transparency rows have no transparency column.
+    return row.get("transparency", "-") != "-"
+
+
 def shadow_panel(ax, rows, title, xlabel):
     xs = [float(r["passes_ms_median"]) for r in rows]
     xerr = [[x - float(r["passes_ms_p10"]) for x, r in zip(xs, rows)],
@@ -99,6 +107,28 @@ def shadow_panel(ax, rows, title, xlabel):
     ax.set_title(title, fontsize=10)
 
 
+def transparency_panel(ax, rows, title, xlabel):
+    xs = [float(r["transparency_ms_median"]) for r in rows]
+    xerr = [[x - float(r["transparency_ms_p10"]) for x, r in zip(xs, rows)],
+            [float(r["transparency_ms_p90"]) - x for x, r in zip(xs, rows)]]
+    rmse = [float(r["relative_rmse"]) for r in rows]
+    share = [100.0 * float(r["share_over_2"]) for r in rows]
+    ax.set_yscale("log")
+    rmse_points = ax.errorbar(xs, rmse, xerr=xerr, fmt="D", color="tab:cyan", ecolor="tab:gray", capsize=3,
+                              zorder=3, label="relative RMSE of the frame (left)")
+    place_labels(ax, [(x, y, "%s (frame %.1f ms)" % (r["variant"], float(r["frame_ms_median"])))
+                      for x, y, r in zip(xs, rmse, rows)])
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("relative RMSE vs CPU reference (exact compositing)")
+    ax.grid(True, alpha=0.3, which="both")
+    right = ax.twinx()
+    share_points, = right.plot(xs, share, "^", color="tab:red", label="pixels more than 2 8-bit levels off (right)")
+    right.set_ylabel("pixels more than 2 levels off, %")
+    right.set_ylim(bottom=0.0)
+    ax.legend(handles=[rmse_points, share_points], fontsize=8, loc="upper right")
+    ax.set_title(title, fontsize=10)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("csv")
@@ -106,8 +136,9 @@ def main():
     args = parser.parse_args()
 
     meta, all_rows = read(args.csv)
-    rows = [r for r in all_rows if not is_shadow_row(r)]
+    rows = [r for r in all_rows if not is_shadow_row(r) and not is_transparency_row(r)]
     shadow_rows = [r for r in all_rows if is_shadow_row(r) and r["passes_ms_median"] != "n/a"]
+    transparency_rows = [r for r in all_rows if is_transparency_row(r) and r["transparency_ms_median"] != "n/a"]
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     variants = list(dict.fromkeys(r["variant"] for r in rows if r["variant"] != "geometry"))
 
@@ -126,7 +157,8 @@ def main():
 
     cpu = "llvmpipe" in meta.get("gl_renderer", "")
     xlabel = "ns per evaluated light-pixel pair (p10-p90)" + (", CPU rasterizer (llvmpipe)" if cpu else "")
-    fig, axes = plt.subplots(1, 3 if shadow_rows else 2, figsize=(20 if shadow_rows else 13, 5), dpi=100)
+    panels = 2 + bool(shadow_rows) + bool(transparency_rows)
+    fig, axes = plt.subplots(1, panels, figsize=(6.5 * panels + 0.5, 5), dpi=100)
     first = scenes[0]
     panel(axes[0], points(lambda s: s == first), geometry(lambda s: s == first), first, xlabel)
     panel(axes[1], points(lambda s: True), geometry(lambda s: True), "mean over %d scenes" % len(scenes), xlabel)
@@ -135,6 +167,12 @@ def main():
         shadow_xlabel = "ms per frame, shadow + lighting passes (p10-p90)" + (
             ", CPU rasterizer (llvmpipe)" if cpu else "")
         shadow_panel(axes[2], shadow_rows, title, shadow_xlabel)
+    if transparency_rows:
+        title = "orderings of BLEND surfaces, exact variant, no shadows:\n%s" % meta.get(
+            "transparency_cost_frame", "?")
+        transparency_xlabel = "ms per frame, transparency pass (p10-p90)" + (
+            ", CPU rasterizer (llvmpipe)" if cpu else "")
+        transparency_panel(axes[-1], transparency_rows, title, transparency_xlabel)
     fig.suptitle("pbr accuracy: cost from %s; %s" % (meta.get("pair_cost_frame", "?"), meta.get("gl_renderer", "?")),
                  fontsize=9)
     fig.tight_layout()

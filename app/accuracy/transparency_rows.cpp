@@ -1,0 +1,77 @@
+#include "app/accuracy/transparency_rows.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "app/accuracy/frames_in_turn.hpp"
+#include "app/accuracy/shadow_rows.hpp"
+#include "renderer/display_image.hpp"
+#include "renderer/offscreen.hpp"
+
+namespace pbr {
+
+const char* const kDefaultTransparencyRows = "sorted,oit";
+
+std::vector<TransparencyRow> parseTransparencyRows(const std::string& list) {
+  std::vector<TransparencyRow> rows;
+  if (list == "none") return rows;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) {
+    TransparencyRow row;
+    try {
+      row.transparency = parseTransparency(item);
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument("transparency row '" + item + "': expected sorted or oit");
+    }
+    row.name = std::string("transparency-") + toString(row.transparency);
+    rows.push_back(row);
+  }
+  if (rows.empty()) throw std::invalid_argument("no transparency row listed (none for no rows)");
+  return rows;
+}
+
+FrameOptions transparencyRowOptions(const TransparencyRow& row, const Scene& scene) {
+  FrameOptions options;
+  options.model = shadowRowVariant().model;
+  options.variant = shadowRowVariant().shading;
+  options.exposure = scene.displayExposure();
+  options.shadows.mode = ShadowMode::None;
+  options.transparency = row.transparency;
+  return options;
+}
+
+TransparencyComparison::TransparencyComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
+                                               const reference::ReferenceOptions& referenceOptions,
+                                               TimingMode timing)
+    : shaders_(shaders), scene_(scene), size_(size), timing_(timing) {
+  reference::ReferenceOptions options = referenceOptions;
+  options.shadows = ShadowMode::None;
+  reference_ = reference::renderReference(scene, size.x, size.y, options);
+  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure());
+}
+
+TransparencyRowResult TransparencyComparison::measure(const TransparencyRow& row) const {
+  const RenderedFrames f =
+      renderOffscreen(shaders_, scene_, size_, transparencyRowOptions(row, scene_), 3, shadowRowConfig(), timing_);
+  return {measureError(f.hdr, f.ldr, reference_, referenceLdr_), relativeErrorPerPixel(f.hdr, reference_)};
+}
+
+std::vector<TransparencyCost> measureTransparencyCost(const ShaderLibrary& shaders, const Scene& scene,
+                                                      glm::ivec2 size, const std::vector<TransparencyRow>& rows,
+                                                      int rounds, TimingMode timing) {
+  std::vector<FrameOptions> options;
+  for (const TransparencyRow& row : rows) options.push_back(transparencyRowOptions(row, scene));
+  std::vector<TransparencyCost> out;
+  for (const std::vector<FrameTiming>& frames :
+       timeFramesInTurn(shaders, scene, size, shadowRowConfig(), options, rounds, timing)) {
+    std::vector<double> transparency, frame;
+    for (const FrameTiming& f : frames) {
+      transparency.push_back(f.pass("transparency"));
+      frame.push_back(f.gpuMs);
+    }
+    out.push_back({summarizeTimes(transparency), summarizeTimes(frame)});
+  }
+  return out;
+}
+
+}  // namespace pbr
