@@ -69,6 +69,29 @@ pbr::Material material(const glm::vec3& base, float alpha, pbr::AlphaMode mode) 
   return m;
 }
 
+// A grey floor (20 m square) seen from `eye` towards `target` (45-degree field of view), with ambient light 0.05.
+pbr::Scene floorScene(const glm::vec3& eye, const glm::vec3& target) {
+  pbr::Scene scene;
+  scene.camera.position = eye;
+  scene.camera.target = target;
+  scene.camera.fovYDeg = 45.0f;
+  scene.ambient = glm::vec3(0.05f);
+  scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)),
+                 material(glm::vec3(0.6f), 1.0f, pbr::AlphaMode::Opaque));
+  return scene;
+}
+
+// Relative RMSE of `a`'s colour channels against `ref`'s.
+double relativeRmse(const pbr::ImageRgbaF& a, const pbr::ImageRgbaF& ref) {
+  double error2 = 0.0, norm2 = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    error2 += std::pow(double(a.pixels[i]) - double(ref.pixels[i]), 2.0);
+    norm2 += std::pow(double(ref.pixels[i]), 2.0);
+  }
+  return std::sqrt(error2 / norm2);
+}
+
 // Three quads in a row (x = -2.5, 0, 2.5) with the glTF alpha modes `modes`, baseColorFactor alpha 0.3, written as
 // a glTF file and seen head-on in front of a grey wall; quads left out where `modes` is empty.
 pbr::Scene alphaModeScene(const TempDir& dir, const std::vector<std::string>& modes) {
@@ -106,13 +129,7 @@ int columnOf(float worldX) {
 
 TEST_CASE("transparency: a 0.3-alpha pane over a lit sphere matches the reference's exact compositing") {
   PBR_REQUIRE_GL();
-  pbr::Scene scene;
-  scene.camera.position = {0.0f, 1.5f, 5.0f};
-  scene.camera.target = {0.0f, 0.6f, 0.0f};
-  scene.camera.fovYDeg = 45.0f;
-  scene.ambient = glm::vec3(0.05f);
-  scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)),
-                 material(glm::vec3(0.6f), 1.0f, pbr::AlphaMode::Opaque));
+  pbr::Scene scene = floorScene({0.0f, 1.5f, 5.0f}, {0.0f, 0.6f, 0.0f});
   scene.addShape(pbr::Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, 0.7f, -0.5f}), glm::vec3(1.4f)),
                  material({0.8f, 0.3f, 0.2f}, 1.0f, pbr::AlphaMode::Opaque));
   scene.addShape(pbr::Shape::Plane, pane({0.3f, 0.8f, 1.2f}, {1.8f, 1.4f}),
@@ -127,15 +144,9 @@ TEST_CASE("transparency: a 0.3-alpha pane over a lit sphere matches the referenc
   o.variant = exact->shading;
   const pbr::test::RenderedFrame gpu = renderExact(scene, o);
   const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, {});
-  double error2 = 0.0, norm2 = 0.0;
-  for (size_t i = 0; i < gpu.hdr.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    error2 += std::pow(double(gpu.hdr.pixels[i]) - double(ref.radiance.pixels[i]), 2.0);
-    norm2 += std::pow(double(ref.radiance.pixels[i]), 2.0);
-  }
-  const double relativeRmse = std::sqrt(error2 / norm2);
-  MESSAGE("relative RMSE against the reference: " << relativeRmse);
-  CHECK(relativeRmse < 0.01);
+  const double error = relativeRmse(gpu.hdr, ref.radiance);
+  MESSAGE("relative RMSE against the reference: " << error);
+  CHECK(error < 0.01);
   // The sphere shows through the pane: without it, the pixels the pane covers over the sphere change.
   pbr::Scene noSphere = scene;
   noSphere.objects.erase(noSphere.objects.begin() + 1);
@@ -172,13 +183,7 @@ TEST_CASE("transparency: glTF OPAQUE, MASK and BLEND quads each render as their 
 
 TEST_CASE("transparency: clustered frames equal brute force with BLEND surfaces, both models and orderings, shadows on") {
   PBR_REQUIRE_GL();
-  pbr::Scene scene;
-  scene.camera.position = {0.5f, 2.0f, 6.0f};
-  scene.camera.target = {0.0f, 0.6f, 0.0f};
-  scene.camera.fovYDeg = 45.0f;
-  scene.ambient = glm::vec3(0.05f);
-  scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)),
-                 material(glm::vec3(0.6f), 1.0f, pbr::AlphaMode::Opaque));
+  pbr::Scene scene = floorScene({0.5f, 2.0f, 6.0f}, {0.0f, 0.6f, 0.0f});
   scene.addShape(pbr::Shape::Sphere, glm::translate(glm::mat4(1.0f), {0.0f, 0.7f, -0.5f}),
                  material({0.8f, 0.3f, 0.2f}, 1.0f, pbr::AlphaMode::Opaque));
   // Crossing panes, one double-sided, one solid enough to cast (alpha >= kBlendShadowCutoff).
@@ -294,13 +299,7 @@ namespace {
 // Two panes crossing along a vertical line (each in front of the other on one side of it), a third over both that
 // intersects neither, over a floor and a sphere: the ordering case sorting cannot get right.
 pbr::Scene crossingPanes() {
-  pbr::Scene scene;
-  scene.camera.position = {0.0f, 1.2f, 5.0f};
-  scene.camera.target = {0.0f, 0.8f, 0.0f};
-  scene.camera.fovYDeg = 45.0f;
-  scene.ambient = glm::vec3(0.05f);
-  scene.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f)),
-                 material(glm::vec3(0.6f), 1.0f, pbr::AlphaMode::Opaque));
+  pbr::Scene scene = floorScene({0.0f, 1.2f, 5.0f}, {0.0f, 0.8f, 0.0f});
   scene.addShape(pbr::Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), {0.3f, 0.6f, -1.5f}), glm::vec3(1.2f)),
                  material({0.8f, 0.8f, 0.8f}, 1.0f, pbr::AlphaMode::Opaque));
   const auto turned = [](float degrees) {
@@ -314,16 +313,6 @@ pbr::Scene crossingPanes() {
   scene.directionalLights = {{glm::normalize(glm::vec3(0.4f, -0.8f, -0.4f)), glm::vec3(1.0f), 3.0f, true}};
   scene.lights.push_back({{-1.5f, 2.5f, 2.5f}, 12.0f, glm::vec3(1.0f), 300.0f});
   return scene;
-}
-
-double relativeRmse(const pbr::ImageRgbaF& a, const pbr::ImageRgbaF& ref) {
-  double error2 = 0.0, norm2 = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    error2 += std::pow(double(a.pixels[i]) - double(ref.pixels[i]), 2.0);
-    norm2 += std::pow(double(ref.pixels[i]), 2.0);
-  }
-  return std::sqrt(error2 / norm2);
 }
 
 }  // namespace
