@@ -61,7 +61,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
        sizeText({640, 360}), ""},
       {"--transparency-rows", "LIST",
        "orderings of BLEND surfaces measured on --transparency-scene with the exact variant and no shadows: sorted, "
-       "oit, or none",
+       "oit, exact, or none",
        kDefaultTransparencyRows, ""},
       {"--transparency-scene", "NAME", "the transparency rows' scene, built-in or a file, with BLEND materials",
        "transparency", ""},

@@ -54,8 +54,9 @@ ShadowSettings readShadowSettings(const Args& args) {
 
 OptionSpec transparencyOption() {
   return {"--transparency", "T",
-          "how BLEND materials composite: sorted (back to front by their bounds, Porter-Duff over) or oit (weighted "
-          "blended order-independent transparency, one pass in any order; 18 bytes per pixel)",
+          "how BLEND materials composite: sorted (back to front by their bounds, Porter-Duff over), oit (weighted "
+          "blended order-independent transparency, one pass in any order; 18 bytes per pixel) or exact (every "
+          "fragment in a list per pixel, composited in depth order; room for 8 a pixel, 132 bytes per pixel)",
           toString(Transparency::Sorted), ""};
 }
 

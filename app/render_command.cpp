@@ -7,9 +7,11 @@
 #include "app/bench/bench_run.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "lighting/lighting_pass.hpp"
 #include "renderer/renderer.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
+#include "core/messages.hpp"
 #include "core/frame_capture.hpp"
 #include "core/image.hpp"
 #include "core/output_file.hpp"
@@ -153,6 +155,11 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
       std::printf("shadows: the atlas is full: %u casting lights got no map and are shaded unshadowed "
                   "(--shadow-atlas)\n", h.unshadowedLights);
     }
+  }
+  if (s.droppedLayers) {
+    warnOnce("transparency: " + std::to_string(s.droppedLayers) + " BLEND fragments of the last frame were left out "
+             "of --transparency exact (room for " + std::to_string(kLayerNodesPerPixel) + " a pixel on average, the " +
+             std::to_string(kMaxLayersPerPixel) + " nearest of a pixel composited)");
   }
   if (options.stats) {
     std::printf("culling efficiency: %.3f (%llu of %llu light-pixel pairs evaluated contribute)\n",

@@ -9,12 +9,15 @@ namespace pbr {
 ShaderDefines lightingBindingDefines() {
   using namespace lighting_binding;
   // Built and checked once: the lighting pass asks for its program every frame.
-  static const ShaderDefines defines = bindingDefines({kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo,
-                         kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo, kLightingStatsSsbo,
-                         kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
-                         kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit, kMaterialUnit,
-                         kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
-                         kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit, kOitRevealageUnit});
+  static const ShaderDefines defines = bindingDefines(
+      {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo,
+       kLightSsbo, kClusterSsbo, kLightIndexSsbo, kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo,
+       kLightingStatsSsbo, kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
+       kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit,
+       kMaterialUnit, kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit,
+       kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo,
+       kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit,
+       kOitRevealageUnit, kLayerNodeSsbo});
   return defines;
 }
 
@@ -23,7 +26,7 @@ ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
   std::vector<BindingPoint> points = {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo,
                                       kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo, kSpotConeSsbo,
                                       kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit,
-                                      kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo};
+                                      kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kLayerNodeSsbo};
   points.insert(points.end(), geometry.begin(), geometry.end());
   return bindingDefines(points);
 }

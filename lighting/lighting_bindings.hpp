@@ -45,6 +45,8 @@ constexpr BindingPoint kShadowOwnerUnit{"SHADOW_OWNER_UNIT", BindingKind::Textur
 // Weighted blended order-independent transparency's sums, read by its composite pass (OitTargets).
 constexpr BindingPoint kOitAccumulationUnit{"OIT_ACCUMULATION_UNIT", BindingKind::TextureUnit, 4};
 constexpr BindingPoint kOitRevealageUnit{"OIT_REVEALAGE_UNIT", BindingKind::TextureUnit, 5};
+// Exact order-independent transparency's per-pixel lists (OitTargets).
+constexpr BindingPoint kLayerNodeSsbo{"LAYER_NODE_SSBO", BindingKind::StorageBuffer, 18};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding

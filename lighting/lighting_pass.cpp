@@ -155,25 +155,41 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   forward.pairCounts = nullptr;
   forward.shadowLight = nullptr;
   const bool clustered = clusters != nullptr;
-  const bool orderIndependent = oit.accumulation != nullptr;
+  const bool weighted = oit.accumulation != nullptr, exact = oit.layerLists != nullptr;
+  const bool orderIndependent = weighted || exact;
   const uint32_t perDispatch = lightsPerDispatch(clustered);
   const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
   const bool chunked = chunks > 1;
   ShaderDefines lighting =
       permutation(forward, clustered, radiance.format(), chunked, lights.hasSpotLights(), lightWindow_);
-  lighting.push_back({"OIT_WEIGHTED", orderIndependent ? "1" : "0"});
+  lighting.push_back({"OIT_WEIGHTED", weighted ? "1" : "0"});
+  lighting.push_back({"OIT_EXACT", exact ? "1" : "0"});
   bindShading(lights, forward, frame, clusters);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glEnable(GL_BLEND);
-  if (orderIndependent) {
+  if (exact) {
+    // Empty lists; the fragments write nodes, no colour.
+    const size_t pixels = size_t(radiance.width()) * size_t(radiance.height());
+    const size_t nodeBytes = oit.layerLists->size() - sizeof(LayerListHeader) - pixels * 4;
+    const LayerListHeader header{0, uint32_t(nodeBytes / 16), 0, uint32_t(pixels)};
+    glNamedBufferSubData(oit.layerLists->id(), 0, sizeof header, &header);
+    const uint32_t zero = 0;
+    glClearNamedBufferSubData(oit.layerLists->id(), GL_R32UI, sizeof header, pixels * 4, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    oit.layerLists->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLayerNodeSsbo.index);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    lastLayerLists_ = oit.layerLists;
+  } else {
+    glEnable(GL_BLEND);
+  }
+  if (weighted) {
     // Sums of weighted premultiplied colour and weight, and the product of the layers' 1 - a (dst (1 - src)).
     const float zeros[4] = {0.0f, 0.0f, 0.0f, 0.0f}, ones[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearTexImage(oit.accumulation->id(), 0, GL_RGBA, GL_FLOAT, zeros);
     glClearTexImage(oit.revealage->id(), 0, GL_RGBA, GL_FLOAT, ones);
     glBlendFunci(0, GL_ONE, GL_ONE);
     glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
-  } else {
+  } else if (!exact) {
     // Premultiplied "over" (forward.frag writes the lit colour times alpha, and alpha).
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   }
@@ -196,20 +212,35 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
       },
       orderIndependent ? BlendOrder::Any : BlendOrder::BackToFront, int(chunks));
   glDisable(GL_BLEND);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (!orderIndependent) return;
   const auto [qualifier, maximum] = imageFormat(radiance.format());
-  const Program& composite = programs_.compute(
-      "lighting/oit_composite.comp",
-      concat({{"HDR_IMAGE_FORMAT", qualifier}, {"HDR_MAX", maximum}}, lightingBindingDefines()));
-  composite.use();
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  glBindTextureUnit(lighting_binding::kOitAccumulationUnit.index, oit.accumulation->id());
-  glBindTextureUnit(lighting_binding::kOitRevealageUnit.index, oit.revealage->id());
+  const ShaderDefines format = {{"HDR_IMAGE_FORMAT", qualifier}, {"HDR_MAX", maximum}};
+  if (exact) {
+    programs_.compute("lighting/layer_resolve.comp",
+                      concat(concat(format, {{"MAX_LAYERS", std::to_string(kMaxLayersPerPixel) + "u"}}),
+                             lightingBindingDefines()))
+        .use();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  } else {
+    programs_.compute("lighting/oit_composite.comp", concat(format, lightingBindingDefines())).use();
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glBindTextureUnit(lighting_binding::kOitAccumulationUnit.index, oit.accumulation->id());
+    glBindTextureUnit(lighting_binding::kOitRevealageUnit.index, oit.revealage->id());
+  }
   glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      radiance.format());
   glDispatchCompute(static_cast<GLuint>((radiance.width() + 7) / 8), static_cast<GLuint>((radiance.height() + 7) / 8),
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+uint32_t LightingPass::readDroppedLayers() const {
+  if (!lastLayerLists_) return 0;
+  LayerListHeader header{};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(lastLayerLists_->id(), 0, sizeof header, &header);
+  return header.droppedNodes;
 }
 
 PairCounts LightingPass::readPairCounts() const {

@@ -34,13 +34,32 @@ struct SurfaceTextures {
   const Texture& depth;
 };
 
-// Weighted blended order-independent transparency's targets, the frame's size (McGuire & Bavoil 2013): RGBA32F
-// accumulation (the sums of w a C and of w a; float, as lit HDR colour times weights up to 3,000 overflows fp16) and
-// R16F revealage (the product of 1 - a). Null: BLEND surfaces are composited back to front instead.
+// std430 mirror of the header of `LayerLists` in shaders/lighting/layer_lists.glsl; a head per pixel (4 bytes) and
+// the nodes (16 bytes each) follow it.
+struct LayerListHeader {
+  uint32_t nodeCount, nodeCapacity, droppedNodes, heads;
+};
+static_assert(sizeof(LayerListHeader) == 16, "LayerListHeader must match its std430 layout");
+// Nodes per pixel of the frame that exact order-independent transparency keeps room for (16 bytes each): a frame
+// whose BLEND fragments in front of the opaque surfaces outnumber them drops the rest, and says so.
+constexpr uint32_t kLayerNodesPerPixel = 8;
+// Fragments of one pixel the exact resolve sorts and composites, the nearest (layer_resolve.comp's MAX_LAYERS).
+constexpr uint32_t kMaxLayersPerPixel = 32;
+
+// The targets of an order-independent ordering, the frame's size; all null: BLEND surfaces are composited back to
+// front instead.
+// - Weighted blended (McGuire & Bavoil 2013): RGBA32F accumulation (the sums of w a C and of w a; float, as lit HDR
+//   colour times weights up to 3,000 overflows fp16) and R16F revealage (the product of 1 - a).
+// - Exact: the lists, LayerListHeader, then a head per pixel and kLayerNodesPerPixel nodes per pixel.
 struct OitTargets {
   const Texture* accumulation = nullptr;
   const Texture* revealage = nullptr;
+  const Buffer* layerLists = nullptr;
 };
+// The bytes of the exact lists for a frame of `pixels` pixels.
+inline size_t layerListBytes(size_t pixels) {
+  return sizeof(LayerListHeader) + pixels * (4 + 16 * size_t(kLayerNodesPerPixel));
+}
 
 struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;
@@ -108,6 +127,9 @@ class LightingPass {
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
+  // BLEND fragments the last exact order-independent frame left out (over the nodes' capacity, or past a pixel's
+  // kMaxLayersPerPixel nearest); waits for the GPU. 0 when no frame was composited so.
+  uint32_t readDroppedLayers() const;
 
   // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
   static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
@@ -127,6 +149,7 @@ class LightingPass {
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
   Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;
+  const Buffer* lastLayerLists_ = nullptr;  // the lists of the last exact order-independent frame
   size_t pairGroups_ = 0;
   uint32_t lightWindow_;  // lights in the uniform-buffer window of the brute-force path
 };

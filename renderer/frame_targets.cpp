@@ -1,5 +1,6 @@
 #include "renderer/frame_targets.hpp"
 
+#include "lighting/lighting_pass.hpp"
 #include "renderer/frame_limits.hpp"
 
 namespace pbr {
@@ -77,6 +78,13 @@ const FrameTargets::LayerCount& FrameTargets::layerCount() {
     layerCount_->framebuffer.checkComplete();
   }
   return *layerCount_;
+}
+
+const Buffer& FrameTargets::layerLists() {
+  if (!layerLists_) {
+    layerLists_ = std::make_unique<Buffer>("frame.layerLists", layerListBytes(size_t(width) * size_t(height)));
+  }
+  return *layerLists_;
 }
 
 }  // namespace pbr

@@ -41,6 +41,9 @@ struct FrameTargets {
     Framebuffer framebuffer;
   };
   const OrderIndependent& orderIndependent();
+  // Exact order-independent transparency's lists (LightingPass::renderBlended): a head and kLayerNodesPerPixel
+  // nodes per pixel, 132 bytes per pixel made on first use.
+  const Buffer& layerLists();
   // R32F BLEND layers per pixel over the G-buffer's depth, for the transparency debug view: made on first use.
   struct LayerCount {
     Texture layers;
@@ -52,6 +55,7 @@ struct FrameTargets {
   std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_, shadowLight_;
   std::unique_ptr<OrderIndependent> orderIndependent_;
   std::unique_ptr<LayerCount> layerCount_;
+  std::unique_ptr<Buffer> layerLists_;
 };
 
 }  // namespace pbr

@@ -163,14 +163,18 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.environment = ibl ? &maps : nullptr;
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
-                        const bool oit = options.transparency == Transparency::Oit;
-                        const FrameTargets::OrderIndependent* targets = oit ? &t.orderIndependent() : nullptr;
-                        const BlendedSurfaces surfaces =
-                            blendedSurfaces(oit ? targets->framebuffer.id() : t.blendTarget.id());
-                        const OitTargets oitTargets{oit ? &targets->accumulation : nullptr,
-                                                    oit ? &targets->revealage : nullptr};
-                        scene_.lighting.renderBlended(surfaces, scene_.lights, lighting, frame_, t.hdr,
-                                                      clustered ? &t.clusters : nullptr, oitTargets);
+                        OitTargets oit;
+                        GLuint target = t.blendTarget.id();
+                        if (options.transparency == Transparency::Oit) {
+                          const FrameTargets::OrderIndependent& weighted = t.orderIndependent();
+                          oit.accumulation = &weighted.accumulation;
+                          oit.revealage = &weighted.revealage;
+                          target = weighted.framebuffer.id();
+                        } else if (options.transparency == Transparency::Exact) {
+                          oit.layerLists = &t.layerLists();
+                        }
+                        scene_.lighting.renderBlended(blendedSurfaces(target), scene_.lights, lighting, frame_,
+                                                      t.hdr, clustered ? &t.clusters : nullptr, oit);
                       }});
   }
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster
@@ -287,6 +291,7 @@ LightStats Renderer::lightStats() const {
   }
   if (lastOptions_.stats) s.pairs = scene_.lighting.readPairCounts();
   if (lastShadowed_) s.shadows = scene_.shadows.stats();
+  if (lastOptions_.transparency == Transparency::Exact) s.droppedLayers = scene_.lighting.readDroppedLayers();
   return s;
 }
 

@@ -46,6 +46,7 @@ struct LightStats {
   uint32_t overflowedClusters = 0;  // shaded by brute force: the list or the light masks were full
   PairCounts pairs;
   ShadowStats shadows;              // of the last frame's shadow pass; zero without one
+  uint32_t droppedLayers = 0;       // BLEND fragments the last frame's exact transparency left out (kLayerNodesPerPixel)
   double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
   // Light-pixel pairs that contribute over pairs evaluated.
   double cullingEfficiency() const { return pairs.evaluated ? double(pairs.contributing) / pairs.evaluated : 0.0; }

@@ -201,7 +201,8 @@ TEST_CASE("transparency: clustered frames equal brute force with BLEND surfaces,
   for (const auto& [model, transparency] :
        {std::pair{pbr::ShadingModel::Pbr, pbr::Transparency::Sorted},
         std::pair{pbr::ShadingModel::BlinnPhong, pbr::Transparency::Sorted},
-        std::pair{pbr::ShadingModel::Pbr, pbr::Transparency::Oit}}) {
+        std::pair{pbr::ShadingModel::Pbr, pbr::Transparency::Oit},
+        std::pair{pbr::ShadingModel::BlinnPhong, pbr::Transparency::Exact}}) {
     CAPTURE(int(model));
     CAPTURE(pbr::toString(transparency));
     pbr::FrameOptions o;
@@ -317,7 +318,7 @@ pbr::Scene crossingPanes() {
 
 }  // namespace
 
-TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, oit within its bound everywhere") {
+TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, oit within its bound, exact exact") {
   PBR_REQUIRE_GL();
   const pbr::Scene scene = crossingPanes();
   const auto ladder = pbr::accuracyLadder();
@@ -355,9 +356,16 @@ TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, o
   CHECK(wrongInOverlap < overlapping);
   // Elsewhere at most a pixel whose centre lies on a pane's edge, covered in one frame and not the other.
   CHECK(wrongElsewhere <= 8);
+  o.transparency = pbr::Transparency::Exact;
+  const pbr::test::RenderedFrame exactLists = renderExact(scene, o);
   const double sortedError = relativeRmse(sorted.hdr, ref.radiance), oitError = relativeRmse(oit.hdr, ref.radiance);
-  MESSAGE("relative RMSE against the reference: sorted " << sortedError << ", oit " << oitError);
+  const double exactError = relativeRmse(exactLists.hdr, ref.radiance);
+  MESSAGE("relative RMSE against the reference: sorted " << sortedError << ", oit " << oitError << ", exact "
+                                                         << exactError);
   CHECK(oitError < 0.05);
+  // The per-pixel lists order every fragment: only their half-float colour is left (at most 2^-11 relative).
+  CHECK(exactError < 2e-3);
+  CHECK(exactLists.stats.droppedLayers == 0);
 }
 
 TEST_CASE("transparency debug view: each pixel shows how many BLEND layers cover it") {
@@ -407,4 +415,26 @@ TEST_CASE("transparency debug view: each pixel shows how many BLEND layers cover
   MESSAGE("pixels with 0, 1, 2, 3 layers: " << seen[0] << ", " << seen[1] << ", " << seen[2] << ", " << seen[3]);
   CHECK(seen[1] > 0);
   CHECK(seen[2] > 0);
+}
+
+TEST_CASE("transparency: exact lists composite the nearest layers of a pixel and count the ones they leave out") {
+  PBR_REQUIRE_GL();
+  // A stack of panes one behind the other, more than a pixel composites.
+  pbr::Scene scene = floorScene({0.0f, 0.5f, 6.0f}, {0.0f, 0.5f, 0.0f});
+  const int panes = int(pbr::kMaxLayersPerPixel) + 8;
+  for (int i = 0; i < panes; ++i) {
+    scene.addShape(pbr::Shape::Plane, pane({0.0f, 0.5f, -0.05f * float(i)}, {2.0f, 2.0f}),
+                   material({0.9f, 0.5f, 0.2f}, 0.2f, pbr::AlphaMode::Blend));
+  }
+  scene.lights.push_back({{0.0f, 2.0f, 3.0f}, 20.0f, glm::vec3(1.0f), 400.0f});
+  pbr::FrameOptions o = unshadowed();
+  o.transparency = pbr::Transparency::Exact;
+  const pbr::test::RenderedFrame f = renderExact(scene, o);
+  // The panes cover the frame's centre: every pixel there leaves out its farthest 8.
+  CHECK(f.stats.droppedLayers >= 8u);
+  // What is left out lies behind 40 panes of alpha 0.2 (0.8^40 = 1.3e-4 of it shows): the frame matches sorted.
+  o.transparency = pbr::Transparency::Sorted;
+  const pbr::test::RenderedFrame sorted = renderExact(scene, o);
+  const int x = kSize.x / 2, y = kSize.y / 2;
+  for (int c = 0; c < 3; ++c) CHECK(rgb(f.hdr, x, y)[c] == doctest::Approx(rgb(sorted.hdr, x, y)[c]).epsilon(2e-3));
 }

@@ -10,7 +10,7 @@
 
 namespace pbr {
 
-const char* const kDefaultTransparencyRows = "sorted,oit";
+const char* const kDefaultTransparencyRows = "sorted,oit,exact";
 
 std::vector<TransparencyRow> parseTransparencyRows(const std::string& list) {
   std::vector<TransparencyRow> rows;
@@ -21,7 +21,7 @@ std::vector<TransparencyRow> parseTransparencyRows(const std::string& list) {
     try {
       row.transparency = parseTransparency(item);
     } catch (const std::invalid_argument&) {
-      throw std::invalid_argument("transparency row '" + item + "': expected sorted or oit");
+      throw std::invalid_argument("transparency row '" + item + "': expected sorted, oit or exact");
     }
     row.name = std::string("transparency-") + toString(row.transparency);
     rows.push_back(row);

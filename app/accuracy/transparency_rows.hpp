@@ -21,7 +21,7 @@ struct TransparencyRow {
 
 // The rows measured unless --transparency-rows says otherwise.
 extern const char* const kDefaultTransparencyRows;
-// Comma-separated orderings (sorted, oit), or "none" for no rows; throws std::invalid_argument naming the bad item.
+// Comma-separated orderings (sorted, oit, exact), or "none" for no rows; throws std::invalid_argument naming the bad item.
 std::vector<TransparencyRow> parseTransparencyRows(const std::string& list);
 
 // A row's frame options: the exact variant, no shadows, the row's ordering, the scene's exposure. The renderer

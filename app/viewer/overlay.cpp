@@ -259,12 +259,12 @@ void Overlay::controls(Viewer& viewer) {
   // BLEND materials' compositing, for the scenes that have any.
   const bool blends = hasBlendMaterial(viewer.scene());
   if (blends) {
-    int transparency = f.transparency == Transparency::Sorted ? 0 : 1;
+    int transparency = static_cast<int>(f.transparency);
     ImGui::TextUnformatted("blending");
-    ImGui::SameLine(90.0f);
-    if (ImGui::RadioButton("sorted", &transparency, 0)) viewer.setTransparency(Transparency::Sorted);
-    ImGui::SameLine();
-    if (ImGui::RadioButton("order-independent", &transparency, 1)) viewer.setTransparency(Transparency::Oit);
+    for (const Transparency t : {Transparency::Sorted, Transparency::Oit, Transparency::Exact}) {
+      ImGui::SameLine(t == Transparency::Sorted ? 90.0f : 0.0f);
+      if (ImGui::RadioButton(toString(t), &transparency, static_cast<int>(t))) viewer.setTransparency(t);
+    }
   }
 
   if (ImGui::BeginCombo("debug view", viewName(viewer.view()))) {

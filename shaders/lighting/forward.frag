@@ -6,11 +6,16 @@
 // the first also brings the environment, the directional lights and the emission, and the alpha that composites;
 // the others write alpha 0 and so add to it.
 // With OIT_WEIGHTED the fragment is instead summed into weighted blended order-independent transparency's targets
-// (McGuire & Bavoil 2013), resolved by oit_composite.comp.
+// (McGuire & Bavoil 2013), resolved by oit_composite.comp; with OIT_EXACT it is kept in its pixel's list
+// (layer_lists.glsl), resolved by layer_resolve.comp.
 #include "../gbuffer/material.glsl"
 #include "shade_lights.glsl"
 
-#if OIT_WEIGHTED
+#if OIT_EXACT
+#include "layer_lists.glsl"
+// Fragments behind the opaque surface must not take a node: the depth test before the shader runs.
+layout(early_fragment_tests) in;
+#elif OIT_WEIGHTED
 layout(location = 0) out vec4 outAccumulation;  // blended ONE, ONE: w a C, w a
 layout(location = 1) out vec4 outRevealage;     // blended ZERO, ONE_MINUS_SRC_COLOR: the target keeps its 1 - a
 
@@ -45,7 +50,26 @@ void main() {
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
   float alpha = clamp(m.base.a, 0.0, 1.0);
   vec3 lit = min(finishShading(color), vec3(HDR_MAX));
-#if OIT_WEIGHTED
+#if OIT_EXACT
+  // A later chunk of the lights adds its colour with alpha 0 at the same depth: the resolve composites it before
+  // its layer's first node, under the same coverage. Helper invocations (the quad's lanes outside the triangle, run
+  // for derivatives) take no node.
+  if (!gl_HelperInvocation) {
+    uint node = atomicAdd(nodeCount, 1u);
+    if (node < nodeCapacity) {
+      uvec2 p = uvec2(gl_FragCoord.xy);
+      uint next = atomicExchange(words[p.y * uint(frame.viewport.x) + p.x], node + 1u);
+      vec3 c = lit * alpha;
+      uint at = heads + 4u * node;
+      words[at] = packHalf2x16(c.rg);
+      words[at + 1u] = packHalf2x16(vec2(c.b, first ? alpha : 0.0));
+      words[at + 2u] = floatBitsToUint(gl_FragCoord.z);
+      words[at + 3u] = next;
+    } else {
+      atomicAdd(droppedNodes, 1u);
+    }
+  }
+#elif OIT_WEIGHTED
   float w = alpha * depthWeight(s.viewDepth);
   outAccumulation = vec4(lit * w, first ? w : 0.0);
   outRevealage = vec4(first ? alpha : 0.0);
