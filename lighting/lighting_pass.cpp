@@ -235,6 +235,18 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
+size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes) {
+  const uint64_t least = sizeof(LayerListHeader) + uint64_t(pixels) * (4 + 16);
+  if (least > maxBlockBytes) {
+    throw std::runtime_error("--transparency exact: a frame of " + std::to_string(pixels) + " pixels needs " +
+                             std::to_string(least >> 20) + " MiB of lists at the least, over the driver's largest "
+                             "storage block (" + std::to_string(maxBlockBytes >> 20) + " MiB): use oit or sorted, or "
+                             "a smaller frame");
+  }
+  const uint64_t wanted = sizeof(LayerListHeader) + uint64_t(pixels) * (4 + 16 * uint64_t(kLayerNodesPerPixel));
+  return size_t(std::min(wanted, maxBlockBytes / 16 * 16));
+}
+
 uint32_t LightingPass::readDroppedLayers() const {
   if (!lastLayerLists_) return 0;
   LayerListHeader header{};

@@ -56,10 +56,10 @@ struct OitTargets {
   const Texture* revealage = nullptr;
   const Buffer* layerLists = nullptr;
 };
-// The bytes of the exact lists for a frame of `pixels` pixels.
-inline size_t layerListBytes(size_t pixels) {
-  return sizeof(LayerListHeader) + pixels * (4 + 16 * size_t(kLayerNodesPerPixel));
-}
+// The bytes of the exact lists for a frame of `pixels` pixels: kLayerNodesPerPixel nodes a pixel, fewer where the
+// driver's largest storage block (`maxBlockBytes`) holds fewer, which the dropped count then reports. Throws
+// std::runtime_error naming --transparency exact when the block cannot hold the heads and a node per pixel.
+size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes);
 
 struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;

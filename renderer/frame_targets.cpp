@@ -82,7 +82,10 @@ const FrameTargets::LayerCount& FrameTargets::layerCount() {
 
 const Buffer& FrameTargets::layerLists() {
   if (!layerLists_) {
-    layerLists_ = std::make_unique<Buffer>("frame.layerLists", layerListBytes(size_t(width) * size_t(height)));
+    GLint64 maxBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    layerLists_ = std::make_unique<Buffer>("frame.layerLists",
+                                           layerListBytes(size_t(width) * size_t(height), uint64_t(maxBlock)));
   }
   return *layerLists_;
 }

@@ -438,3 +438,14 @@ TEST_CASE("transparency: exact lists composite the nearest layers of a pixel and
   const int x = kSize.x / 2, y = kSize.y / 2;
   for (int c = 0; c < 3; ++c) CHECK(rgb(f.hdr, x, y)[c] == doctest::Approx(rgb(sorted.hdr, x, y)[c]).epsilon(2e-3));
 }
+
+TEST_CASE("transparency: the exact lists take 8 nodes a pixel, fewer where a storage block holds fewer, else refuse") {
+  const size_t pixels = 1000;
+  const size_t header = sizeof(pbr::LayerListHeader);
+  CHECK(pbr::layerListBytes(pixels, uint64_t(1) << 30) == header + pixels * (4 + 16 * pbr::kLayerNodesPerPixel));
+  // A block of 64 KiB holds the heads and 3.8 nodes a pixel: the lists take it whole, in nodes of 16 bytes.
+  CHECK(pbr::layerListBytes(pixels, 65536) == 65536);
+  // Under the heads and a node a pixel: one line naming the option.
+  CHECK_THROWS_WITH_AS(pbr::layerListBytes(pixels, 16000),
+                       doctest::Contains("--transparency exact: a frame of 1000 pixels needs"), std::runtime_error);
+}
