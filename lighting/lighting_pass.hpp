@@ -114,10 +114,11 @@ class LightingPass {
               const Texture* partialRadiance);
 
   // The BLEND surfaces, lit as render lights the G-buffer's (the same lights, lists, models, environment and
-  // shadows: shaders/lighting/forward.frag) and composited over `radiance`: back to front, drawn into it, or with
-  // `oit` order-independent, drawn into its targets (which `surfaces` draws into) and composited from them
-  // (shaders/lighting/oit_composite.comp). Over kLightsPerDispatch lights (or a brute-force window), each object is
-  // drawn once per chunk of lights, the later chunks adding to the first.
+  // shadows: shaders/lighting/forward.frag) and composited over `radiance`: back to front, drawn into it; or with
+  // `oit`'s weighted targets, drawn into them (which `surfaces` draws into) and composited from them
+  // (shaders/lighting/oit_composite.comp); or with its lists, each fragment kept in its pixel's list and the lists
+  // composited in depth order (shaders/lighting/layer_resolve.comp). Over kLightsPerDispatch lights (or a
+  // brute-force window), each object is drawn once per chunk of lights, the later chunks adding to the first.
   void renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights, const LightingOptions& options,
                      const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
                      const OitTargets& oit);
