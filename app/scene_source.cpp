@@ -14,8 +14,9 @@ OptionSpec allowOutsideUrisOption() {
 }
 
 OptionSpec strictOption() {
-  return {"--strict", "", "refuse a scene file holding a key the reader does not know (a misspelt field) instead of "
-                          "warning about it"};
+  return {"--strict", "", "refuse a scene file holding a key the reader does not know (a misspelt field), and a glTF "
+                          "file deviating from the specification where viewers read it anyway (a byteStride of 0), "
+                          "instead of warning about it"};
 }
 
 OptionSpec spotShareOption() {
@@ -25,7 +26,7 @@ OptionSpec spotShareOption() {
 
 SceneParams sceneFileParams(const Args& args) {
   SceneParams params;
-  params.uris = {args.has("--allow-outside-uris")};
+  params.uris = {args.has("--allow-outside-uris"), args.has("--strict")};
   params.strictKeys = args.has("--strict");
   if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 1.0f);
   return params;

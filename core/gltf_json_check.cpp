@@ -9,6 +9,7 @@
 #include "core/gltf_uri.hpp"
 #include "core/input_file.hpp"
 #include "core/json_text.hpp"
+#include "core/messages.hpp"
 #include "core/scene.hpp"
 
 namespace pbr {
@@ -245,8 +246,18 @@ class Checker {
       const uint64_t buffer = *index(*view, "buffer", field, "buffers", true);
       const uint64_t offset = integer(*view, "byteOffset", field, kMaxBytes).value_or(0);
       const uint64_t length = *integer(*view, "byteLength", field, kMaxBytes, true, 1);
-      const std::optional<uint64_t> stride = integer(*view, "byteStride", field, 252, false, 4);
-      if (stride && *stride % 4 != 0) fail(field + ".byteStride", "must be a multiple of 4 (got " + std::to_string(*stride) + ")");
+      const std::optional<uint64_t> stride = integer(*view, "byteStride", field, 252, false, 0);
+      if (stride && *stride == 0 && !context_.policy.strict) {
+        // The schema's minimum is 4, but Unity's exporter writes 0 and tinygltf, three.js, Blender and
+        // glTF-Sample-Viewer read it as tightly packed, as an absent stride is read.
+        warnOnce(context_.path + ": " + field + ".byteStride: 0 read as tightly packed (the specification asks for "
+                 "4 to 252 or no byteStride; --strict refuses it)");
+      } else if (stride && *stride < 4) {
+        fail(field + ".byteStride", "must be an integer in [4, 252] (got " + std::to_string(*stride) + ")");
+      }
+      if (stride && *stride % 4 != 0) {
+        fail(field + ".byteStride", "must be a multiple of 4 (got " + std::to_string(*stride) + ")");
+      }
       integer(*view, "target", field, 34963, false, 34962);  // ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER
       if (offset + length > bufferLengths_[buffer]) {
         fail(field, "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(length) +

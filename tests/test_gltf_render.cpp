@@ -443,3 +443,34 @@ TEST_CASE("gltf render: KHR_texture_transform moves, turns and scales the base c
   CHECK(notIdentity);
   CHECK(notOtherWay);
 }
+
+TEST_CASE("gltf render: a byteStride of 0 is read as tightly packed with a warning, and refused with --strict") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const json material = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}};
+  // The same quad with its positions' view declaring a stride of 12 (tightly packed VEC3 floats) and of 0.
+  const auto withStride = [&](int stride) {
+    const std::string path = materialQuad(dir, "stride" + std::to_string(stride), material);
+    json doc = json::parse(pbr::test::readFile(path));
+    const int positions = doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+    doc["bufferViews"][doc["accessors"][positions]["bufferView"].get<int>()]["byteStride"] = stride;
+    std::ofstream(path) << doc.dump();
+    return path;
+  };
+  const std::string explicitStride = withStride(12), zeroStride = withStride(0);
+  pbr::Scene reference = quadScene(explicitStride), lenient = quadScene(zeroStride);
+  for (pbr::Scene* s : {&reference, &lenient}) s->lights.push_back({{0.0f, 0.0f, 2.0f}, 10.0f, glm::vec3(1.0f), 200.0f});
+  const pbr::test::RenderedFrame a = pbr::test::renderScene(reference, kSize, options(), 1);
+  const pbr::test::RenderedFrame b = pbr::test::renderScene(lenient, kSize, options(), 1);
+  CHECK(rgb(a.hdr, kCentre).x > 0.05f);
+  CHECK(a.hdr.pixels == b.hdr.pixels);
+  // The command line says what it assumed, and --strict refuses the file with the specification's range.
+  const pbr::test::PbrRun run = pbr::test::runPbr(dir, {"render", "--scene", zeroStride, "--size", "32x18",
+                                                        "--frames", "1", "--out", dir.file("lenient.png")});
+  CHECK(run.exitCode == 0);
+  CHECK(run.err.find("bufferViews[0].byteStride: 0 read as tightly packed") != std::string::npos);
+  const pbr::test::PbrRun strict = pbr::test::runPbr(dir, {"render", "--strict", "--scene", zeroStride, "--size",
+                                                           "32x18", "--frames", "1", "--out", dir.file("strict.png")});
+  CHECK(strict.exitCode == 1);
+  CHECK(strict.err.find("bufferViews[0].byteStride: must be an integer in [4, 252] (got 0)") != std::string::npos);
+}
