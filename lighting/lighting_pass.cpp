@@ -178,7 +178,6 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
                               GL_UNSIGNED_INT, &zero);
     oit.layerLists->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kLayerNodeSsbo.index);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    lastLayerLists_ = oit.layerLists;
   } else {
     glEnable(GL_BLEND);
   }
@@ -247,11 +246,10 @@ size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes) {
   return size_t(std::min(wanted, maxBlockBytes / 16 * 16));
 }
 
-uint32_t LightingPass::readDroppedLayers() const {
-  if (!lastLayerLists_) return 0;
+uint32_t readDroppedLayers(const Buffer& lists) {
   LayerListHeader header{};
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(lastLayerLists_->id(), 0, sizeof header, &header);
+  glGetNamedBufferSubData(lists.id(), 0, sizeof header, &header);
   return header.droppedNodes;
 }
 

@@ -60,6 +60,9 @@ struct OitTargets {
 // driver's largest storage block (`maxBlockBytes`) holds fewer, which the dropped count then reports. Throws
 // std::runtime_error naming --transparency exact when the block cannot hold the heads and a node per pixel.
 size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes);
+// BLEND fragments the last frame composited through `lists` left out (over the nodes' capacity, or past a pixel's
+// kMaxLayersPerPixel nearest); waits for the GPU.
+uint32_t readDroppedLayers(const Buffer& lists);
 
 struct LightingOptions {
   ShadingModel model = ShadingModel::Pbr;
@@ -128,9 +131,6 @@ class LightingPass {
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
-  // BLEND fragments the last exact order-independent frame left out (over the nodes' capacity, or past a pixel's
-  // kMaxLayersPerPixel nearest); waits for the GPU. 0 when no frame was composited so.
-  uint32_t readDroppedLayers() const;
 
   // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
   static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
@@ -150,7 +150,6 @@ class LightingPass {
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
   Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;
-  const Buffer* lastLayerLists_ = nullptr;  // the lists of the last exact order-independent frame
   size_t pairGroups_ = 0;
   uint32_t lightWindow_;  // lights in the uniform-buffer window of the brute-force path
 };

@@ -44,6 +44,8 @@ struct FrameTargets {
   // Exact order-independent transparency's lists (LightingPass::renderBlended): a head and kLayerNodesPerPixel
   // nodes per pixel, 132 bytes per pixel made on first use.
   const Buffer& layerLists();
+  // The lists if a frame of this size has made them (a resize drops them with the other targets).
+  const Buffer* layerListsIfMade() const { return layerLists_.get(); }
   // R32F BLEND layers per pixel over the G-buffer's depth, for the transparency debug view: made on first use.
   struct LayerCount {
     Texture layers;

@@ -291,7 +291,8 @@ LightStats Renderer::lightStats() const {
   }
   if (lastOptions_.stats) s.pairs = scene_.lighting.readPairCounts();
   if (lastShadowed_) s.shadows = scene_.shadows.stats();
-  if (lastOptions_.transparency == Transparency::Exact) s.droppedLayers = scene_.lighting.readDroppedLayers();
+  const Buffer* lists = targets_->layerListsIfMade();
+  if (lastOptions_.transparency == Transparency::Exact && lists) s.droppedLayers = readDroppedLayers(*lists);
   return s;
 }
 

@@ -1,6 +1,6 @@
 // Exact order-independent transparency's per-pixel lists (pbr::LayerListHeader, lighting/lighting_pass.hpp): every
 // BLEND fragment a node, linked from its pixel's head; forward.frag appends, layer_resolve.comp sorts and composites.
-// Heads and nodes share one storage buffer: llvmpipe's image atomics in fragment shaders lose some of their results.
+// Heads and nodes share one storage buffer: one binding, sized and cleared together.
 
 // Mirrors pbr::LayerListHeader, then a head per pixel of the frame (rows of frame width; the first node + 1, 0 for
 // none), then the nodes, four words each: premultiplied colour rg and b with alpha as half floats, the fragment's
