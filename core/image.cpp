@@ -77,14 +77,19 @@ std::string decoderFailureReason() {
 
 namespace {
 
-// stb_image builds each JPEG Huffman table into fixed arrays of 257 entries without checking that the 16 code
-// counts sum to at most 256 (ITU T.81 B.2.4.2), so a corrupt DHT segment writes past them. Walks the marker
-// segments (skipping entropy-coded data, stuffed bytes and restart markers) and returns what is wrong, or "".
-// stb takes any run of 0xFF fill bytes before a marker, the start-of-image marker included.
-std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
+// Returns what in a JPEG's marker segments stb_image would mishandle, or "" (also for data that is no JPEG). Walks
+// the segments, skipping entropy-coded data, stuffed bytes and restart markers; stb takes any run of 0xFF fill
+// bytes before a marker, the start-of-image marker included. Two things stb does not check itself:
+// - it builds each Huffman table into fixed arrays of 257 entries without checking that the 16 code counts sum to
+//   at most 256 (ITU T.81 B.2.4.2), so a corrupt DHT segment writes past them;
+// - a scan may name a Huffman table no DHT segment defined (T.81 B.2.3 requires it defined), and stb then decodes
+//   with that table's uninitialised memory, indexing its symbol array anywhere.
+std::string jpegSegmentProblem(const unsigned char* b, size_t size) {
   size_t start = 0;
   while (start < size && b[start] == 0xFF) ++start;
   if (start == 0 || start == size || b[start] != 0xD8) return "";  // not a JPEG
+  bool defined[2][4] = {};  // [class: 0 DC, 1 AC][table id], as DHT segments so far define them
+  bool progressive = false;
   for (size_t pos = start + 1; pos + 1 < size;) {
     if (b[pos] != 0xFF) {
       ++pos;
@@ -103,18 +108,37 @@ std::string jpegHuffmanProblem(const unsigned char* b, size_t size) {
     if (pos + 4 > size) return "truncated JPEG marker segment";
     const size_t length = size_t(b[pos + 2]) << 8 | b[pos + 3];
     if (length < 2 || pos + 2 + length > size) return "truncated JPEG marker segment";
+    const size_t end = pos + 2 + length;
+    if (marker == 0xC2) progressive = true;  // the one progressive frame type stb decodes
     if (marker == 0xC4) {
-      const size_t end = pos + 2 + length;
       for (size_t table = pos + 4; table < end;) {
         if (table + 17 > end) return "truncated JPEG Huffman table";
         size_t codes = 0;
         for (int i = 1; i <= 16; ++i) codes += b[table + i];
         if (codes > 256) return "a JPEG Huffman table with " + std::to_string(codes) + " codes (at most 256)";
+        const unsigned tableClass = b[table] >> 4, id = b[table] & 15u;
+        if (tableClass <= 1 && id <= 3) defined[tableClass][id] = true;  // stb refuses other classes and ids
         table += 17 + codes;
         if (table > end) return "a JPEG Huffman table longer than its segment";
       }
     }
-    pos += 2 + length;
+    if (marker == 0xDA) {  // start of scan: Ns, Ns x (Cs, Td:Ta), Ss, Se, Ah:Al (T.81 B.2.3)
+      const size_t components = pos + 4 < end ? b[pos + 4] : 0;
+      if (pos + 5 + 2 * components + 3 > end) return "truncated JPEG scan header";
+      const unsigned spectralStart = b[pos + 5 + 2 * components], approximationHigh = b[pos + 7 + 2 * components] >> 4;
+      // Which tables stb decodes with: both in a sequential scan; in a progressive one the DC table only in a DC
+      // scan's first pass, the AC table in every AC scan.
+      const bool usesDc = !progressive || (spectralStart == 0 && approximationHigh == 0);
+      const bool usesAc = !progressive || spectralStart != 0;
+      for (size_t c = 0; c < components; ++c) {
+        const unsigned dc = b[pos + 6 + 2 * c] >> 4, ac = b[pos + 6 + 2 * c] & 15u;
+        if (usesDc && dc <= 3 && !defined[0][dc])
+          return "a JPEG scan uses DC Huffman table " + std::to_string(dc) + ", which no DHT segment defines";
+        if (usesAc && ac <= 3 && !defined[1][ac])
+          return "a JPEG scan uses AC Huffman table " + std::to_string(ac) + ", which no DHT segment defines";
+      }
+    }
+    pos = end;
   }
   return "";
 }
@@ -164,7 +188,7 @@ std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned cha
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
-  const std::string jpegProblem = jpegHuffmanProblem(bytes, size);
+  const std::string jpegProblem = jpegSegmentProblem(bytes, size);
   if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
   const std::string pngProblem = pngChunkProblem(bytes, size);
   if (!pngProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + pngProblem);

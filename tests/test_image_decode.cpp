@@ -45,13 +45,52 @@ TEST_CASE("image decode: fill bytes before the JPEG start-of-image marker do not
         "t.jpg: cannot decode image: truncated JPEG marker segment");
 }
 
+namespace {
+
+// SOI, a frame header of one 1x1 component (SOF0 sequential or SOF2 progressive), a DHT segment defining only DC
+// table 0 with one code, then a scan of that component naming DC table 0 and AC table 0 over spectral band
+// [start, end] and the given successive approximation byte, then EOI.
+std::vector<unsigned char> jpegWithOnlyDcTable(unsigned frameMarker, unsigned char start, unsigned char end,
+                                               unsigned char approximation) {
+  std::vector<unsigned char> jpeg = {0xFF, 0xD8, 0xFF, static_cast<unsigned char>(frameMarker), 0x00, 0x0B, 8, 0, 1,
+                                     0, 1, 1, 1, 0x11, 0};
+  // Class and id, 16 code counts (one code of length 1), its symbol.
+  std::vector<unsigned char> dht = {0xFF, 0xC4, 0x00, 0x14, 0x00, 1};
+  dht.resize(dht.size() + 15 + 1, 0);
+  const std::vector<unsigned char> sos = {0xFF, 0xDA, 0x00, 0x08, 1, 1, 0x00, start, end, approximation};
+  jpeg.insert(jpeg.end(), dht.begin(), dht.end());
+  jpeg.insert(jpeg.end(), sos.begin(), sos.end());
+  jpeg.insert(jpeg.end(), {0x00, 0xFF, 0xD9});
+  return jpeg;
+}
+
+}  // namespace
+
+TEST_CASE("image decode: a JPEG scan naming a Huffman table no DHT segment defines is refused") {
+  // stb_image would decode with the table's uninitialised memory (UBSan: index 918 out of bounds of values[256],
+  // a fuzzer's find in CI, fuzz/regressions/texture_fuzzer/jpeg-scan-uses-undefined-huffman-table.jpg).
+  const std::string undefinedAc =
+      "t.jpg: cannot decode image: a JPEG scan uses AC Huffman table 0, which no DHT segment defines";
+  CHECK(decodeError(jpegWithOnlyDcTable(0xC0, 0, 63, 0)) == undefinedAc);
+  CHECK(decodeError(jpegWithOnlyDcTable(0xC2, 1, 5, 0)) == undefinedAc);  // a progressive AC scan
+  // A progressive DC scan decodes with its DC table only (first pass) or none (refinement): not this refusal.
+  CHECK(decodeError(jpegWithOnlyDcTable(0xC2, 0, 0, 0)).find("Huffman") == std::string::npos);
+  CHECK(decodeError(jpegWithOnlyDcTable(0xC2, 0, 0, 0x10)).find("Huffman") == std::string::npos);
+  std::vector<unsigned char> noDc = jpegWithOnlyDcTable(0xC2, 0, 0, 0);
+  noDc[19] = 0x01;  // the DHT now defines DC table 1
+  CHECK(decodeError(noDc) ==
+        "t.jpg: cannot decode image: a JPEG scan uses DC Huffman table 0, which no DHT segment defines");
+}
+
 TEST_CASE("image decode: the shared models' JPEG and PNG textures decode") {
   const std::filesystem::path assets(pbr::assetDir());
   if (!std::filesystem::exists(assets / "DamagedHelmet")) {
     MESSAGE("shared assets not found at " << assets << ": skipped");
     return;
   }
-  for (const char* file : {"DamagedHelmet/glTF/Default_albedo.jpg", "DamagedHelmet/glTF/Default_normal.jpg"}) {
+  // Default_metalRoughness.jpg is progressive: its DC scans name AC tables defined only later.
+  for (const char* file : {"DamagedHelmet/glTF/Default_albedo.jpg", "DamagedHelmet/glTF/Default_normal.jpg",
+                           "DamagedHelmet/glTF/Default_metalRoughness.jpg"}) {
     CAPTURE(file);
     const pbr::ImageRgba8 image = pbr::readPng((assets / file).string());
     CHECK(image.width > 0);
