@@ -15,7 +15,6 @@ const tinygltf::Accessor& accessorAt(const GltfFile& file, int index, const std:
               std::to_string(file.model.accessors.size()) + ")");
   }
   const tinygltf::Accessor& a = file.model.accessors[static_cast<size_t>(index)];
-  if (a.sparse.isSparse) file.fail(gltfElement("accessors", index) + ": sparse accessors are not supported");
   if (a.count < 1) file.fail(gltfElement("accessors", index) + ": count must be at least 1");
   return a;
 }
@@ -148,6 +147,48 @@ void checkFormat(const GltfFile& file, int index, const tinygltf::Accessor& a, i
   }
 }
 
+// glTF sparse storage: `sparse.count` (index, value) pairs replace elements of the accessor's base (its view's data,
+// or zeros without one). Calls set(element, value bytes) for each pair in order, after checking that both views
+// hold them and that every index names an element.
+template <class Set>
+void forEachSparse(const GltfFile& file, int index, const tinygltf::Accessor& a, size_t elementSize, Set set) {
+  if (!a.sparse.isSparse) return;
+  const std::string name = gltfElement("accessors", index) + ".sparse";
+  const int indexType = a.sparse.indices.componentType;
+  if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+    file.fail(name + ".indices.componentType: " + componentName(indexType) +
+              ", expected UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  }
+  const size_t count = static_cast<size_t>(a.sparse.count), indexSize = componentSize(indexType);
+  // Each of count elements of `size` bytes from `offset` lies inside `span`; none of it can overflow (count and
+  // offset are at most 2^31, size at most 64).
+  const auto inside = [&](const ByteSpan& span, size_t offset, size_t size, const std::string& field) {
+    if (offset > span.size || count * size > span.size - offset) {
+      file.fail(field + ": " + std::to_string(count) + " elements of " + std::to_string(size) +
+                " bytes from byteOffset " + std::to_string(offset) + " run past the end of its bufferView (" +
+                std::to_string(span.size) + " bytes)");
+    }
+    return span.data + offset;
+  };
+  const unsigned char* indices =
+      inside(bufferViewBytes(file, a.sparse.indices.bufferView, name + ".indices.bufferView"),
+             static_cast<size_t>(a.sparse.indices.byteOffset), indexSize, name + ".indices");
+  const unsigned char* values = inside(bufferViewBytes(file, a.sparse.values.bufferView, name + ".values.bufferView"),
+                                       static_cast<size_t>(a.sparse.values.byteOffset), elementSize, name + ".values");
+  for (size_t i = 0; i < count; ++i) {
+    const unsigned char* p = indices + i * indexSize;
+    const size_t element = indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? *p
+                           : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? load<uint16_t>(p)
+                                                                                 : load<uint32_t>(p);
+    if (element >= a.count) {
+      file.fail(name + ".indices: index " + std::to_string(element) + " at position " + std::to_string(i) +
+                " is out of range (the accessor has " + std::to_string(a.count) + " elements)");
+    }
+    set(element, values + i * elementSize);
+  }
+}
+
 }  // namespace
 
 ByteSpan bufferViewBytes(const GltfFile& file, int index, const std::string& field) {
@@ -181,14 +222,16 @@ std::vector<float> readFloatAccessor(const GltfFile& file, int index, int type,
   const int components = type == TINYGLTF_TYPE_SCALAR ? 1 : type;
   const Elements e = locate(file, index, a, components);
   std::vector<float> out(a.count * static_cast<size_t>(components), 0.0f);
-  if (!e.base) return out;
   const size_t size = componentSize(a.componentType);
-  for (size_t i = 0; i < a.count; ++i) {
-    const unsigned char* element = e.base + i * e.stride;
+  const auto set = [&](size_t i, const unsigned char* element) {
     for (int c = 0; c < components; ++c) {
       out[i * components + c] = component(element + c * size, a.componentType, a.normalized);
     }
+  };
+  if (e.base) {
+    for (size_t i = 0; i < a.count; ++i) set(i, e.base + i * e.stride);
   }
+  forEachSparse(file, index, a, size * static_cast<size_t>(components), set);
   return out;
 }
 
@@ -200,17 +243,20 @@ std::vector<uint32_t> readIndexAccessor(const GltfFile& file, int index, size_t 
               field);
   const Elements e = locate(file, index, a, 1);
   std::vector<uint32_t> out(a.count, 0u);
-  if (!e.base) return out;
-  for (size_t i = 0; i < a.count; ++i) {
-    const unsigned char* p = e.base + i * e.stride;
-    const uint32_t v = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? *p
-                       : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? load<uint16_t>(p)
-                                                                                   : load<uint32_t>(p);
-    if (v >= vertexCount) {
-      file.fail(field + ": index " + std::to_string(v) + " at position " + std::to_string(i) + " of accessors[" +
+  const auto set = [&](size_t i, const unsigned char* p) {
+    out[i] = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? *p
+             : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? load<uint16_t>(p)
+                                                                         : load<uint32_t>(p);
+  };
+  if (e.base) {
+    for (size_t i = 0; i < a.count; ++i) set(i, e.base + i * e.stride);
+  }
+  forEachSparse(file, index, a, componentSize(a.componentType), set);
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (out[i] >= vertexCount) {
+      file.fail(field + ": index " + std::to_string(out[i]) + " at position " + std::to_string(i) + " of accessors[" +
                 std::to_string(index) + "] is out of range (" + std::to_string(vertexCount) + " vertices)");
     }
-    out[i] = v;
   }
   return out;
 }

@@ -14,6 +14,7 @@
 #include "core/gltf_json_check.hpp"
 #include "core/input_file.hpp"
 #include "core/json_file.hpp"
+#include "core/json_text.hpp"
 #include "core/messages.hpp"
 #include "core/scene.hpp"
 
@@ -66,6 +67,21 @@ bool isSupportedExtension(const std::string& name) {
                      [&](const char* supported) { return name == supported; });
 }
 
+// A required extension outside kSupportedGltfExtensions refuses the file, checked before its structure: a mesh only
+// the extension decodes (Draco, meshopt) has buffers and accessors that look broken without it, and the message
+// is to name the extension, not what it explains. Anything but an array of strings is left to checkGltfJson.
+void checkRequiredExtensions(const nlohmann::json& doc, const std::string& path) {
+  const auto required = doc.is_object() ? doc.find("extensionsRequired") : doc.end();
+  if (!doc.is_object() || required == doc.end() || !required->is_array()) return;
+  for (const nlohmann::json& name : *required) {
+    if (!name.is_string() || isSupportedExtension(name.get<std::string>())) continue;
+    const std::string extension = name.get<std::string>();
+    throw SceneError(path + ": extensionsRequired: " + jsonText(extension) + " is not supported" +
+                     (extension == "KHR_texture_basisu" ? " (no Debian package transcodes Basis Universal textures)"
+                                                        : ""));
+  }
+}
+
 }  // namespace
 
 void GltfFile::fail(const std::string& what) const { throw SceneError(path + ": " + what); }
@@ -75,6 +91,7 @@ void GltfFile::warn(const std::string& what) const { warnOnce(path + ": " + what
 GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   GltfFile file;
   file.path = path;
+  file.policy = policy;
   std::string bytes;
   try {
     bytes = readInputFile(path);
@@ -91,6 +108,7 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
     if (chunks.hasBin) context.binChunk = chunks.binLength;
   }
   const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path);
+  checkRequiredExtensions(doc, path);
   checkGltfJson(doc, context);
 
   tinygltf::TinyGLTF loader;
@@ -106,9 +124,6 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   if (!ok) file.fail(firstLine(!err.empty() ? err : !warn.empty() ? warn : "not a valid glTF 2.0 file"));
   file.encodedImages.resize(file.model.images.size());
 
-  for (const std::string& required : file.model.extensionsRequired) {
-    if (!isSupportedExtension(required)) file.fail("extensionsRequired: " + required + " is not supported");
-  }
   // The file is meant to look right without these, or it would require them; it may still look different.
   std::string ignored;
   for (const std::string& used : file.model.extensionsUsed) {

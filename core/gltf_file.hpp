@@ -15,6 +15,7 @@ struct GltfFile {
   std::string path;  // as given; every message starts with it
   tinygltf::Model model;
   std::vector<std::vector<unsigned char>> encodedImages;  // by image index; empty for buffer-view images
+  UriPolicy policy;                                       // as read: where files may be, and --strict
 
   // Throws SceneError("<path>: <what>").
   [[noreturn]] void fail(const std::string& what) const;

@@ -276,7 +276,15 @@ class Checker {
       const uint64_t componentType = *integer(*accessor, "componentType", field, 5126, true, 5120);
       const uint64_t size = componentSize(componentType);
       if (size == 0) fail(field + ".componentType", "must be 5120, 5121, 5122, 5123, 5125 or 5126 (got " + std::to_string(componentType) + ")");
-      const uint64_t count = *integer(*accessor, "count", field, kMaxBytes, true, 1);
+      const uint64_t count = *integer(*accessor, "count", field, kMaxBytes, true, 0);
+      if (count == 0 && context_.policy.strict) {
+        fail(field + ".count", "must be an integer in [1, " + std::to_string(kMaxBytes) + "] (got 0)");
+      } else if (count == 0) {
+        // The schema's minimum is 1, but exporters (Obj2GltfConverter) leave unused accessors empty, which
+        // tinygltf, three.js and glTF-Sample-Viewer read; a primitive reading one has nothing to draw.
+        warnOnce(context_.path + ": " + field + ".count: 0 read as an empty accessor (the specification asks for at "
+                 "least 1; --strict refuses it)");
+      }
       const auto type = accessor->find("type");
       const uint64_t components = type != accessor->end() && type->is_string() ? componentsOf(type->get<std::string>()) : 0;
       if (components == 0) {
@@ -289,7 +297,9 @@ class Checker {
         fail(field + ".byteOffset", "must be a multiple of " + std::to_string(size) + ", its component size (got " +
                                         std::to_string(*offset) + ")");
       }
-      if (view) checkAccessorRange(field, views_[*view], *view, offset.value_or(0), size, size * components, count);
+      if (view && count > 0) {
+        checkAccessorRange(field, views_[*view], *view, offset.value_or(0), size, size * components, count);
+      }
       if (accessor->contains("sparse")) checkSparse(member(*accessor, "sparse", field), field + ".sparse");
     }
   }
@@ -346,7 +356,9 @@ class Checker {
       if (!uri->is_string()) fail(field + ".uri", "must be a string (got " + quoteJson(*uri) + ")");
       const std::string& text = uri->get_ref<const std::string&>();
       try {
-        if (!isDataUri(text)) resolveGltfUri(text, context_.folder, context_.policy);
+        // A missing image file is drawn as a placeholder with a warning (GltfMaterials), or refused with --strict.
+        if (!isDataUri(text) && context_.policy.strict) resolveGltfUri(text, context_.folder, context_.policy);
+        if (!isDataUri(text)) placeGltfUri(text, context_.folder, context_.policy);
       } catch (const std::runtime_error& e) {
         fail(field + ".uri", e.what());
       }

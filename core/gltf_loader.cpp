@@ -27,6 +27,11 @@ constexpr float kPi = 3.14159265358979f;
 // matrix that overflows; zero collapses the model entirely.
 constexpr double kMinDeterminant = 1e-30;
 
+// "1 animation", "2 animations".
+std::string counted(size_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 std::string number(double v) {
   std::ostringstream ss;
   ss << v;
@@ -144,10 +149,7 @@ class Loader {
       : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded) {}
 
   Bounds load(const glm::mat4& transform) {
-    const auto& used = file_.model.extensionsUsed;
-    if (!file_.model.lights.empty() || std::find(used.begin(), used.end(), "KHR_lights_punctual") != used.end()) {
-      scene_.lightsDeclared = true;
-    }
+    const size_t placedLights = scene_.lights.size() + scene_.directionalLights.size();
     // Depth first, children in order; glTF node hierarchies are trees, so a node met twice is malformed.
     std::vector<std::pair<int, glm::mat4>> stack;
     const std::vector<int> roots = rootNodes();
@@ -163,6 +165,7 @@ class Loader {
       const glm::mat4 world = parent * localTransform(file_, node, name);
       checkWorld(world, node, name);
       if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
+      if (node.mesh >= 0 && node.skin >= 0) skinnedNodes_.push_back(name);
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
       if (node.camera >= 0) addCamera(node.camera, world, name + ".camera");
@@ -171,6 +174,13 @@ class Loader {
         stack.emplace_back(*child, world);
       }
     }
+    const bool placed = scene_.lights.size() + scene_.directionalLights.size() > placedLights;
+    scene_.gltfPlacedLights = scene_.gltfPlacedLights || placed;
+    if (!file_.model.lights.empty() && !placed) {
+      file_.warn("extensions.KHR_lights_punctual.lights: " + counted(file_.model.lights.size(), "light") +
+                 ", none placed by a node of the scene: not drawn");
+    }
+    warnUndrawnFeatures();
     // glTF leaves zfar out for an infinite far plane; the depth slices need a finite one, and nothing of the file
     // lies beyond its bounds, so the far plane is put just past their farthest corner.
     for (auto& [camera, infinite] : cameras_) {
@@ -181,6 +191,33 @@ class Loader {
   }
 
  private:
+  // What the file holds that is not drawn, one line per feature: never dropped without a word. The node walk
+  // has set which skins and meshes the scene uses.
+  void warnUndrawnFeatures() const {
+    const tinygltf::Model& m = file_.model;
+    if (!skinnedNodes_.empty()) {
+      file_.warn(skinnedNodes_.front() + ".skin: skinning is not drawn: " +
+                 counted(skinnedNodes_.size(), "skinned node") + " drawn in the bind pose, placed by the node");
+    }
+    if (!morphedMeshes_.empty()) {
+      file_.warn(morphedMeshes_.front() + ".targets: morph targets are not applied: " +
+                 counted(morphedMeshes_.size(), "primitive") + " drawn without them, their weights ignored");
+    }
+    if (!m.animations.empty()) {
+      file_.warn("animations: " + counted(m.animations.size(), "animation") +
+                 " not played: the nodes are drawn as the file places them");
+    }
+    if (!coloredPrimitives_.empty()) {
+      file_.warn(coloredPrimitives_.front() + ".attributes.COLOR_0: vertex colours are not drawn (" +
+                 counted(coloredPrimitives_.size(), "primitive") + "): the base colour alone is used");
+    }
+    const int drawn = m.defaultScene >= 0 ? m.defaultScene : 0;
+    if (m.scenes.size() > 1) {
+      file_.warn("scenes: the file has " + std::to_string(m.scenes.size()) + " scenes; scene " +
+                 std::to_string(drawn) + " is drawn, the others are not");
+    }
+  }
+
   float farthestCorner(const glm::vec3& from) const {
     float farthest = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
@@ -301,6 +338,8 @@ class Loader {
     int result = -1;
     if (prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
         prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      if (!prim.targets.empty()) morphedMeshes_.push_back(field);
+      if (prim.attributes.count("COLOR_0")) coloredPrimitives_.push_back(field);
       MeshData mesh = readPrimitive(prim, field);
       if (!mesh.indices.empty()) {
         scene_.meshes.push_back(std::move(mesh));
@@ -409,18 +448,24 @@ class Loader {
     light.position = glm::vec3(world[3]);
     light.color = color;
     if (!std::isfinite(l.range) || l.range < 0.0) file_.fail(name + ".range: must be a positive finite number");
+    // Exporters write an "infinite" range as FLT_MAX (babylon.js for 3ds Max); glTF's word for it is no range.
+    const bool bounded = l.range > 0.0 && l.range <= kMaxCoordinate;  // tinygltf reads an absent range as 0
+    if (l.range > kMaxCoordinate) {
+      file_.warn(name + ".range: " + number(l.range) + " is beyond the coordinate limit " + number(kMaxCoordinate) +
+                 ": read as no range (the light ends where it gives " + number(kGltfLightCutoffIlluminance) +
+                 " lux)");
+    }
     const float intensity = static_cast<float>(l.intensity);  // candela
     // A point source of intensity I emits P = 4 pi I lumens.
     light.luminousPower = 4.0f * kPi * intensity;
     const float brightest = std::max({light.color.x, light.color.y, light.color.z});
-    // tinygltf reads an absent range as 0.
     light.radius =
-        l.range > 0.0 ? static_cast<float>(l.range) : std::sqrt(intensity * brightest / kGltfLightCutoffIlluminance);
+        bounded ? static_cast<float>(l.range) : std::sqrt(intensity * brightest / kGltfLightCutoffIlluminance);
     // Values finite as written may overflow float once converted or multiplied; name what the file wrote.
     if (!std::isfinite(light.luminousPower)) file_.fail(name + ".intensity: too large (got " + number(l.intensity) + ")");
     if (!std::isfinite(brightest)) file_.fail(name + ".color: too large");
     if (!(light.radius <= kMaxCoordinate)) {
-      file_.fail(name + (l.range > 0.0 ? ".range" : ".intensity") + ": gives a light radius beyond the coordinate limit " +
+      file_.fail(name + (bounded ? ".range" : ".intensity") + ": gives a light radius beyond the coordinate limit " +
                  number(kMaxCoordinate));
     }
     if (l.type == "spot") light.spot = spotCone(l.spot, world, name);
@@ -461,6 +506,8 @@ class Loader {
   LoadedGltf& loaded_;
   GltfMaterials materials_;
   std::vector<std::pair<Camera, bool>> cameras_;  // and whether the file left its far plane out
+  // Where the scene uses what is not drawn, by field name, in the order met.
+  std::vector<std::string> skinnedNodes_, morphedMeshes_, coloredPrimitives_;
   Bounds bounds_;
   bool empty_ = true;
 };

@@ -20,11 +20,13 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 
 // Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive (TRIANGLES,
 // strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
-// images they use are appended, and KHR_lights_punctual point lights join scene.lights. Normals missing from a
-// primitive are generated flat, tangents missing are generated per vertex. Points and lines are skipped and used
-// extensions outside kSupportedGltfExtensions are ignored, each with one line on stderr. Returns the world bounds of the geometry appended. Throws
-// SceneError("<path>: <field>: <what>") for a malformed file or a required extension outside
-// kSupportedGltfExtensions, leaving `scene` as it was.
+// images they use are appended, and KHR_lights_punctual lights join scene.lights and scene.directionalLights.
+// Accessors may be sparse. Normals missing from a primitive are generated flat, tangents missing are generated per
+// vertex. What is not drawn (points and lines, skins, morph targets, animations, vertex colours, other scenes,
+// used extensions outside kSupportedGltfExtensions) is named in one line on stderr per feature, as is each image
+// drawn as a placeholder (missing or undecodable; refused under `policy.strict`). Returns the world bounds of the
+// geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
+// outside kSupportedGltfExtensions, leaving `scene` as it was.
 // `policy` says where the file's buffers and images may be (readGltfFile).
 // A file loaded again into the same scene (by canonical path) adds its objects, placed by the new transform, and
 // its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).

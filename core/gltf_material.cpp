@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -153,8 +154,7 @@ int GltfMaterials::texture(int index, bool srgb, const std::string& field) {
   if (t.source < 0 || static_cast<size_t>(t.source) >= model.images.size()) {
     file_.fail(name + ".source: no image " + std::to_string(t.source) + " (a texture needs a PNG or JPEG source)");
   }
-  TextureData data = imageTexture(t.source, name + ".source");
-  data.srgb = srgb;
+  TextureData data;
   if (t.sampler >= 0) {
     if (static_cast<size_t>(t.sampler) >= model.samplers.size()) {
       file_.fail(name + ".sampler: no sampler " + std::to_string(t.sampler));
@@ -180,13 +180,23 @@ int GltfMaterials::texture(int index, bool srgb, const std::string& field) {
     if (s.minFilter >= 0) data.minFilter = s.minFilter;
     if (s.magFilter >= 0) data.magFilter = s.magFilter;
   }
+  std::string problem;
+  if (!readImage(t.source, data, problem)) {
+    // As viewers draw it: without the texture, which for every role is its neutral value (white base colour,
+    // metal-roughness, occlusion and emission factors alone, the interpolated normal).
+    if (file_.policy.strict) file_.fail(problem);
+    file_.warn(problem + ": drawn without it, as if white (a flat normal map); --strict refuses");
+    loaded_.textures.emplace(std::make_pair(index, srgb), -1);
+    return -1;
+  }
+  data.srgb = srgb;
   scene_.textures.push_back(std::move(data));
   const int added = static_cast<int>(scene_.textures.size()) - 1;
   loaded_.textures.emplace(std::make_pair(index, srgb), added);
   return added;
 }
 
-TextureData GltfMaterials::imageTexture(int index, const std::string& field) const {
+bool GltfMaterials::readImage(int index, TextureData& data, std::string& problem) const {
   const tinygltf::Image& image = file_.model.images[static_cast<size_t>(index)];
   const std::string label = gltfElement("images", index) + (!image.uri.empty()    ? " (" + quoteUri(image.uri) + ")"
                                                             : !image.name.empty() ? " (" + quoteUri(image.name) + ")"
@@ -196,21 +206,29 @@ TextureData GltfMaterials::imageTexture(int index, const std::string& field) con
     bytes = bufferViewBytes(file_, image.bufferView, gltfElement("images", index) + ".bufferView");
   } else {
     const std::vector<unsigned char>& encoded = file_.encodedImages[static_cast<size_t>(index)];
-    if (encoded.empty()) file_.fail(label + ": cannot read the image file (used by " + field + ")");
+    if (encoded.empty()) {
+      // checkGltfJson placed the URI; the file is missing, or unreadable (a folder, too large, no permission).
+      std::error_code error;
+      const bool exists =
+          std::filesystem::exists(placeGltfUri(image.uri, std::filesystem::path(file_.path).parent_path(),
+                                               file_.policy), error);
+      problem = label + ": " + (exists ? "cannot read the image file" : "no such file");
+      return false;
+    }
     bytes = {encoded.data(), encoded.size()};
   }
   ImageRgba8 pixels;
   try {
     pixels = pbr::decodeImage(bytes.data, bytes.size, label);
   } catch (const std::runtime_error& e) {
-    file_.fail(e.what());
+    problem = e.what();
+    return false;
   }
-  TextureData data;
   data.name = image.uri.empty() || isDataUri(image.uri) ? label : image.uri;
   data.width = pixels.width;
   data.height = pixels.height;
   data.rgba = std::move(pixels.pixels);
-  return data;
+  return true;
 }
 
 }  // namespace pbr

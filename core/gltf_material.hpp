@@ -22,8 +22,9 @@ class GltfMaterials {
   Material convert(int index, const std::string& field);
   // Index into Scene::textures of glTF texture `index`.
   int texture(int index, bool srgb, const std::string& field);
-  // Image `image` decoded; `field` names the texture that uses it.
-  TextureData imageTexture(int image, const std::string& field) const;
+  // Decodes image `image` into `data`'s pixels and name; false, with `problem` saying why, where its file is
+  // missing or unreadable or its bytes are no image stb decodes (one message per image, however many use it).
+  bool readImage(int image, TextureData& data, std::string& problem) const;
 
   const GltfFile& file_;
   Scene& scene_;

@@ -73,7 +73,7 @@ std::size_t dataUriSize(const std::string& uri) {
   return length / 4 * 3 - padding;
 }
 
-fs::path resolveGltfUri(const std::string& uri, const fs::path& folder, const UriPolicy& policy) {
+fs::path placeGltfUri(const std::string& uri, const fs::path& folder, const UriPolicy& policy) {
   if (uri.empty()) throw std::runtime_error("empty URI");
   if (uri.find("://") != std::string::npos) {
     throw std::runtime_error(quoteUri(uri) + ": only file paths and data: URIs are supported");
@@ -84,6 +84,11 @@ fs::path resolveGltfUri(const std::string& uri, const fs::path& folder, const Ur
   if (!policy.allowOutside && !inside(path, folder.empty() ? fs::path(".") : folder)) {
     throw std::runtime_error(quoteUri(uri) + " leaves the model's folder (--allow-outside-uris allows it)");
   }
+  return path;
+}
+
+fs::path resolveGltfUri(const std::string& uri, const fs::path& folder, const UriPolicy& policy) {
+  const fs::path path = placeGltfUri(uri, folder, policy);
   try {
     requireRegularFile(path.string());
   } catch (const std::runtime_error& e) {

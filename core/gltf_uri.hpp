@@ -14,6 +14,10 @@ namespace pbr {
 // directory)".
 std::filesystem::path resolveGltfUri(const std::string& uri, const std::filesystem::path& folder,
                                      const UriPolicy& policy);
+// resolveGltfUri without the check that the file is there: for an image, whose file may be missing (drawn as a
+// placeholder, GltfMaterials) where a buffer's may not.
+std::filesystem::path placeGltfUri(const std::string& uri, const std::filesystem::path& folder,
+                                   const UriPolicy& policy);
 
 bool isDataUri(const std::string& uri);
 

@@ -77,17 +77,18 @@ Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEn
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
   const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy);
-  if (scene.objects.empty()) throw SceneError(path + ": the model has no triangles to show");
+  // A file of points, lines or bare nodes is valid glTF: it renders as the empty frame it is, and says so.
+  if (scene.objects.empty()) scene.notes.push_back("the file has no triangles to draw: the frame shows no geometry");
   scene.framedCamera = frameBounds(bounds, 45.0f);
   // The file's own first camera, as its author placed it; auto-framing where it has none.
   scene.camera = scene.cameras.empty() ? *scene.framedCamera : scene.cameras.front();
   scene.ambient = glm::vec3(0.03f);
   const bool fileLights = !scene.lights.empty() || !scene.directionalLights.empty();
-  // Only a file silent about lights gets the rig: one that declares lights it has none of (or none this renderer
-  // shades) is rendered as it says, by its ambient light alone.
-  if (scene.lights.empty() && scene.directionalLights.empty() && !scene.lightsDeclared) {
+  // A file whose scene places no light (whether or not it lists some) would render by its ambient light alone,
+  // almost black: it gets the rig, as glTF viewers light such a file.
+  if (!fileLights) {
     scene.lights = defaultLightRig(bounds);
-    scene.notes.push_back("the file has no lights: lit by a default rig of three point lights");
+    scene.notes.push_back("the file places no lights: lit by a default rig of three point lights");
   }
   // Core glTF has no way to name an environment: the file is always silent about one.
   if (environment == DefaultEnvironment::Sky) {

@@ -162,7 +162,7 @@ struct Scene {
   std::vector<DirectionalLight> directionalLights;
   std::vector<Camera> cameras;          // the glTF files' perspective cameras, in node order (`--camera N`)
   std::optional<Camera> framedCamera;   // a model given alone: the camera that frames its bounds (`--camera auto`)
-  bool lightsDeclared = false;          // a glTF file spoke of lights (KHR_lights_punctual), even if none loaded
+  bool gltfPlacedLights = false;        // a glTF file placed lights (KHR_lights_punctual) in the scene
   std::vector<std::string> notes;       // what a loader put in where the file was silent, for the commands to say
   std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
 

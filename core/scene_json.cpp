@@ -24,6 +24,7 @@
 #include "core/input_file.hpp"
 #include "core/json_field.hpp"
 #include "core/json_file.hpp"
+#include "core/messages.hpp"
 #include "core/model_scene.hpp"
 
 namespace pbr {
@@ -340,6 +341,14 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
     random.fail("missing, but a spot-light share was given (it replaces random_lights.spot_share)");
   }
   root.reportUnknownKeys(strictKeys);
+  // Nothing gives light: the frame is black whatever the objects are. Said, since no key is wrong.
+  const bool emits = std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+    return o.material.emissiveTexture >= 0 || glm::any(glm::greaterThan(o.material.emissive, glm::vec3(0.0f)));
+  });
+  if (scene.lights.empty() && scene.directionalLights.empty() && !random.present() && !scene.environment &&
+      !glm::any(glm::greaterThan(scene.ambient, glm::vec3(0.0f))) && !emits) {
+    warnOnce(path + ": no lights, no environment, no ambient light and nothing emissive: the frame is black");
+  }
   return scene;
 }
 

@@ -20,10 +20,13 @@ void checkOneLineNaming(const PbrRun& run, const std::string& name) {
   CHECK(run.err.find(name) != std::string::npos);
 }
 
-void checkRefused(const TempDir& dir, const std::string& scene, const std::vector<std::string>& parts) {
+void checkRefused(const TempDir& dir, const std::string& scene, const std::vector<std::string>& parts,
+                  const std::vector<std::string>& extra) {
   const std::string out = dir.file("frame.png");
-  const PbrRun run =
-      runPbr(dir, {"render", "--scene", scene, "--size", "32x18", "--frames", "1", "--warmup", "0", "--out", out});
+  std::vector<std::string> args = {"render", "--scene", scene, "--size", "32x18", "--frames", "1", "--warmup", "0",
+                                   "--out", out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const PbrRun run = runPbr(dir, args);
   CAPTURE(scene);
   CAPTURE(run.err);
   CHECK(run.exitCode == 1);

@@ -13,8 +13,9 @@ std::vector<std::string> tinyRender(const std::vector<std::string>& extra);
 // stderr is one line under 300 characters holding `name`.
 void checkOneLineNaming(const PbrRun& run, const std::string& name);
 
-// Renders `scene` and checks the refusal: exit 1, one line under 300 characters naming the file and holding every
-// part, no frame.
-void checkRefused(const TempDir& dir, const std::string& scene, const std::vector<std::string>& parts);
+// Renders `scene` (with the options `extra`) and checks the refusal: exit 1, one line under 300 characters naming
+// the file and holding every part, no frame.
+void checkRefused(const TempDir& dir, const std::string& scene, const std::vector<std::string>& parts,
+                  const std::vector<std::string>& extra = {});
 
 }  // namespace pbr::test

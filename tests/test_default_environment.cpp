@@ -112,7 +112,7 @@ TEST_CASE("default environment: pbr render notes the sky of a model alone, and -
   CHECK(asked.find("environment: procedural sky") != std::string::npos);
   const std::string none = render("none.png", {"--environment", "none"});
   CHECK(none.find("procedural sky") == std::string::npos);
-  CHECK(none.find("note: the file has no lights") != std::string::npos);
+  CHECK(none.find("note: the file places no lights") != std::string::npos);
 
   const int litGreen = centreGreen(dir.file("lit.png")), darkGreen = centreGreen(dir.file("none.png"));
   MESSAGE("centre green: " << litGreen << " under the sky, " << darkGreen << " without");

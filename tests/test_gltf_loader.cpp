@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -429,8 +430,11 @@ TEST_CASE("gltf errors: malformed files give one line naming the file and the fi
     b.doc["images"] = {{{"uri", "missing.png"}}};
     b.doc["textures"] = {{{"source", 0}}};
     b.addRootNode({{"mesh", pbr::test::addQuad(b, spec)}});
-    const auto [path, message] = load(b, "image");
-    check(message, path, {"images[0]", "missing.png"});
+    // A missing image is drawn as a placeholder by default (tests/test_gltf_render.cpp); --strict refuses it.
+    const std::string path = b.writeGltf(dir.path(), "image");
+    pbr::Scene scene;
+    check(errorOf([&] { pbr::appendGltf(scene, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}); }), path,
+          {"images[0].uri", "missing.png"});
   }
   {
     GltfBuilder b = quad();
@@ -438,6 +442,16 @@ TEST_CASE("gltf errors: malformed files give one line naming the file and the fi
     b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     const auto [path, message] = load(b, "extension");
     check(message, path, {"extensionsRequired", "KHR_draco_mesh_compression"});
+  }
+  {
+    // As gltfpack writes EXT_meshopt_compression: a fallback buffer without a URI, which only the extension
+    // explains; the extension is checked first, so it is what the message names.
+    GltfBuilder b = quad();
+    b.doc["buffers"].push_back({{"byteLength", 1024}});
+    b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = {"EXT_meshopt_compression"};
+    const auto [path, message] = load(b, "meshopt");
+    check(message, path, {"extensionsRequired", "EXT_meshopt_compression"});
+    CHECK(message.find("buffers") == std::string::npos);
   }
   {
     GltfBuilder b = quad();
@@ -539,4 +553,102 @@ TEST_CASE("gltf assets: PBR_ASSET_DIR moves the asset folder, and a missing asse
   } else {
     ::unsetenv("PBR_ASSET_DIR");
   }
+}
+
+TEST_CASE("gltf sparse accessors: pairs replace the base's elements, over a view or zeros, and bad pairs are refused") {
+  const TempDir dir;
+  // The quad's corners, and the same positions as a sparse accessor: over a view holding them with two corners
+  // moved away (the pairs move them back), and over zeros (no view: the pairs set all four).
+  GltfBuilder plain = pbr::test::quadModel();
+  const int positions = plain.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+  const pbr::Scene expected = [&] {
+    pbr::Scene s;
+    pbr::appendGltf(s, plain.writeGltf(dir.path(), "plain"));
+    return s;
+  }();
+  REQUIRE(expected.meshes.size() == 1);
+  const std::vector<pbr::Vertex>& corners = expected.meshes[0].vertices;
+  REQUIRE(corners.size() == 4);
+  const auto sparse = [&](bool overView, std::vector<uint16_t> indices, const std::string& name) {
+    GltfBuilder b = plain;
+    json& accessor = b.doc["accessors"][positions];
+    std::vector<float> values;
+    for (const uint16_t i : indices) {
+      const glm::vec3 p = corners[i < 4 ? i : 0].position;
+      values.insert(values.end(), {p.x, p.y, p.z});
+    }
+    if (overView) {
+      std::vector<float> moved;
+      for (size_t i = 0; i < 4; ++i) {
+        const glm::vec3 p = corners[i].position + (i == 1 || i == 3 ? glm::vec3(5.0f) : glm::vec3(0.0f));
+        moved.insert(moved.end(), {p.x, p.y, p.z});
+      }
+      accessor["bufferView"] = b.addView(moved.data(), moved.size() * sizeof(float));
+    } else {
+      accessor.erase("bufferView");
+    }
+    const int indexView = b.addView(indices.data(), indices.size() * sizeof(uint16_t));
+    const int valueView = b.addView(values.data(), values.size() * sizeof(float));
+    accessor["sparse"] = {{"count", indices.size()},
+                          {"indices", {{"bufferView", indexView}, {"componentType", 5123}}},
+                          {"values", {{"bufferView", valueView}}}};
+    return b.writeGltf(dir.path(), name);
+  };
+  for (const auto& [path, label] : {std::make_pair(sparse(true, {1, 3}, "over_view"), "over a view"),
+                                    std::make_pair(sparse(false, {0, 1, 2, 3}, "over_zeros"), "over zeros")}) {
+    CAPTURE(label);
+    pbr::Scene s;
+    pbr::appendGltf(s, path);
+    REQUIRE(s.meshes.size() == 1);
+    REQUIRE(s.meshes[0].vertices.size() == 4);
+    for (size_t i = 0; i < 4; ++i) CHECK(s.meshes[0].vertices[i].position == corners[i].position);
+  }
+  // An index past the accessor's elements, and pairs running past their views.
+  const std::string outOfRange = sparse(true, {1, 4}, "out_of_range");
+  CHECK(errorOf([&] { pbr::Scene s; pbr::appendGltf(s, outOfRange); }) ==
+        outOfRange + ": accessors[" + std::to_string(positions) +
+            "].sparse.indices: index 4 at position 1 is out of range (the accessor has 4 elements)");
+  {
+    const std::string path = sparse(true, {1, 3}, "long");
+    json doc = json::parse(pbr::test::readFile(path));
+    doc["accessors"][positions]["sparse"]["count"] = 3;
+    std::ofstream(path) << doc.dump();
+    const std::string message = errorOf([&] { pbr::Scene s; pbr::appendGltf(s, path); });
+    CHECK(contains(message, ".sparse.indices: 3 elements of 2 bytes from byteOffset 0 run past the end"));
+  }
+  // The Khronos sample (microsoft/glTF-SDK's copy) raises three of its fourteen vertices, (1, 1), (3, 1) and (5, 1),
+  // to (1, 2), (3, 3) and (5, 4); without normals its triangles get their own vertices.
+  const std::filesystem::path sample =
+      std::filesystem::path(pbr::assetDir()) / "exports/sdk-SimpleSparseAccessor/SimpleSparseAccessor.gltf";
+  if (std::filesystem::exists(sample)) {
+    pbr::Scene s;
+    pbr::appendGltf(s, sample.string());
+    REQUIRE(s.meshes.size() == 1);
+    const auto has = [&](float x, float y) {
+      return std::any_of(s.meshes[0].vertices.begin(), s.meshes[0].vertices.end(),
+                         [&](const pbr::Vertex& v) { return v.position == glm::vec3(x, y, 0.0f); });
+    };
+    CHECK(has(1.0f, 2.0f));
+    CHECK(has(3.0f, 3.0f));
+    CHECK(has(5.0f, 4.0f));
+    CHECK_FALSE(has(1.0f, 1.0f));
+    CHECK_FALSE(has(3.0f, 1.0f));
+    CHECK_FALSE(has(5.0f, 1.0f));
+    CHECK(has(2.0f, 1.0f));
+  }
+}
+
+TEST_CASE("gltf leniency: an unused accessor of count 0 is read as empty, and refused with --strict") {
+  // As Obj2GltfConverter writes one (shared/assets/exports/jl-Astronaut_obj2gltfconverter).
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  const size_t empty = b.doc["accessors"].size();
+  b.doc["accessors"].push_back({{"bufferView", 0}, {"componentType", 5126}, {"count", 0}, {"type", "VEC3"}});
+  const std::string path = b.writeGltf(dir.path(), "empty_accessor");
+  pbr::Scene lenient;
+  pbr::appendGltf(lenient, path);
+  CHECK(lenient.objects.size() == 1);
+  pbr::Scene strict;
+  CHECK(errorOf([&] { pbr::appendGltf(strict, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}); }) ==
+        path + ": accessors[" + std::to_string(empty) + "].count: must be an integer in [1, 2147483648] (got 0)");
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
@@ -473,4 +474,50 @@ TEST_CASE("gltf render: a byteStride of 0 is read as tightly packed with a warni
                                                            "32x18", "--frames", "1", "--out", dir.file("strict.png")});
   CHECK(strict.exitCode == 1);
   CHECK(strict.err.find("bufferViews[0].byteStride: must be an integer in [4, 252] (got 0)") != std::string::npos);
+}
+
+TEST_CASE("gltf render: missing and undecodable textures are drawn as their neutral value, one warning per file") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const json plain = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"baseColorFactor", {0.8, 0.5, 0.3, 1.0}}}}};
+  json textured = plain;
+  textured["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  textured["normalTexture"] = {{"index", 1}};
+  textured["occlusionTexture"] = {{"index", 2}};
+  textured["emissiveTexture"] = {{"index", 3}};
+  textured["emissiveFactor"] = {1.0, 1.0, 1.0};
+  const pbr::ImageRgba8 grey = pbr::test::solidImage(4, 4, {100, 100, 100, 255});
+  const std::string broken = materialQuad(dir, "broken", textured, {},
+                                          {{"base.png", grey}, {"normal.png", grey}, {"occlusion.png", grey},
+                                           {"emissive.png", grey}});
+  // Three files gone, the fourth cut short.
+  for (const char* file : {"base.png", "normal.png", "occlusion.png"}) std::filesystem::remove(dir.path() / file);
+  std::filesystem::resize_file(dir.path() / "emissive.png", 40);
+  // What the placeholders stand for: the factors alone, and a white emission map.
+  json untextured = plain;
+  untextured["emissiveFactor"] = {1.0, 1.0, 1.0};
+  const std::string reference = materialQuad(dir, "reference", untextured);
+  pbr::Scene expected = quadScene(reference), lenient = quadScene(broken);
+  for (pbr::Scene* s : {&expected, &lenient}) s->lights.push_back({{0.0f, 0.0f, 2.0f}, 10.0f, glm::vec3(1.0f), 200.0f});
+  const pbr::test::RenderedFrame a = pbr::test::renderScene(expected, kSize, options(), 1);
+  const pbr::test::RenderedFrame b = pbr::test::renderScene(lenient, kSize, options(), 1);
+  CHECK(rgb(a.hdr, kCentre).x > 0.05f);
+  CHECK(a.hdr.pixels == b.hdr.pixels);
+
+  const pbr::test::PbrRun run = pbr::test::runPbr(
+      dir, {"render", "--scene", broken, "--size", "32x18", "--frames", "1", "--out", dir.file("lenient.png")});
+  CHECK(run.exitCode == 0);
+  CAPTURE(run.err);
+  size_t warnings = 0;
+  for (size_t at = run.err.find("drawn without it"); at != std::string::npos; at = run.err.find("drawn without it", at + 1))
+    ++warnings;
+  CHECK(warnings == 4);
+  for (const char* line : {"images[0] ('base.png'): no such file", "images[1] ('normal.png'): no such file",
+                           "images[2] ('occlusion.png'): no such file", "images[3] ('emissive.png'): cannot decode"}) {
+    CHECK(run.err.find(line) != std::string::npos);
+  }
+  const pbr::test::PbrRun strict = pbr::test::runPbr(dir, {"render", "--strict", "--scene", broken, "--size",
+                                                           "32x18", "--frames", "1", "--out", dir.file("strict.png")});
+  CHECK(strict.exitCode == 1);
+  CHECK(strict.err.find("images[0].uri: 'base.png'") != std::string::npos);
 }

@@ -362,15 +362,20 @@ TEST_CASE("scene file: a .gltf given alone is framed and lit by the default rig"
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(boxAsset(), 10), doctest::Contains("light count"), pbr::SceneError);
 }
 
-TEST_CASE("scene file: a model that declares lights gets no default rig even when it places none") {
+TEST_CASE("scene file: a model that places no light gets the default rig, even when it lists lights") {
   const TempDir dir;
   pbr::test::GltfBuilder builder = pbr::test::quadModel();
   builder.doc["extensionsUsed"] = {"KHR_lights_punctual"};
   builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::array();
-  const pbr::Scene declared = pbr::loadSceneFile(builder.writeGltf(dir.path(), "declared"));
-  CHECK(declared.lightsDeclared);
-  CHECK(declared.lights.empty());
-  for (const std::string& note : declared.notes) CHECK(note.find("default rig") == std::string::npos);
+  for (const int listed : {0, 1}) {
+    // An empty light list, then a light no node places.
+    if (listed) builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}}};
+    const pbr::Scene declared = pbr::loadSceneFile(builder.writeGltf(dir.path(), "declared"));
+    CHECK_FALSE(declared.gltfPlacedLights);
+    CHECK(declared.lights.size() == 3);
+    REQUIRE_FALSE(declared.notes.empty());
+    CHECK(declared.notes[0] == "the file places no lights: lit by a default rig of three point lights");
+  }
   // A spot light is loaded as one, along its node's -Z.
   builder.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
       {{"type", "spot"}, {"intensity", 10.0}, {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 0.5}}}}};
@@ -383,6 +388,7 @@ TEST_CASE("scene file: a model that declares lights gets no default rig even whe
   checkVec(spot.lights[0].spot->direction, glm::vec3(0.0f, -1.0f, 0.0f));
   CHECK(spot.lights[0].spot->innerAngle == doctest::Approx(0.25));
   CHECK(spot.lights[0].spot->outerAngle == doctest::Approx(0.5));
+  CHECK(spot.gltfPlacedLights);
   for (const std::string& note : spot.notes) CHECK(note.find("default rig") == std::string::npos);
   // A directional light alone is a light: no rig either.
   builder.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "directional"}, {"intensity", 2.0}};

@@ -161,7 +161,7 @@ void writeSceneSnapshot(const std::string& path, const SceneSnapshot& shot) {
   write(path, document);
   if (sameLights(lightsOf(path, shot.params), shot.scene.lights)) return;
   // The built-in's rule made lights its file does not hold: list them. A glTF model's lights would then come twice.
-  if (!shot.scene.lightsDeclared) {
+  if (!shot.scene.gltfPlacedLights) {
     listLights(document, shot.scene.lights);
     write(path, document);
     if (sameLights(lightsOf(path, shot.params), shot.scene.lights)) return;
