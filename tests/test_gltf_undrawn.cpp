@@ -1,0 +1,129 @@
+// What a glTF file holds that the renderer does not draw is named on stderr, one line per feature; values viewers
+// read are read, and files with nothing to draw load as empty scenes.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/builtin_scenes.hpp"
+#include "core/gltf_loader.hpp"
+#include "core/scene_json.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gltf_builder.hpp"
+
+using nlohmann::json;
+using pbr::test::CapturedStderr;
+using pbr::test::GltfBuilder;
+using pbr::test::TempDir;
+
+namespace {
+
+size_t lines(const std::string& text) { return static_cast<size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+}  // namespace
+
+TEST_CASE("gltf undrawn: skins, morph targets, animations, vertex colours and other scenes get one line each") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  json& primitive = b.doc["meshes"][0]["primitives"][0];
+  const int positions = primitive["attributes"]["POSITION"];
+  primitive["attributes"]["COLOR_0"] = b.addFloats(std::vector<float>(16, 0.5f), "VEC4");
+  primitive["targets"] = {{{"POSITION", positions}}};
+  b.doc["meshes"][0]["weights"] = {1.0};
+  b.doc["nodes"][0]["skin"] = 0;
+  b.doc["nodes"].push_back(json::object());  // the joint
+  b.doc["skins"] = {{{"joints", {1}}}};
+  const float times[] = {0.0f, 1.0f};
+  const float offsets[] = {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f};
+  const int input = b.addView(times, sizeof times), output = b.addView(offsets, sizeof offsets);
+  b.doc["accessors"].push_back({{"bufferView", input}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"},
+                                {"min", {0.0}}, {"max", {1.0}}});
+  b.doc["accessors"].push_back({{"bufferView", output}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}});
+  const int n = static_cast<int>(b.doc["accessors"].size());
+  b.doc["animations"] = {{{"samplers", {{{"input", n - 2}, {"output", n - 1}}}},
+                          {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}};
+  b.doc["scenes"].push_back({{"nodes", json::array()}});
+  const std::string path = b.writeGltf(dir.path(), "features");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  CHECK(scene.objects.size() == 1);
+  const std::string text = err.text();
+  CAPTURE(text);
+  for (const std::string& line :
+       {path + ": nodes[0].skin: skinning is not drawn: 1 skinned node drawn in the bind pose, placed by the node\n",
+        path + ": meshes[0].primitives[0].targets: morph targets are not applied: 1 primitive drawn without them, "
+               "their weights ignored\n",
+        path + ": animations: 1 animation not played: the nodes are drawn as the file places them\n",
+        path + ": meshes[0].primitives[0].attributes.COLOR_0: vertex colours are not drawn (1 primitive): the base "
+               "colour alone is used\n",
+        path + ": scenes: the file has 2 scenes; scene 0 is drawn, the others are not\n"}) {
+    CHECK(text.find(line) != std::string::npos);
+  }
+  CHECK(lines(text) == 5);
+}
+
+TEST_CASE("gltf undrawn: a light range beyond the coordinate limit is read as no range, with one line") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  // babylon.js for 3ds Max writes FLT_MAX for an "infinite" range.
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "spot"}, {"intensity", 100.0}, {"range", 3.4028234663852886e38}, {"spot", json::object()}}};
+  b.doc["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  b.doc["scenes"][0]["nodes"].push_back(1);
+  const std::string path = b.writeGltf(dir.path(), "infinite");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  REQUIRE(scene.lights.size() == 1);
+  // The radius of a light without range: where 100 cd falls to the cutoff illuminance.
+  CHECK(scene.lights[0].radius == doctest::Approx(std::sqrt(100.0 / pbr::kGltfLightCutoffIlluminance)));
+  CHECK(err.text() == path + ": extensions.KHR_lights_punctual.lights[0].range: 3.40282e+38 is beyond the "
+                             "coordinate limit 1e+12: read as no range (the light ends where it gives 0.01 lux)\n");
+}
+
+TEST_CASE("gltf undrawn: a file of points or of bare nodes loads as an empty scene with a note and the default rig") {
+  const TempDir dir;
+  GltfBuilder points = pbr::test::quadModel();
+  points.doc["meshes"][0]["primitives"][0]["mode"] = 0;
+  GltfBuilder nodes;
+  nodes.addRootNode({{"name", "empty"}});
+  for (const auto& [builder, name] : {std::make_pair(&points, "points"), std::make_pair(&nodes, "nodes")}) {
+    CAPTURE(name);
+    const std::string path = builder->writeGltf(dir.path(), name);
+    CapturedStderr err;
+    const pbr::Scene scene = pbr::loadSceneFile(path);
+    CHECK(scene.objects.empty());
+    CHECK(scene.lights.size() == 3);
+    CHECK(std::find(scene.notes.begin(), scene.notes.end(),
+                    "the file has no triangles to draw: the frame shows no geometry") != scene.notes.end());
+    CHECK(err.text() == (builder == &points
+                             ? path + ": meshes[0].primitives[0]: mode 0 (points or lines) is not drawn\n"
+                             : std::string()));
+  }
+}
+
+TEST_CASE("scene file: a scene with no light, environment, ambient light or emission says its frame is black") {
+  const TempDir dir;
+  const std::string camera = R"("camera": {"position": [0, 0, 5], "target": [0, 0, 0]})";
+  const std::string dark = dir.write("dark.json", "{" + camera + R"(, "objects": [{"shape": "sphere"}]})");
+  {
+    CapturedStderr err;
+    pbr::loadSceneFile(dark);
+    CHECK(err.text() == dark + ": no lights, no environment, no ambient light and nothing emissive: the frame is "
+                               "black\n");
+  }
+  // Any one of them is light enough to say nothing.
+  for (const std::string& lit :
+       {std::string(R"("ambient": 0.1)"),
+        std::string(R"("lights": [{"position": [0, 2, 0], "radius": 5, "luminous_power": 100}])"),
+        std::string(R"("objects": [{"shape": "sphere", "material": {"emissive": [1, 0, 0]}}])")}) {
+    CAPTURE(lit);
+    const std::string path = dir.write("lit.json", "{" + camera + ", " + lit + "}");
+    CapturedStderr err;
+    pbr::loadSceneFile(path);
+    CHECK(err.text().empty());
+  }
+}
