@@ -367,8 +367,18 @@ class Loader {
       requireFinite(file_, values, where);
       return values;
     };
+    // KHR_mesh_quantization: positions and texture coordinates may be any 8- or 16-bit integers, normalized or
+    // not (the node's transform scales them back), normals and tangents normalized 8- or 16-bit integers.
+    const auto& used = file_.model.extensionsUsed;
+    const bool quantized = std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end();
+    constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT, kByte = TINYGLTF_COMPONENT_TYPE_BYTE,
+                  kUbyte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, kShort = TINYGLTF_COMPONENT_TYPE_SHORT,
+                  kUshort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const std::initializer_list<int> anyPosition = {kFloat, kByte, kUbyte, kShort, kUshort}, floatOnly = {kFloat},
+                                     signedUnit = {kFloat, kByte, kShort}, coreUv = {kFloat, kUbyte, kUshort};
     if (attribute("POSITION") < 0) file_.fail(field + ".attributes: no POSITION");
-    const std::vector<float> positions = read("POSITION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 0);
+    const std::vector<float> positions =
+        read("POSITION", TINYGLTF_TYPE_VEC3, quantized ? anyPosition : floatOnly, 0);
     const size_t count = positions.size() / 3;
     for (const float p : positions) {
       if (std::fabs(p) > kMaxCoordinate) {
@@ -380,16 +390,14 @@ class Loader {
     // glTF: without normals, tangents from the file are ignored too.
     const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
     const std::vector<float> normals =
-        hasNormals ? read("NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, count) : std::vector<float>();
+        hasNormals ? read("NORMAL", TINYGLTF_TYPE_VEC3, quantized ? signedUnit : floatOnly, count)
+                   : std::vector<float>();
     const std::vector<float> tangents =
-        hasTangents ? read("TANGENT", TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT}, count)
+        hasTangents ? read("TANGENT", TINYGLTF_TYPE_VEC4, quantized ? signedUnit : floatOnly, count)
                     : std::vector<float>();
-    const std::vector<float> uvs = attribute("TEXCOORD_0") >= 0
-                                       ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-                                              {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                              count)
-                                       : std::vector<float>();
+    const std::vector<float> uvs =
+        attribute("TEXCOORD_0") >= 0 ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2, quantized ? anyPosition : coreUv, count)
+                                     : std::vector<float>();
 
     MeshData mesh;
     mesh.vertices.resize(count);

@@ -652,3 +652,59 @@ TEST_CASE("gltf leniency: an unused accessor of count 0 is read as empty, and re
   CHECK(errorOf([&] { pbr::appendGltf(strict, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}); }) ==
         path + ": accessors[" + std::to_string(empty) + "].count: must be an integer in [1, 2147483648] (got 0)");
 }
+
+TEST_CASE("gltf KHR_mesh_quantization: integer positions, normals and UVs load as the float quad they encode") {
+  const TempDir dir;
+  GltfBuilder plain = pbr::test::quadModel();
+  pbr::Scene expected;
+  pbr::appendGltf(expected, plain.writeGltf(dir.path(), "plain"));
+  REQUIRE(expected.meshes.size() == 1);
+  const std::vector<pbr::Vertex>& v = expected.meshes[0].vertices;
+  REQUIRE(v.size() == 4);
+  // SHORT positions (the corners are whole numbers), normalized BYTE normals, normalized UNSIGNED_SHORT UVs (0 or 1).
+  std::vector<int16_t> positions;
+  std::vector<int8_t> normals;
+  std::vector<uint16_t> uvs;
+  for (const pbr::Vertex& p : v) {
+    for (int c = 0; c < 3; ++c) positions.push_back(static_cast<int16_t>(p.position[c]));
+    positions.push_back(0);  // each element padded to 4 bytes, as the specification aligns vertex attributes
+    for (int c = 0; c < 3; ++c) normals.push_back(static_cast<int8_t>(127.0f * p.normal[c]));
+    normals.push_back(0);
+    for (int c = 0; c < 2; ++c) uvs.push_back(static_cast<uint16_t>(65535.0f * p.uv[c]));
+  }
+  GltfBuilder q = plain;
+  json& attributes = q.doc["meshes"][0]["primitives"][0]["attributes"];
+  const auto add = [&](const void* data, size_t bytes, int componentType, bool normalized, const char* type,
+                       size_t stride) {
+    const int view = q.addView(data, bytes);
+    q.doc["bufferViews"][view]["byteStride"] = stride;
+    json accessor = {{"bufferView", view}, {"componentType", componentType}, {"count", 4}, {"type", type}};
+    if (normalized) accessor["normalized"] = true;
+    q.doc["accessors"].push_back(accessor);
+    return static_cast<int>(q.doc["accessors"].size()) - 1;
+  };
+  attributes["POSITION"] = add(positions.data(), positions.size() * 2, 5122, false, "VEC3", 8);
+  q.doc["accessors"][attributes["POSITION"].get<int>()]["min"] = {-1, -1, 0};
+  q.doc["accessors"][attributes["POSITION"].get<int>()]["max"] = {1, 1, 0};
+  attributes["NORMAL"] = add(normals.data(), normals.size(), 5120, true, "VEC3", 4);
+  attributes["TEXCOORD_0"] = add(uvs.data(), uvs.size() * 2, 5123, true, "VEC2", 4);
+  // Without the extension the integer positions are refused; with it they load.
+  const std::string undeclared = q.writeGltf(dir.path(), "undeclared");
+  const std::string message = errorOf([&] {
+    pbr::Scene s;
+    pbr::appendGltf(s, undeclared);
+  });
+  CHECK(contains(message, "meshes[0].primitives[0].attributes.POSITION: accessors["));
+  CHECK(contains(message, "has componentType SHORT, expected FLOAT"));
+  q.doc["extensionsUsed"] = q.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  pbr::Scene s;
+  pbr::appendGltf(s, q.writeGltf(dir.path(), "quantized"));
+  REQUIRE(s.meshes.size() == 1);
+  REQUIRE(s.meshes[0].vertices.size() == 4);
+  for (size_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    CHECK(s.meshes[0].vertices[i].position == v[i].position);
+    CHECK(glm::length(s.meshes[0].vertices[i].normal - v[i].normal) < 1e-6f);
+    CHECK(s.meshes[0].vertices[i].uv == v[i].uv);
+  }
+}
