@@ -138,6 +138,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   m.alphaCutoff = finite(file_, g.alphaCutoff, name + ".alphaCutoff");
   if (m.alphaCutoff < 0.0f) file_.fail(name + ".alphaCutoff: must be >= 0");
   m.doubleSided = g.doubleSided;
+  m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
   return m;
 }
 

@@ -187,4 +187,10 @@ bool hasBlendMaterial(const Scene& scene) {
                      [](const SceneObject& o) { return o.material.alphaMode == AlphaMode::Blend; });
 }
 
+bool hasUnlitSurface(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+    return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;
+  });
+}
+
 }  // namespace pbr

@@ -64,6 +64,8 @@ struct Material {
   glm::mat3x2 occlusionUvTransform{1.0f};
   glm::mat3x2 emissiveUvTransform{1.0f};
   bool doubleSided = false;  // drawn without back-face culling, the normal flipped on back faces
+  // KHR_materials_unlit: the base colour (with its alpha) is the surface's radiance, and no light is reflected.
+  bool unlit = false;
 };
 
 // Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.
@@ -175,6 +177,8 @@ struct Scene {
 
 // Whether any object's material has alphaMode BLEND (drawn by the transparency pass).
 bool hasBlendMaterial(const Scene& scene);
+// Whether an opaque or MASK object's material is unlit: the deferred pass then reads the G-buffer's unlit flag.
+bool hasUnlitSurface(const Scene& scene);
 
 class SceneError : public std::runtime_error {
  public:

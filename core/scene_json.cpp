@@ -143,6 +143,7 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   m.metalness = f["metalness"].number(R::closed(0.0, 1.0), m.metalness);
   m.emissive = f["emissive"].vec3OrNumber(R::atLeast(0.0), m.emissive);
   m.doubleSided = f["double_sided"].boolean(m.doubleSided);
+  m.unlit = f["unlit"].boolean(m.unlit);
   m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
   const JsonField mode = f["alpha_mode"];
   if (mode.present()) {

@@ -92,7 +92,8 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
           {"NORMAL_MAP", flag(m.normalTexture >= 0)},
           {"OCCLUSION_MAP", flag(m.occlusionTexture >= 0)},
           {"EMISSIVE_MAP", flag(m.emissiveTexture >= 0)},
-          {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)}};
+          {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)},
+          {"UNLIT", flag(m.unlit)}};
 }
 
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
@@ -163,6 +164,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) {
     return a.blended != b.blended ? b.blended : a.program < b.program;
   });
+  unlit_ = hasUnlitSurface(scene);
   opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
 }
 

@@ -29,6 +29,8 @@ class GBufferPass {
   size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views);
   // Whether the scene has BLEND objects, which the G-buffer leaves out and drawBlended draws.
   bool hasBlended() const { return opaqueDraws_ < draws_.size(); }
+  // Whether the G-buffer holds unlit surfaces (hasUnlitSurface), whose pixels the lighting pass leaves unlit.
+  bool hasUnlit() const { return unlit_; }
   // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
   // the program `program` makes from this pass's vertex shader and the object's permutation. `viewer` is the
   // camera's position, from which BackToFront orders them.
@@ -38,7 +40,7 @@ class GBufferPass {
   const WorldBounds& bounds() const { return bounds_; }
 
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
-  // OCCLUSION_MAP, EMISSIVE_MAP and ALPHA_MASK, each 0 or 1.
+  // OCCLUSION_MAP, EMISSIVE_MAP, ALPHA_MASK and UNLIT, each 0 or 1.
   static ShaderDefines permutation(const Material& material);
 
  private:
@@ -79,6 +81,7 @@ class GBufferPass {
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;  // the opaque and masked first, then the blended
   size_t opaqueDraws_ = 0;
+  bool unlit_ = false;
   std::vector<ShaderDefines> blendedPermutations_;
   GLsizeiptr blockStride_;
   Buffer objectBlocks_;

@@ -50,6 +50,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
+  defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
   if (o.shadows) {
     defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
     defines = concat(defines, shadowViewDefines());

@@ -81,6 +81,8 @@ struct LightingOptions {
   // Non-null (with shadows): the pass also sums each pixel's light from casting lights into this RG32F image of the
   // frame's size (luminance with, and without, its shadows), what the shadows debug view shows.
   const Texture* shadowLight = nullptr;
+  // The G-buffer holds unlit surfaces (hasUnlitSurface): pixels it flags so take no light.
+  bool unlitSurfaces = false;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops

@@ -110,10 +110,14 @@ void addDirectLight(const Scene& scene, const Hit& hit, const dvec3& V, const Re
 }
 
 // The radiance one surface that a camera ray meets sends back along it: ambient light through its albedo table
-// (empty without ambient light), then the lights, each that casts shadows counted in `shadows`.
+// (empty without ambient light), then the lights, each that casts shadows counted in `shadows`; an unlit surface's
+// base colour.
 dvec3 shade(const Scene& scene, const Hit& hit, const Ray& ray, const AlbedoTable& albedo, const BrdfForms& forms,
             ShadowRays& shadows) {
-  const ReferenceMaterial m = toReference(scene.objects[hit.object].material);
+  const Material& material = scene.objects[hit.object].material;
+  // KHR_materials_unlit: the base colour is the radiance; no light is reflected.
+  if (material.unlit) return dvec3(material.baseColor);
+  const ReferenceMaterial m = toReference(material);
   const dvec3 V = -ray.direction;
   const double NoV = std::max(glm::dot(hit.normal, V), 1e-4);
   dvec3 color(0.0);

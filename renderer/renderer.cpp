@@ -143,7 +143,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        efficiency ? &t.pairCounts() : nullptr,
                                                        shadows ? &shadowMaps : nullptr,
                                                        options.shadows.filter,
-                                                       shadowView ? &t.shadowLight() : nullptr};
+                                                       shadowView ? &t.shadowLight() : nullptr,
+                                                       scene_.geometry.hasUnlit()};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,

@@ -192,6 +192,11 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
         lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, false, true));
+        // With unlit surfaces in the G-buffer, in one dispatch and in light chunks.
+        options.unlitSurfaces = true;
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
+        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        options.unlitSurfaces = false;
         // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
         const pbr::EnvironmentMaps maps;
         options.environment = &maps;
@@ -231,7 +236,7 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}}, pbr::bindingDefines({pbr::kPostUbo}));
   const ShaderLibrary shaders;
   const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
-                                                 "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK"};
+                                                 "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK", "UNLIT"};
   // The list above must be every define the G-buffer pass chooses.
   std::vector<std::string> chosen;
   for (const pbr::ShaderDefine& d : pbr::GBufferPass::permutation(pbr::Material{})) chosen.push_back(d.name);

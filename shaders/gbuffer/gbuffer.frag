@@ -5,7 +5,7 @@
 
 layout(location = 0) out vec4 outBaseColor;  // SRGB8_ALPHA8: encoded on write
 layout(location = 1) out vec2 outNormal;     // RG16 octahedral
-layout(location = 2) out vec4 outMaterial;   // RGBA8 roughness, metalness, occlusion, unused
+layout(location = 2) out vec4 outMaterial;   // RGBA8 roughness, metalness, occlusion, 1 unlit
 layout(location = 3) out vec4 outEmission;   // the frame's RGBA16F radiance target, which lighting adds to
 
 void main() {
@@ -16,6 +16,13 @@ void main() {
 #endif
   outBaseColor = vec4(m.base.rgb, 1.0);
   outNormal = octEncode(m.normal);
+#if UNLIT
+  // KHR_materials_unlit: the base colour is the radiance, written where emission goes; the flag keeps the
+  // lighting pass from adding light to it (UNLIT_MATERIALS).
+  outMaterial = vec4(m.roughness, m.metalness, m.occlusion, 1.0);
+  outEmission = vec4(m.base.rgb, 0.0);
+#else
   outMaterial = vec4(m.roughness, m.metalness, m.occlusion, 0.0);
   outEmission = vec4(m.emitted, 0.0);
+#endif
 }

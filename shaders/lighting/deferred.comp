@@ -56,13 +56,19 @@ void main() {
 #if SHADOW_LIGHT_IMAGE
   gShadowLight = vec2(0.0);
 #endif
-#if LIGHT_CHUNKS
-  gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + shadeEnvironment(s) : imageLoad(partialRadiance, p).rgb;
+#if UNLIT_MATERIALS
+  bool lit = !s.unlit;
 #else
-  gColor = imageLoad(radiance, p).rgb + shadeEnvironment(s);
+  const bool lit = true;
+#endif
+  vec3 environment = lit ? shadeEnvironment(s) : vec3(0.0);
+#if LIGHT_CHUNKS
+  gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + environment : imageLoad(partialRadiance, p).rgb;
+#else
+  gColor = imageLoad(radiance, p).rgb + environment;
 #endif
   gContributing = 0u;
-  uint count = lightsToVisit(s, uvec2(p));
+  uint count = lit ? lightsToVisit(s, uvec2(p)) : 0u;
 #if LIGHT_CHUNKS
   uint begin = min(lightChunk.x, count), end = min(lightChunk.y, count);
 #else

@@ -44,8 +44,13 @@ void main() {
   bool first = true;
   uint begin = 0u, end = count;
 #endif
+#if UNLIT
+  // KHR_materials_unlit: the base colour is the radiance, with no light added.
+  gColor = first ? m.base.rgb : vec3(0.0);
+#else
   gColor = first ? m.emitted + shadeEnvironment(s) : vec3(0.0);
   visitLights(s, begin, end);
+#endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
   float alpha = clamp(m.base.a, 0.0, 1.0);

@@ -4,7 +4,8 @@
 
 layout(binding = SURFACE_BASE_COLOR_UNIT) uniform sampler2D gBaseColor;  // SRGB8_ALPHA8, linear when fetched
 layout(binding = SURFACE_NORMAL_UNIT) uniform sampler2D gNormal;         // RG16 octahedral
-layout(binding = SURFACE_MATERIAL_UNIT) uniform sampler2D gMaterial;     // RGBA8 roughness, metalness, occlusion
+layout(binding = SURFACE_MATERIAL_UNIT) uniform sampler2D gMaterial;     // RGBA8 roughness, metalness, occlusion,
+                                                                         // 1 unlit
 layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;           // 32F reversed-Z
 
 // False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
@@ -13,9 +14,12 @@ bool readSurface(ivec2 p, out Surface s) {
   if (depth <= 0.0) return false;
   placeSurface(viewPositionAt(vec2(p), depth), octDecode(texelFetch(gNormal, p, 0).xy), s);
   s.baseColor = texelFetch(gBaseColor, p, 0).rgb;
-  vec3 m = texelFetch(gMaterial, p, 0).xyz;
+  vec4 m = texelFetch(gMaterial, p, 0);
   s.roughness = m.x;
   s.metalness = m.y;
   s.occlusion = m.z;
+#if UNLIT_MATERIALS
+  s.unlit = m.w > 0.5;
+#endif
   return true;
 }

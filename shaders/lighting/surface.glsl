@@ -12,6 +12,9 @@ struct Surface {
   vec3 baseColor;
   float metalness;
   float occlusion;    // of the ambient term only: point lights are direct light
+#if UNLIT_MATERIALS
+  bool unlit;         // KHR_materials_unlit: its radiance is in the radiance target already, no light is added
+#endif
 };
 
 // The view-space point at pixel p (integer coordinates of its lower-left corner) with reversed-Z depth `depth`.
