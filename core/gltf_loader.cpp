@@ -207,10 +207,6 @@ class Loader {
       file_.warn("animations: " + counted(m.animations.size(), "animation") +
                  " not played: the nodes are drawn as the file places them");
     }
-    if (!coloredPrimitives_.empty()) {
-      file_.warn(coloredPrimitives_.front() + ".attributes.COLOR_0: vertex colours are not drawn (" +
-                 counted(coloredPrimitives_.size(), "primitive") + "): the base colour alone is used");
-    }
     const int drawn = m.defaultScene >= 0 ? m.defaultScene : 0;
     if (m.scenes.size() > 1) {
       file_.warn("scenes: the file has " + std::to_string(m.scenes.size()) + " scenes; scene " +
@@ -339,8 +335,9 @@ class Loader {
     if (prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
         prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
       if (!prim.targets.empty()) morphedMeshes_.push_back(field);
-      if (prim.attributes.count("COLOR_0")) coloredPrimitives_.push_back(field);
-      MeshData mesh = readPrimitive(prim, field);
+      // A primitive has one material: the second UV set is read only where one of its maps reads it.
+      const bool uv1 = readsTexCoord1(materials_.get(prim.material, field + ".material"));
+      MeshData mesh = readPrimitive(prim, field, uv1);
       if (!mesh.indices.empty()) {
         scene_.meshes.push_back(std::move(mesh));
         result = static_cast<int>(scene_.meshes.size()) - 1;
@@ -352,7 +349,7 @@ class Loader {
     return result;
   }
 
-  MeshData readPrimitive(const tinygltf::Primitive& prim, const std::string& field) const {
+  MeshData readPrimitive(const tinygltf::Primitive& prim, const std::string& field, bool readUv1) const {
     const auto attribute = [&](const char* name) {
       const auto it = prim.attributes.find(name);
       return it == prim.attributes.end() ? -1 : it->second;
@@ -398,6 +395,22 @@ class Loader {
     const std::vector<float> uvs =
         attribute("TEXCOORD_0") >= 0 ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2, quantized ? anyPosition : coreUv, count)
                                      : std::vector<float>();
+    if (readUv1 && attribute("TEXCOORD_1") < 0) {
+      file_.warn(field + ".attributes: its material reads TEXCOORD_1, which the primitive lacks: TEXCOORD_0 is used");
+    }
+    const std::vector<float> uv1 =
+        readUv1 && attribute("TEXCOORD_1") >= 0
+            ? read("TEXCOORD_1", TINYGLTF_TYPE_VEC2, quantized ? anyPosition : coreUv, count)
+            : std::vector<float>();
+    // COLOR_0: RGB or RGBA, float or normalized unsigned integers (alpha 1 for RGB).
+    const int colorAccessor = attribute("COLOR_0");
+    const auto& accessors = file_.model.accessors;
+    const int colorType = colorAccessor >= 0 && static_cast<size_t>(colorAccessor) < accessors.size() &&
+                                  accessors[static_cast<size_t>(colorAccessor)].type == TINYGLTF_TYPE_VEC3
+                              ? TINYGLTF_TYPE_VEC3
+                              : TINYGLTF_TYPE_VEC4;
+    const std::vector<float> colors =
+        colorAccessor >= 0 ? read("COLOR_0", colorType, {kFloat, kUbyte, kUshort}, count) : std::vector<float>();
 
     MeshData mesh;
     mesh.vertices.resize(count);
@@ -409,6 +422,23 @@ class Loader {
       v.tangent = hasTangents ? glm::vec4(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2],
                                           tangents[4 * i + 3] < 0.0f ? -1.0f : 1.0f)
                               : glm::vec4(0.0f);
+    }
+    if (!uv1.empty()) {
+      mesh.uv1.resize(count);
+      for (size_t i = 0; i < count; ++i) mesh.uv1[i] = glm::vec2(uv1[2 * i], uv1[2 * i + 1]);
+    }
+    if (!colors.empty()) {
+      // Colours are factors in [0, 1]; a float outside is clamped, so that no surface reflects more than it
+      // receives or less than nothing.
+      bool clamped = false;
+      mesh.colors.resize(count);
+      for (size_t i = 0; i < count; ++i) {
+        glm::vec4 c(1.0f);
+        for (int k = 0; k < colorType; ++k) c[k] = colors[static_cast<size_t>(colorType) * i + static_cast<size_t>(k)];
+        mesh.colors[i] = glm::clamp(c, 0.0f, 1.0f);
+        clamped = clamped || mesh.colors[i] != c;
+      }
+      if (clamped) file_.warn(field + ".attributes.COLOR_0: values outside [0, 1] clamped");
     }
     std::vector<uint32_t> indices;
     if (prim.indices >= 0) {
@@ -515,7 +545,7 @@ class Loader {
   GltfMaterials materials_;
   std::vector<std::pair<Camera, bool>> cameras_;  // and whether the file left its far plane out
   // Where the scene uses what is not drawn, by field name, in the order met.
-  std::vector<std::string> skinnedNodes_, morphedMeshes_, coloredPrimitives_;
+  std::vector<std::string> skinnedNodes_, morphedMeshes_;
   Bounds bounds_;
   bool empty_ = true;
 };

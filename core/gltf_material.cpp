@@ -97,27 +97,31 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   m.metalness = unitFactor(file_, pbr.metallicFactor, name + ".pbrMetallicRoughness.metallicFactor");
   m.roughness = unitFactor(file_, pbr.roughnessFactor, name + ".pbrMetallicRoughness.roughnessFactor");
   // A textureInfo's texture, and its KHR_texture_transform into `uv`.
-  const auto map = [&](const auto& info, bool srgb, const std::string& where, glm::mat3x2& uv) {
+  // A textureInfo's texture, its KHR_texture_transform into `uv` and its UV set into `set`.
+  const auto map = [&](const auto& info, bool srgb, const std::string& where, glm::mat3x2& uv, int& set) {
     if (info.index < 0) return -1;
     const UvTransform t = textureTransform(file_, info.extensions, where);
-    const int texCoord = t.texCoord.value_or(info.texCoord);
-    if (texCoord != 0) {
+    set = t.texCoord.value_or(info.texCoord);
+    if (set > 1) {
       file_.warn((t.texCoord ? where + ".extensions.KHR_texture_transform" : where) + ": texCoord " +
-                 std::to_string(texCoord) + " is not supported, TEXCOORD_0 is used");
+                 std::to_string(set) + " is not drawn (TEXCOORD_0 and TEXCOORD_1 are), TEXCOORD_0 is used");
+      set = 0;
     }
     uv = t.matrix;
     return texture(info.index, srgb, where);
   };
   m.baseColorTexture = map(pbr.baseColorTexture, true, name + ".pbrMetallicRoughness.baseColorTexture",
-                           m.baseColorUvTransform);
+                           m.baseColorUvTransform, m.baseColorTexCoord);
   m.metallicRoughnessTexture = map(pbr.metallicRoughnessTexture, false,
                                    name + ".pbrMetallicRoughness.metallicRoughnessTexture",
-                                   m.metallicRoughnessUvTransform);
-  m.normalTexture = map(g.normalTexture, false, name + ".normalTexture", m.normalUvTransform);
+                                   m.metallicRoughnessUvTransform, m.metallicRoughnessTexCoord);
+  m.normalTexture = map(g.normalTexture, false, name + ".normalTexture", m.normalUvTransform, m.normalTexCoord);
   m.normalScale = finite(file_, g.normalTexture.scale, name + ".normalTexture.scale");
-  m.occlusionTexture = map(g.occlusionTexture, false, name + ".occlusionTexture", m.occlusionUvTransform);
+  m.occlusionTexture =
+      map(g.occlusionTexture, false, name + ".occlusionTexture", m.occlusionUvTransform, m.occlusionTexCoord);
   m.occlusionStrength = unitFactor(file_, g.occlusionTexture.strength, name + ".occlusionTexture.strength");
-  m.emissiveTexture = map(g.emissiveTexture, true, name + ".emissiveTexture", m.emissiveUvTransform);
+  m.emissiveTexture =
+      map(g.emissiveTexture, true, name + ".emissiveTexture", m.emissiveUvTransform, m.emissiveTexCoord);
   m.emissive = colorFactor(file_, g.emissiveFactor, 3, name + ".emissiveFactor");
   const auto strength = g.extensions.find("KHR_materials_emissive_strength");
   if (strength != g.extensions.end() && strength->second.Has("emissiveStrength")) {

@@ -33,6 +33,24 @@ GpuMesh::GpuMesh(const MeshData& data, const std::string& label)
     glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
     glVertexArrayAttribBinding(vao, a.location, 0);
   }
+  // The optional streams, one binding each, where the mesh has them.
+  if (!data.colors.empty()) {
+    colors_.emplace(label + ".colors", data.colors.size() * sizeof(glm::vec4), data.colors.data(), 0);
+  }
+  if (!data.uv1.empty()) uv1_.emplace(label + ".uv1", data.uv1.size() * sizeof(glm::vec2), data.uv1.data(), 0);
+  const struct {
+    const std::optional<Buffer>& buffer;
+    GLuint location;
+    GLint components;
+  } streams[] = {{colors_, 4, 4}, {uv1_, 5, 2}};
+  for (const auto& s : streams) {
+    if (!s.buffer) continue;
+    const GLuint binding = s.location - 3;  // 1 and 2, after the interleaved vertices' 0
+    glVertexArrayVertexBuffer(vao, binding, s.buffer->id(), 0, static_cast<GLsizei>(s.components * sizeof(float)));
+    glEnableVertexArrayAttrib(vao, s.location);
+    glVertexArrayAttribFormat(vao, s.location, s.components, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, s.location, binding);
+  }
 }
 
 void GpuMesh::draw() const {

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "core/gl_objects.hpp"
@@ -7,7 +8,9 @@
 
 namespace pbr {
 
-// A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv, 3 tangent) and 32-bit indices.
+// A mesh uploaded once: interleaved Vertex buffer (locations 0 position, 1 normal, 2 uv, 3 tangent) and 32-bit
+// indices, and the optional streams where the mesh has them, each a buffer of its own: colours at location 4 and
+// the second UV set at location 5 (the G-buffer's VERTEX_COLORS and UV1 permutations read them).
 // Meshes uploaded by this process so far: how tests check that a resize uploads no scene data again.
 size_t gpuMeshUploads();
 
@@ -20,6 +23,8 @@ class GpuMesh {
  private:
   Buffer vertices_;
   Buffer indices_;
+  std::optional<Buffer> colors_;  // none without colours
+  std::optional<Buffer> uv1_;     // none without a second UV set
   VertexArray vao_;
   GLsizei indexCount_;
 };

@@ -18,6 +18,11 @@ struct Vertex {
 struct MeshData {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;  // triangle list, counter-clockwise front faces
+  // Optional vertex streams, one element per vertex where present, empty where the mesh has none (and then
+  // neither uploaded nor read by the shaders): glTF's COLOR_0 (linear RGBA, multiplying the base colour and its
+  // alpha) and TEXCOORD_1 (the second UV set, for maps whose texCoord is 1).
+  std::vector<glm::vec4> colors;
+  std::vector<glm::vec2> uv1;
 };
 
 // Each shape fits the unit cube centred at the origin.

@@ -31,11 +31,14 @@ void makeFlatNormals(MeshData& mesh) {
     const glm::vec3 face = glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
     // A degenerate triangle covers no pixel; any unit normal keeps the shading finite.
     const glm::vec3 n = usable(face) ? glm::normalize(face) : glm::vec3(0, 1, 0);
-    for (const Vertex* src : v) {
-      Vertex out = *src;
+    for (size_t k = 0; k < 3; ++k) {
+      Vertex out = *v[k];
       out.normal = n;
       flat.indices.push_back(static_cast<uint32_t>(flat.vertices.size()));
       flat.vertices.push_back(out);
+      const uint32_t source = mesh.indices[i + k];
+      if (!mesh.colors.empty()) flat.colors.push_back(mesh.colors[source]);
+      if (!mesh.uv1.empty()) flat.uv1.push_back(mesh.uv1[source]);
     }
   }
   mesh = std::move(flat);

@@ -187,6 +187,13 @@ bool hasBlendMaterial(const Scene& scene) {
                      [](const SceneObject& o) { return o.material.alphaMode == AlphaMode::Blend; });
 }
 
+bool readsTexCoord1(const Material& m) {
+  return (m.baseColorTexture >= 0 && m.baseColorTexCoord == 1) ||
+         (m.metallicRoughnessTexture >= 0 && m.metallicRoughnessTexCoord == 1) ||
+         (m.normalTexture >= 0 && m.normalTexCoord == 1) || (m.occlusionTexture >= 0 && m.occlusionTexCoord == 1) ||
+         (m.emissiveTexture >= 0 && m.emissiveTexCoord == 1);
+}
+
 bool hasUnlitSurface(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
     return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;

@@ -63,6 +63,12 @@ struct Material {
   glm::mat3x2 normalUvTransform{1.0f};
   glm::mat3x2 occlusionUvTransform{1.0f};
   glm::mat3x2 emissiveUvTransform{1.0f};
+  // Each map's UV set (glTF texCoord): 0 TEXCOORD_0, 1 TEXCOORD_1 (MeshData::uv1).
+  int baseColorTexCoord = 0;
+  int metallicRoughnessTexCoord = 0;
+  int normalTexCoord = 0;
+  int occlusionTexCoord = 0;
+  int emissiveTexCoord = 0;
   bool doubleSided = false;  // drawn without back-face culling, the normal flipped on back faces
   // KHR_materials_unlit: the base colour (with its alpha) is the surface's radiance, and no light is reflected.
   bool unlit = false;
@@ -179,6 +185,8 @@ struct Scene {
 bool hasBlendMaterial(const Scene& scene);
 // Whether an opaque or MASK object's material is unlit: the deferred pass then reads the G-buffer's unlit flag.
 bool hasUnlitSurface(const Scene& scene);
+// Whether a map of `material` reads the second UV set (TEXCOORD_1).
+bool readsTexCoord1(const Material& material);
 
 class SceneError : public std::runtime_error {
  public:

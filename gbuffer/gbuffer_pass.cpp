@@ -45,8 +45,17 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     b.material = glm::vec4(m.roughness, m.metalness, m.normalScale, m.occlusionStrength);
     // A BLEND material casts a cut-out shadow at kBlendShadowCutoff (the depth permutation's ALPHA_MASK).
     b.emissive = glm::vec4(m.emissive, m.alphaMode == AlphaMode::Blend ? kBlendShadowCutoff : m.alphaCutoff);
-    b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, 0.0f, 0.0f, 0.0f);
     using namespace gbuffer_binding;
+    // The maps that read TEXCOORD_1, a bit per texture unit (read by the UV1 permutation only).
+    const std::pair<size_t, bool> secondSet[] = {
+        {kBaseColorMapUnit.index, m.baseColorTexCoord == 1},
+        {kMetallicRoughnessMapUnit.index, m.metallicRoughnessTexCoord == 1},
+        {kNormalMapUnit.index, m.normalTexCoord == 1},
+        {kOcclusionMapUnit.index, m.occlusionTexCoord == 1},
+        {kEmissiveMapUnit.index, m.emissiveTexCoord == 1}};
+    unsigned uv1Maps = 0;
+    for (const auto& [unit, second] : secondSet) uv1Maps |= second ? 1u << unit : 0u;
+    b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, static_cast<float>(uv1Maps), 0.0f, 0.0f);
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
     b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
     b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
@@ -57,13 +66,18 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
   return bytes;
 }
 
-// The defines of the depth permutation a caster draws with (shaders/gbuffer/shadow_depth.*): ALPHA_MASK for an
-// alpha-masked material, and BASE_COLOR_MAP where its alpha comes from a texture.
 // The shadow casters' coarser spheres: segments around (half as many rings), coarsest first.
 constexpr std::array<int, 3> kSphereLodSegments = {8, 16, 32};
 
-ShaderDefines depthPermutation(bool masked, bool maskTexture) {
-  return concat({{"ALPHA_MASK", masked ? "1" : "0"}, {"BASE_COLOR_MAP", maskTexture ? "1" : "0"}},
+// The defines of the depth permutation a caster draws with (shaders/gbuffer/shadow_depth.*): ALPHA_MASK for an
+// alpha-masked material, BASE_COLOR_MAP where its alpha comes from a texture (read through TEXCOORD_1 with UV1),
+// VERTEX_COLORS where the vertex colours' alpha multiplies it.
+ShaderDefines depthPermutation(bool masked, bool maskTexture, bool vertexColors, bool uv1) {
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  return concat({{"ALPHA_MASK", flag(masked)},
+                 {"BASE_COLOR_MAP", flag(maskTexture)},
+                 {"VERTEX_COLORS", flag(vertexColors)},
+                 {"UV1", flag(uv1)}},
                 gbufferBindingDefines());
 }
 
@@ -83,6 +97,11 @@ std::array<int, GBufferPass::kMapCount> GBufferPass::materialMaps(const Material
   maps[kOcclusionMapUnit.index] = m.occlusionTexture;
   maps[kEmissiveMapUnit.index] = m.emissiveTexture;
   return maps;
+}
+
+ShaderDefines GBufferPass::streamPermutation(const MeshData& mesh) {
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  return {{"VERTEX_COLORS", flag(!mesh.colors.empty())}, {"UV1", flag(!mesh.uv1.empty())}};
 }
 
 ShaderDefines GBufferPass::permutation(const Material& m) {
@@ -109,7 +128,8 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   std::map<std::string, size_t> programIndex, blendedIndex;  // by the permutation's define list
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    const ShaderDefines defines = permutation(o.material);
+    const MeshData& mesh = scene.meshes.at(static_cast<size_t>(o.mesh));
+    const ShaderDefines defines = concat(permutation(o.material), streamPermutation(mesh));
     std::string key;
     for (const ShaderDefine& d : defines) key += d.value;
     Draw d{};
@@ -138,6 +158,8 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
     d.castsCutOut = o.material.alphaMode == AlphaMode::Mask || d.blended;
     d.cutOutTexture = d.castsCutOut && o.material.baseColorTexture >= 0;
+    d.cutOutColors = d.castsCutOut && !mesh.colors.empty();
+    d.cutOutUv1 = d.cutOutTexture && !mesh.uv1.empty();
     d.triangles = scene.meshes.at(static_cast<size_t>(o.mesh)).indices.size() / 3;
     if (o.shape == Shape::Sphere) {
       const glm::mat3 m(o.transform);
@@ -304,7 +326,8 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
   if (depthPrograms_.empty()) {
     for (const Draw& d : draws_) {
       const Program* p = &cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
-                                          depthPermutation(d.castsCutOut, d.cutOutTexture));
+                                          depthPermutation(d.castsCutOut, d.cutOutTexture, d.cutOutColors,
+                                                           d.cutOutUv1));
       depthPrograms_.push_back(p);
       if (std::find(distinctDepthPrograms_.begin(), distinctDepthPrograms_.end(), p) == distinctDepthPrograms_.end()) {
         distinctDepthPrograms_.push_back(p);

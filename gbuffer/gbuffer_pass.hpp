@@ -42,6 +42,9 @@ class GBufferPass {
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
   // OCCLUSION_MAP, EMISSIVE_MAP, ALPHA_MASK and UNLIT, each 0 or 1.
   static ShaderDefines permutation(const Material& material);
+  // The defines of the optional vertex streams a mesh has (MeshData::colors, uv1): VERTEX_COLORS and UV1, each 0
+  // or 1, added to its objects' permutations.
+  static ShaderDefines streamPermutation(const MeshData& mesh);
 
  private:
   static constexpr size_t kMapCount = 5;
@@ -58,6 +61,8 @@ class GBufferPass {
     WorldBounds bounds;
     bool castsCutOut;    // alpha-masked: discards below its cut-off in the shadow maps too
     bool cutOutTexture;  // its alpha comes from the base colour map
+    bool cutOutColors;   // and from its vertex colours
+    bool cutOutUv1;      // the base colour map's UVs may be the second set
     // An analytic sphere (Shape::Sphere): its centre and world radius (its largest axis), from which the shadow
     // views pick a coarser tessellation; radius 0 for every other shape.
     glm::vec3 sphereCentre;

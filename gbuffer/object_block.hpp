@@ -14,7 +14,8 @@ struct ObjectBlock {
   glm::vec4 baseColor;     // linear rgb factor, alpha factor
   glm::vec4 material;      // roughness, metalness, normal scale, occlusion strength
   glm::vec4 emissive;      // linear emitted radiance factor, alpha cutoff
-  glm::vec4 orientation;   // x: sign of det(model), which mirrors the tangent frame; yzw unused
+  glm::vec4 orientation;   // x: sign of det(model), which mirrors the tangent frame; y: the maps reading
+                           // TEXCOORD_1, a bit per texture unit (a small integer, exact in float); zw unused
   // Each material map's UV transform by texture unit: the GLSL mat2x3 whose two columns, each padded to a vec4 by
   // std140, are the rows of the 2x3 affine map (Material::*UvTransform transposed).
   glm::mat2x4 uvTransform[5];

@@ -247,4 +247,26 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
     CHECK_NOTHROW(
         shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag", pbr::concat(defines, pbr::gbufferBindingDefines())));
   }
+  // The optional vertex streams (GBufferPass::streamPermutation) with no map and with every map.
+  const std::vector<std::string> streamFlags = {"VERTEX_COLORS", "UV1"};
+  std::vector<std::string> streamsChosen;
+  for (const pbr::ShaderDefine& d : pbr::GBufferPass::streamPermutation(pbr::MeshData{})) streamsChosen.push_back(d.name);
+  CHECK(streamsChosen == streamFlags);
+  for (const ShaderDefines& streams : flagCombinations(streamFlags)) {
+    for (const char* maps : {"0", "1"}) {
+      ShaderDefines defines = streams;
+      for (const std::string& flag : gbufferFlags) defines.push_back({flag, maps});
+      const std::string described = describeDefines(defines);
+      CAPTURE(described);
+      CHECK_NOTHROW(shaders.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag",
+                                     pbr::concat(defines, pbr::gbufferBindingDefines())));
+    }
+  }
+  // The shadow casters' depth permutations (GBufferPass::renderDepth).
+  for (const ShaderDefines& defines : flagCombinations({"ALPHA_MASK", "BASE_COLOR_MAP", "VERTEX_COLORS", "UV1"})) {
+    const std::string described = describeDefines(defines);
+    CAPTURE(described);
+    CHECK_NOTHROW(shaders.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
+                                   pbr::concat(defines, pbr::gbufferBindingDefines())));
+  }
 }

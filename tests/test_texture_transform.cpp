@@ -102,7 +102,7 @@ TEST_CASE("texture transform: each map's KHR_texture_transform becomes its UV ma
   CHECK(m.emissiveTexture >= 0);
 }
 
-TEST_CASE("texture transform: its texCoord replaces the textureInfo's, and one other than 0 is warned about") {
+TEST_CASE("texture transform: its texCoord replaces the textureInfo's, and one past 1 is warned about") {
   const TempDir dir;
   // The fallback the specification suggests: set 1 without the extension, set 0 with it.
   const json fallback = {{"index", 0},
@@ -110,12 +110,18 @@ TEST_CASE("texture transform: its texCoord replaces the textureInfo's, and one o
                          {"extensions", {{"KHR_texture_transform", {{"texCoord", 0}, {"scale", {2, 2}}}}}}};
   const std::string path = materialFile(
       dir, "texcoord", {{"pbrMetallicRoughness", {{"baseColorTexture", fallback}}},
-                        {"emissiveTexture", transformed({{"texCoord", 1}, {"offset", {0.5, 0}}})}});
+                        {"emissiveTexture", transformed({{"texCoord", 1}, {"offset", {0.5, 0}}})},
+                        {"occlusionTexture", transformed({{"texCoord", 2}})}});
   const CapturedStderr captured;
   const pbr::Material m = loadMaterial(path);
   CHECK(captured.text() == path +
-                               ": materials[0].emissiveTexture.extensions.KHR_texture_transform: texCoord 1 is not "
-                               "supported, TEXCOORD_0 is used\n");
+                               ": materials[0].occlusionTexture.extensions.KHR_texture_transform: texCoord 2 is not "
+                               "drawn (TEXCOORD_0 and TEXCOORD_1 are), TEXCOORD_0 is used\n" + path +
+                               ": meshes[0].primitives[0].attributes: its material reads TEXCOORD_1, which the "
+                               "primitive lacks: TEXCOORD_0 is used\n");
+  CHECK(m.baseColorTexCoord == 0);
+  CHECK(m.emissiveTexCoord == 1);
+  CHECK(m.occlusionTexCoord == 0);
   checkMaps(m.baseColorUvTransform, specImages({0, 0}, 0.0, {2, 2}));
   checkMaps(m.emissiveUvTransform, specImages({0.5, 0}, 0.0, {1, 1}));
 }

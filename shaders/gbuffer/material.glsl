@@ -8,6 +8,12 @@ layout(location = 1) in vec2 vUv;
 #if NORMAL_MAP
 layout(location = 2) in vec4 vTangent;
 #endif
+#if UV1
+layout(location = 3) in vec2 vUv1;
+#endif
+#if VERTEX_COLORS
+layout(location = 4) in vec4 vColor;
+#endif
 
 #if BASE_COLOR_MAP
 layout(binding = BASE_COLOR_MAP_UNIT) uniform sampler2D baseColorMap;  // SRGB8_ALPHA8
@@ -25,8 +31,16 @@ layout(binding = OCCLUSION_MAP_UNIT) uniform sampler2D occlusionMap;  // R
 layout(binding = EMISSIVE_MAP_UNIT) uniform sampler2D emissiveMap;  // SRGB8_ALPHA8
 #endif
 
-// A map's texture coordinates after its KHR_texture_transform: (u, v, 1) times the rows of the affine map.
-vec2 mapUv(int unit) { return vec3(vUv, 1.0) * object.uvTransform[unit]; }
+// A map's texture coordinates after its KHR_texture_transform: (u, v, 1) times the rows of the affine map. With
+// UV1, the maps whose bit is set in object.orientation.y read the second UV set.
+vec2 mapUv(int unit) {
+#if UV1
+  vec2 uv = ((uint(object.orientation.y) >> uint(unit)) & 1u) != 0u ? vUv1 : vUv;
+#else
+  vec2 uv = vUv;
+#endif
+  return vec3(uv, 1.0) * object.uvTransform[unit];
+}
 
 struct MaterialSample {
   vec4 base;        // linear base colour and alpha
@@ -40,6 +54,9 @@ struct MaterialSample {
 MaterialSample sampleMaterial() {
   MaterialSample m;
   m.base = object.baseColor;
+#if VERTEX_COLORS
+  m.base *= vColor;  // glTF: COLOR_0 multiplies the base colour and its alpha
+#endif
 #if BASE_COLOR_MAP
   m.base *= texture(baseColorMap, mapUv(BASE_COLOR_MAP_UNIT));
 #endif

@@ -4,6 +4,9 @@
 
 #if ALPHA_MASK
 layout(location = 1) in vec2 vUv;
+#if VERTEX_COLORS
+layout(location = 2) in float vAlpha;
+#endif
 #if BASE_COLOR_MAP
 layout(binding = BASE_COLOR_MAP_UNIT) uniform sampler2D baseColorMap;
 #endif
@@ -12,6 +15,9 @@ layout(binding = BASE_COLOR_MAP_UNIT) uniform sampler2D baseColorMap;
 void main() {
 #if ALPHA_MASK
   float alpha = object.baseColor.a;
+#if VERTEX_COLORS
+  alpha *= vAlpha;
+#endif
 #if BASE_COLOR_MAP
   alpha *= texture(baseColorMap, vec3(vUv, 1.0) * object.uvTransform[BASE_COLOR_MAP_UNIT]).a;
 #endif
