@@ -164,7 +164,15 @@ class Loader {
       const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
       const glm::mat4 world = parent * localTransform(file_, node, name);
       checkWorld(world, node, name);
-      if (node.mesh >= 0) addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
+      const auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
+      if (node.mesh >= 0 && instancing != node.extensions.end()) {
+        const std::string field = name + ".extensions.EXT_mesh_gpu_instancing";
+        for (const glm::mat4& instance : instances(instancing->second, field)) {
+          addMesh(node.mesh, world * instance, name + ".mesh", field);
+        }
+      } else if (node.mesh >= 0) {
+        addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
+      }
       if (node.mesh >= 0 && node.skin >= 0) skinnedNodes_.push_back(name);
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
@@ -222,6 +230,50 @@ class Loader {
       farthest = std::max(farthest, glm::length(p - from));
     }
     return farthest;
+  }
+
+  // EXT_mesh_gpu_instancing: one local transform per instance, translation x rotation x scale, each attribute
+  // optional and all of one count; the node's world transform applies after it. An instance scaled to nothing
+  // (a way to hide one) draws nothing.
+  std::vector<glm::mat4> instances(const tinygltf::Value& extension, const std::string& field) const {
+    const tinygltf::Value& attributes = extension.Get("attributes");
+    if (!attributes.IsObject()) file_.fail(field + ".attributes: must be an object");
+    const auto read = [&](const char* name, int type, std::initializer_list<int> componentTypes) {
+      const tinygltf::Value& index = attributes.Get(name);
+      if (!attributes.Has(name)) return std::vector<float>();
+      if (!index.IsInt()) file_.fail(field + ".attributes." + name + ": must be an accessor index");
+      const std::string where = field + ".attributes." + name;
+      std::vector<float> values = readFloatAccessor(file_, index.GetNumberAsInt(), type, componentTypes, where);
+      requireFinite(file_, values, where);
+      return values;
+    };
+    const std::vector<float> t = read("TRANSLATION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    const std::vector<float> r =
+        read("ROTATION", TINYGLTF_TYPE_VEC4,
+             {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+    const std::vector<float> s = read("SCALE", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    const size_t count = !t.empty() ? t.size() / 3 : !r.empty() ? r.size() / 4 : s.size() / 3;
+    if (t.empty() && r.empty() && s.empty()) file_.fail(field + ".attributes: has no TRANSLATION, ROTATION or SCALE");
+    if ((!t.empty() && t.size() / 3 != count) || (!r.empty() && r.size() / 4 != count) ||
+        (!s.empty() && s.size() / 3 != count)) {
+      file_.fail(field + ".attributes: TRANSLATION, ROTATION and SCALE must have as many elements as each other");
+    }
+    std::vector<glm::mat4> out;
+    out.reserve(count);
+    for (size_t i = 0; i < count; ++i) {
+      glm::mat4 m(1.0f);
+      if (!t.empty()) m = glm::translate(m, glm::vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]));
+      if (!r.empty()) {
+        const glm::quat q(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2]);
+        if (!(glm::length(q) > 1e-6f)) file_.fail(field + ".attributes.ROTATION: element " + std::to_string(i) +
+                                                  " is not a unit quaternion");
+        m *= glm::mat4_cast(glm::normalize(q));
+      }
+      if (!s.empty()) m = glm::scale(m, glm::vec3(s[3 * i], s[3 * i + 1], s[3 * i + 2]));
+      if (std::fabs(determinant3(m)) < kMinDeterminant) continue;
+      out.push_back(m);
+    }
+    return out;
   }
 
   // A perspective camera looks down its node's -Z with +Y up; the frame's own aspect ratio replaces the file's.

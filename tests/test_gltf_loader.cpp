@@ -708,3 +708,43 @@ TEST_CASE("gltf KHR_mesh_quantization: integer positions, normals and UVs load a
     CHECK(s.meshes[0].vertices[i].uv == v[i].uv);
   }
 }
+
+TEST_CASE("gltf EXT_mesh_gpu_instancing: every instance drawn, placed by its TRS after the node's transform") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  const float s = std::sqrt(0.5f);
+  // Four instances: moved, turned a quarter about +Z, scaled by 2, and one scaled to nothing (hidden).
+  const std::vector<float> translations = {0, 0, 0, 2, 0, 0, 0, 3, 0, 5, 5, 5};
+  const std::vector<float> rotations = {0, 0, 0, 1, 0, 0, s, s, 0, 0, 0, 1, 0, 0, 0, 1};
+  const std::vector<float> scales = {1, 1, 1, 1, 1, 1, 2, 2, 2, 0, 0, 0};
+  const json attributes = {{"TRANSLATION", b.addFloats(translations, "VEC3")},
+                           {"ROTATION", b.addFloats(rotations, "VEC4")},
+                           {"SCALE", b.addFloats(scales, "VEC3")}};
+  b.doc["nodes"][0]["translation"] = {10.0, 0.0, 0.0};
+  b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = attributes;
+  b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  pbr::Scene scene;
+  pbr::appendGltf(scene, b.writeGltf(dir.path(), "instanced"));
+  REQUIRE(scene.objects.size() == 3);
+  const glm::mat4 node = glm::translate(glm::mat4(1.0f), {10.0f, 0.0f, 0.0f});
+  const glm::mat4 expected[] = {
+      node, node * glm::translate(glm::mat4(1.0f), {2.0f, 0.0f, 0.0f}) *
+                glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), {0.0f, 0.0f, 1.0f}),
+      node * glm::translate(glm::mat4(1.0f), {0.0f, 3.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))};
+  for (size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) CHECK(scene.objects[i].transform[c][r] == doctest::Approx(expected[i][c][r]));
+    }
+    CHECK(scene.objects[i].mesh == scene.objects[0].mesh);  // one mesh, drawn three times
+  }
+  // Attributes of different counts are refused, naming the extension.
+  b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] =
+      b.addFloats({1, 1, 1, 1, 1, 1}, "VEC3");
+  const std::string path = b.writeGltf(dir.path(), "mismatched");
+  CHECK(errorOf([&] {
+          pbr::Scene s2;
+          pbr::appendGltf(s2, path);
+        }) == path + ": nodes[0].extensions.EXT_mesh_gpu_instancing.attributes: TRANSLATION, ROTATION and SCALE "
+                     "must have as many elements as each other");
+}
