@@ -76,6 +76,8 @@ const std::vector<OptionSpec>& accuracyOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      animationOption(),
+      timeOption(),
   };
   return specs;
 }

@@ -76,6 +76,8 @@ const std::vector<OptionSpec>& benchOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      animationOption(),
+      timeOption(),
   };
   return specs;
 }

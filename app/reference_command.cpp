@@ -42,6 +42,8 @@ const std::vector<OptionSpec>& referenceOptions() {
        toString(referenceDefaults.forms)},
       allowOutsideUrisOption(),
       strictOption(),
+      animationOption(),
+      timeOption(),
   };
   return specs;
 }

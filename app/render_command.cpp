@@ -81,6 +81,8 @@ const std::vector<OptionSpec>& renderOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      animationOption(),
+      timeOption(),
   };
   return specs;
 }

@@ -19,6 +19,19 @@ OptionSpec strictOption() {
                           "instead of warning about it"};
 }
 
+OptionSpec animationOption() {
+  return {"--animation", "NAME|INDEX",
+          "pose glTF models by this animation (its name, or its index from 0), at --time", "",
+          "none: the rest pose, nodes as the file places them; the first animation where only --time is given"};
+}
+
+OptionSpec timeOption() {
+  return {"--time", "SECONDS",
+          "the time of the --animation glTF models are posed at, sampled as the file interpolates it (step, "
+          "linear, cubic spline; the ends hold outside its keyframes)", "",
+          "0 with --animation; none without: the rest pose"};
+}
+
 OptionSpec spotShareOption() {
   return {"--spot-share", "F", "make this share (0-1) of a scene's random lights spot lights, aimed down at random "
                                "with outer angles of 10-60 degrees", "", "the scene's, 0"};
@@ -29,6 +42,8 @@ SceneParams sceneFileParams(const Args& args) {
   params.uris = {args.has("--allow-outside-uris"), args.has("--strict")};
   params.strictKeys = args.has("--strict");
   if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 1.0f);
+  if (args.has("--animation")) params.gltfPose.animation = args.get("--animation");
+  if (args.has("--time")) params.gltfPose.time = args.getFloat("--time", -1e9f, 1e9f);
   return params;
 }
 
@@ -118,7 +133,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
     scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys,
-                          params.defaultEnvironment, params.spotShare);
+                          params.defaultEnvironment, params.spotShare, params.gltfPose);
   } else {
     throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + builtinSceneList() +
                      ") and no such file exists");

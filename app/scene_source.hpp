@@ -35,6 +35,9 @@ void applyEnvironmentOptions(const Args& args, Scene& scene);
 OptionSpec allowOutsideUrisOption();
 OptionSpec strictOption();
 OptionSpec spotShareOption();
+// --animation and --time: which moment of its glTF models' animations a scene is drawn at (SceneParams::gltfPose).
+OptionSpec animationOption();
+OptionSpec timeOption();
 SceneParams sceneFileParams(const Args& args);
 
 }  // namespace pbr

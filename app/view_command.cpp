@@ -46,6 +46,8 @@ const std::vector<OptionSpec>& viewOptions() {
       timingOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      animationOption(),
+      timeOption(),
   };
   return specs;
 }

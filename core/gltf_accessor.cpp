@@ -29,10 +29,15 @@ std::string typeName(int type) {
       return "VEC3";
     case TINYGLTF_TYPE_VEC4:
       return "VEC4";
+    case TINYGLTF_TYPE_MAT4:
+      return "MAT4";
     default:
       return "type " + std::to_string(type);
   }
 }
+
+// Components per element of SCALAR, VECn and MAT4 accessors (the types this reader takes).
+int componentsOf(int type) { return type == TINYGLTF_TYPE_SCALAR ? 1 : type == TINYGLTF_TYPE_MAT4 ? 16 : type; }
 
 size_t componentSize(int componentType) {
   switch (componentType) {
@@ -219,7 +224,7 @@ std::vector<float> readFloatAccessor(const GltfFile& file, int index, int type,
                                      std::initializer_list<int> componentTypes, const std::string& field) {
   const tinygltf::Accessor& a = accessorAt(file, index, field);
   checkFormat(file, index, a, type, componentTypes, field);
-  const int components = type == TINYGLTF_TYPE_SCALAR ? 1 : type;
+  const int components = componentsOf(type);
   const Elements e = locate(file, index, a, components);
   std::vector<float> out(a.count * static_cast<size_t>(components), 0.0f);
   const size_t size = componentSize(a.componentType);

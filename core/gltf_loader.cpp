@@ -13,6 +13,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/gltf_accessor.hpp"
+#include "core/gltf_animation.hpp"
+#include "core/gltf_deform.hpp"
 #include "core/gltf_file.hpp"
 #include "core/gltf_material.hpp"
 #include "core/mesh_tangent_space.hpp"
@@ -145,42 +147,68 @@ std::vector<uint32_t> triangleList(const GltfFile& file, int mode, std::vector<u
 // the file converted them.
 class Loader {
  public:
-  Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded)
-      : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded) {}
+  Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded, const GltfPose& pose)
+      : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded), pose_(pose) {}
 
   Bounds load(const glm::mat4& transform) {
     const size_t placedLights = scene_.lights.size() + scene_.directionalLights.size();
-    // Depth first, children in order; glTF node hierarchies are trees, so a node met twice is malformed.
+    const size_t nodeCount = file_.model.nodes.size();
+    placement_ = transform;
+    if (pose_.animated()) {
+      const int animation = findAnimation(file_, pose_);
+      animated_ = sampleAnimation(file_, animation, pose_.time.value_or(0.0));
+    }
+    animated_.resize(nodeCount);
+    // First every node's world transform, depth first, children in order (glTF node hierarchies are trees, so a
+    // node met twice is malformed): a skinned mesh needs its joints' wherever they lie in the walk.
     std::vector<std::pair<int, glm::mat4>> stack;
     const std::vector<int> roots = rootNodes();
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, transform);
-    std::vector<bool> visited(file_.model.nodes.size(), false);
+    worlds_.assign(nodeCount, std::nullopt);
+    hidden_.assign(nodeCount, false);
+    std::vector<int> order;
+    std::vector<int> parents(nodeCount, -1);
     while (!stack.empty()) {
       const auto [index, parent] = stack.back();
       stack.pop_back();
       const std::string name = gltfElement("nodes", index);
-      if (visited[static_cast<size_t>(index)]) file_.fail(name + ": reached twice (the node hierarchy is not a tree)");
-      visited[static_cast<size_t>(index)] = true;
+      if (worlds_[static_cast<size_t>(index)]) file_.fail(name + ": reached twice (the node hierarchy is not a tree)");
       const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
-      const glm::mat4 world = parent * localTransform(file_, node, name);
-      checkWorld(world, node, name);
+      const glm::mat4 world = parent * posedTransform(index, name);
+      const int up = parents[static_cast<size_t>(index)];
+      // An animation may scale a node to nothing, a common way to hide one: it and its children draw nothing.
+      hidden_[static_cast<size_t>(index)] = (up >= 0 && hidden_[static_cast<size_t>(up)]) || scaledAway(index, world);
+      if (!hidden_[static_cast<size_t>(index)]) checkWorld(world, node, name);
+      worlds_[static_cast<size_t>(index)] = world;
+      order.push_back(index);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+        checkNode(*child, name + ".children");
+        parents[static_cast<size_t>(*child)] = index;
+        stack.emplace_back(*child, world);
+      }
+    }
+    // Then what the nodes place, in the same order.
+    for (const int index : order) {
+      if (hidden_[static_cast<size_t>(index)]) continue;
+      const std::string name = gltfElement("nodes", index);
+      const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
+      const glm::mat4& world = *worlds_[static_cast<size_t>(index)];
       const auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
       if (node.mesh >= 0 && instancing != node.extensions.end()) {
         const std::string field = name + ".extensions.EXT_mesh_gpu_instancing";
         for (const glm::mat4& instance : instances(instancing->second, field)) {
-          addMesh(node.mesh, world * instance, name + ".mesh", field);
+          addMesh(node.mesh, world * instance, name + ".mesh", field, nullptr);
         }
       } else if (node.mesh >= 0) {
-        addMesh(node.mesh, world, name + ".mesh", placementField(node, name, false));
+        const std::optional<Deformation> deformation = deformationOf(index, name);
+        // A skinned mesh is placed by its joints, which the skinning applies: its own node's transform is not
+        // (glTF 2.0, 3.7.3.3).
+        addMesh(node.mesh, deformation && !deformation->joints.empty() ? glm::mat4(1.0f) : world, name + ".mesh",
+                placementField(node, name, false), deformation ? &*deformation : nullptr);
       }
-      if (node.mesh >= 0 && node.skin >= 0) skinnedNodes_.push_back(name);
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
       if (node.camera >= 0) addCamera(node.camera, world, name + ".camera");
-      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
-        checkNode(*child, name + ".children");
-        stack.emplace_back(*child, world);
-      }
     }
     const bool placed = scene_.lights.size() + scene_.directionalLights.size() > placedLights;
     scene_.gltfPlacedLights = scene_.gltfPlacedLights || placed;
@@ -199,21 +227,13 @@ class Loader {
   }
 
  private:
-  // What the file holds that is not drawn, one line per feature: never dropped without a word. The node walk
-  // has set which skins and meshes the scene uses.
+  // What the file holds that is not drawn, one line per feature: never dropped without a word; and, as a note,
+  // animations left at rest.
   void warnUndrawnFeatures() const {
     const tinygltf::Model& m = file_.model;
-    if (!skinnedNodes_.empty()) {
-      file_.warn(skinnedNodes_.front() + ".skin: skinning is not drawn: " +
-                 counted(skinnedNodes_.size(), "skinned node") + " drawn in the bind pose, placed by the node");
-    }
-    if (!morphedMeshes_.empty()) {
-      file_.warn(morphedMeshes_.front() + ".targets: morph targets are not applied: " +
-                 counted(morphedMeshes_.size(), "primitive") + " drawn without them, their weights ignored");
-    }
-    if (!m.animations.empty()) {
-      file_.warn("animations: " + counted(m.animations.size(), "animation") +
-                 " not played: the nodes are drawn as the file places them");
+    if (!m.animations.empty() && !pose_.animated()) {
+      scene_.notes.push_back(gltfFileName() + " has " + counted(m.animations.size(), "animation") +
+                             ": drawn at rest (--animation NAME|INDEX and --time SECONDS pose it)");
     }
     const int drawn = m.defaultScene >= 0 ? m.defaultScene : 0;
     if (m.scenes.size() > 1) {
@@ -351,13 +371,126 @@ class Loader {
     return roots;
   }
 
-  void addMesh(int index, const glm::mat4& world, const std::string& field, const std::string& placement) {
+  // Morph weights and skinning joint matrices for one node's mesh (empty where it has none).
+  struct Deformation {
+    std::vector<float> weights;
+    std::vector<glm::mat4> joints;
+  };
+
+  // A node's local transform, with what the chosen animation sets in place of the node's own translation,
+  // rotation and scale (animations may not target nodes given as a matrix: sampleAnimation refuses them).
+  glm::mat4 posedTransform(int index, const std::string& name) const {
+    const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
+    const glm::mat4 still = localTransform(file_, node, name);  // checks the node's own values too
+    const AnimatedNode& a = animated_[static_cast<size_t>(index)];
+    if (!a.translation && !a.rotation && !a.scale) return still;
+    const auto vec3Of = [](const std::vector<double>& v, float fallback) {
+      return v.size() == 3 ? glm::vec3(v[0], v[1], v[2]) : glm::vec3(fallback);
+    };
+    const glm::vec3 t = a.translation.value_or(vec3Of(node.translation, 0.0f));
+    const glm::quat r = a.rotation.value_or(
+        node.rotation.size() == 4
+            ? glm::normalize(glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                                       float(node.rotation[2])))
+            : glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+    const glm::vec3 s = a.scale.value_or(vec3Of(node.scale, 1.0f));
+    for (int c = 0; c < 3; ++c) {
+      if (std::fabs(t[c]) > kMaxCoordinate) {
+        file_.fail(name + ": animated to a translation beyond the coordinate limit " + number(kMaxCoordinate));
+      }
+    }
+    return glm::scale(glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r), s);
+  }
+
+  // Whether the animation scales node `index` to nothing at this time.
+  bool scaledAway(int index, const glm::mat4& world) const {
+    return animated_[static_cast<size_t>(index)].scale && !(std::fabs(determinant3(world)) >= kMinDeterminant);
+  }
+
+  // The world transform of any node: from the walk for the scene's nodes, else up its parents' chain (a skin's
+  // joints may lie outside the scene); the chain's root is placed as the scene's roots are.
+  glm::mat4 worldOf(int index) {
+    if (worlds_[static_cast<size_t>(index)]) return *worlds_[static_cast<size_t>(index)];
+    std::vector<int> parents(file_.model.nodes.size(), -1);
+    for (size_t i = 0; i < file_.model.nodes.size(); ++i) {
+      for (const int c : file_.model.nodes[i].children) {
+        checkNode(c, gltfElement("nodes", static_cast<int>(i)) + ".children");
+        parents[static_cast<size_t>(c)] = static_cast<int>(i);
+      }
+    }
+    glm::mat4 world(1.0f);
+    size_t steps = 0;
+    for (int n = index; n >= 0; n = parents[static_cast<size_t>(n)]) {
+      if (++steps > parents.size()) file_.fail(gltfElement("nodes", index) + ": its parents form a cycle");
+      world = posedTransform(n, gltfElement("nodes", n)) * world;
+    }
+    world = placement_ * world;
+    worlds_[static_cast<size_t>(index)] = world;
+    return world;
+  }
+
+  // What deforms node `index`'s mesh: its morph weights (the animation's, else the node's, else the mesh's, when
+  // one is non-zero and the mesh has targets) and, for a skinned node, each joint's world transform times its
+  // inverse bind matrix. Nothing where neither applies.
+  std::optional<Deformation> deformationOf(int index, const std::string& name) {
+    const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
+    if (static_cast<size_t>(node.mesh) >= file_.model.meshes.size()) return std::nullopt;  // addMesh says so
+    const tinygltf::Mesh& mesh = file_.model.meshes[static_cast<size_t>(node.mesh)];
+    Deformation d;
+    const AnimatedNode& a = animated_[static_cast<size_t>(index)];
+    if (a.weights) {
+      d.weights = *a.weights;
+    } else {
+      for (const double w : !node.weights.empty() ? node.weights : mesh.weights) d.weights.push_back(float(w));
+    }
+    const bool targets = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                     [](const tinygltf::Primitive& p) { return !p.targets.empty(); });
+    if (!targets || std::all_of(d.weights.begin(), d.weights.end(), [](float w) { return w == 0.0f; })) {
+      d.weights.clear();
+    }
+    if (node.skin >= 0) d.joints = jointMatrices(node.skin, name + ".skin");
+    if (d.weights.empty() && d.joints.empty()) return std::nullopt;
+    return d;
+  }
+
+  std::vector<glm::mat4> jointMatrices(int skinIndex, const std::string& field) {
+    const auto& skins = file_.model.skins;
+    if (static_cast<size_t>(skinIndex) >= skins.size()) file_.fail(field + ": no skin " + std::to_string(skinIndex));
+    const tinygltf::Skin& skin = skins[static_cast<size_t>(skinIndex)];
+    const std::string name = gltfElement("skins", skinIndex);
+    if (skin.joints.empty()) file_.fail(name + ".joints: a skin needs at least one joint");
+    std::vector<float> inverseBind;
+    if (skin.inverseBindMatrices >= 0) {
+      inverseBind = readFloatAccessor(file_, skin.inverseBindMatrices, TINYGLTF_TYPE_MAT4,
+                                      {TINYGLTF_COMPONENT_TYPE_FLOAT}, name + ".inverseBindMatrices");
+      requireFinite(file_, inverseBind, name + ".inverseBindMatrices");
+      if (inverseBind.size() < 16 * skin.joints.size()) {
+        file_.fail(name + ".inverseBindMatrices: " + std::to_string(inverseBind.size() / 16) + " matrices for " +
+                   std::to_string(skin.joints.size()) + " joints");
+      }
+    }
+    std::vector<glm::mat4> out;
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      checkNode(skin.joints[j], name + ".joints");
+      glm::mat4 ibm(1.0f);
+      for (int c = 0; c < 4 && !inverseBind.empty(); ++c) {
+        for (int r = 0; r < 4; ++r) ibm[c][r] = inverseBind[16 * j + static_cast<size_t>(4 * c + r)];  // column-major
+      }
+      out.push_back(worldOf(skin.joints[j]) * ibm);
+    }
+    return out;
+  }
+
+  std::string gltfFileName() const { return std::filesystem::path(file_.path).filename().string(); }
+
+  void addMesh(int index, const glm::mat4& world, const std::string& field, const std::string& placement,
+               const Deformation* deformation) {
     if (static_cast<size_t>(index) >= file_.model.meshes.size()) {
       file_.fail(field + ": no mesh " + std::to_string(index));
     }
     const tinygltf::Mesh& mesh = file_.model.meshes[static_cast<size_t>(index)];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-      const int sceneMesh = primitiveMesh(index, static_cast<int>(p));
+      const int sceneMesh = primitiveMesh(index, static_cast<int>(p), deformation);
       if (sceneMesh < 0) continue;
       const std::string material =
           gltfElement("meshes", index) + "." + gltfElement("primitives", static_cast<int>(p)) + ".material";
@@ -375,21 +508,20 @@ class Loader {
     }
   }
 
-  // Index into Scene::meshes of a primitive, converted once however many nodes and loads use it; -1 for what is
-  // not drawn.
-  int primitiveMesh(int meshIndex, int primitiveIndex) {
+  // Index into Scene::meshes of a primitive, converted once however many nodes and loads use it (a deformed one
+  // for each node that deforms it); -1 for what is not drawn.
+  int primitiveMesh(int meshIndex, int primitiveIndex, const Deformation* deformation) {
     const auto cached = loaded_.meshes.find({meshIndex, primitiveIndex});
-    if (cached != loaded_.meshes.end()) return cached->second;
+    if (cached != loaded_.meshes.end() && !deformation) return cached->second;
     const tinygltf::Primitive& prim =
         file_.model.meshes[static_cast<size_t>(meshIndex)].primitives[static_cast<size_t>(primitiveIndex)];
     const std::string field = gltfElement("meshes", meshIndex) + "." + gltfElement("primitives", primitiveIndex);
     int result = -1;
     if (prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
         prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-      if (!prim.targets.empty()) morphedMeshes_.push_back(field);
       // A primitive has one material: the second UV set is read only where one of its maps reads it.
       const bool uv1 = readsTexCoord1(materials_.get(prim.material, field + ".material"));
-      MeshData mesh = readPrimitive(prim, field, uv1);
+      MeshData mesh = readPrimitive(prim, field, uv1, deformation);
       if (!mesh.indices.empty()) {
         scene_.meshes.push_back(std::move(mesh));
         result = static_cast<int>(scene_.meshes.size()) - 1;
@@ -397,11 +529,12 @@ class Loader {
     } else {
       file_.warn(field + ": mode " + std::to_string(prim.mode) + " (points or lines) is not drawn");
     }
-    loaded_.meshes.emplace(std::make_pair(meshIndex, primitiveIndex), result);
+    if (!deformation) loaded_.meshes.emplace(std::make_pair(meshIndex, primitiveIndex), result);
     return result;
   }
 
-  MeshData readPrimitive(const tinygltf::Primitive& prim, const std::string& field, bool readUv1) const {
+  MeshData readPrimitive(const tinygltf::Primitive& prim, const std::string& field, bool readUv1,
+                         const Deformation* deformation) const {
     const auto attribute = [&](const char* name) {
       const auto it = prim.attributes.find(name);
       return it == prim.attributes.end() ? -1 : it->second;
@@ -426,8 +559,9 @@ class Loader {
     const std::initializer_list<int> anyPosition = {kFloat, kByte, kUbyte, kShort, kUshort}, floatOnly = {kFloat},
                                      signedUnit = {kFloat, kByte, kShort}, coreUv = {kFloat, kUbyte, kUshort};
     if (attribute("POSITION") < 0) file_.fail(field + ".attributes: no POSITION");
-    const std::vector<float> positions =
-        read("POSITION", TINYGLTF_TYPE_VEC3, quantized ? anyPosition : floatOnly, 0);
+    PrimitiveVertices attributes;
+    std::vector<float>& positions = attributes.positions;
+    positions = read("POSITION", TINYGLTF_TYPE_VEC3, quantized ? anyPosition : floatOnly, 0);
     const size_t count = positions.size() / 3;
     for (const float p : positions) {
       if (std::fabs(p) > kMaxCoordinate) {
@@ -438,12 +572,15 @@ class Loader {
     const bool hasNormals = attribute("NORMAL") >= 0;
     // glTF: without normals, tangents from the file are ignored too.
     const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
-    const std::vector<float> normals =
-        hasNormals ? read("NORMAL", TINYGLTF_TYPE_VEC3, quantized ? signedUnit : floatOnly, count)
-                   : std::vector<float>();
-    const std::vector<float> tangents =
-        hasTangents ? read("TANGENT", TINYGLTF_TYPE_VEC4, quantized ? signedUnit : floatOnly, count)
-                    : std::vector<float>();
+    std::vector<float>& normals = attributes.normals;
+    std::vector<float>& tangents = attributes.tangents;
+    if (hasNormals) normals = read("NORMAL", TINYGLTF_TYPE_VEC3, quantized ? signedUnit : floatOnly, count);
+    if (hasTangents) tangents = read("TANGENT", TINYGLTF_TYPE_VEC4, quantized ? signedUnit : floatOnly, count);
+    // Morph targets first, then the skin (glTF 2.0, 3.7.3.1).
+    if (deformation && !deformation->weights.empty()) {
+      applyMorphTargets(file_, prim, deformation->weights, attributes, field);
+    }
+    if (deformation && !deformation->joints.empty()) applySkin(file_, prim, deformation->joints, attributes, field);
     const std::vector<float> uvs =
         attribute("TEXCOORD_0") >= 0 ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2, quantized ? anyPosition : coreUv, count)
                                      : std::vector<float>();
@@ -596,8 +733,11 @@ class Loader {
   LoadedGltf& loaded_;
   GltfMaterials materials_;
   std::vector<std::pair<Camera, bool>> cameras_;  // and whether the file left its far plane out
-  // Where the scene uses what is not drawn, by field name, in the order met.
-  std::vector<std::string> skinnedNodes_, morphedMeshes_;
+  GltfPose pose_;
+  glm::mat4 placement_{1.0f};                    // the load's transform, before the scene's roots
+  std::vector<AnimatedNode> animated_;           // by node: what the chosen animation sets, nothing at rest
+  std::vector<std::optional<glm::mat4>> worlds_;  // by node: its world transform, for the nodes of the scene
+  std::vector<bool> hidden_;                     // by node: scaled to nothing by the animation, or under one
   Bounds bounds_;
   bool empty_ = true;
 };
@@ -611,7 +751,8 @@ std::string fileKey(const std::string& path) {
 
 }  // namespace
 
-Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy) {
+Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy,
+                  const GltfPose& pose) {
   // Read and checked again on every load: the policy may differ, and the checks blame this load's fields.
   const GltfFile file = readGltfFile(path, policy);
   const std::string key = fileKey(path);
@@ -622,7 +763,7 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
                lights = scene.lights.size(), directionalLights = scene.directionalLights.size(),
                cameras = scene.cameras.size();
   try {
-    const Bounds bounds = Loader(file, scene, loaded).load(transform);
+    const Bounds bounds = Loader(file, scene, loaded, pose).load(transform);
     scene.gltfFiles[key] = std::move(loaded);
     return bounds;
   } catch (...) {

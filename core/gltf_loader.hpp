@@ -4,6 +4,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/gltf_animation.hpp"
 #include "core/scene.hpp"
 #include "core/uri_policy.hpp"
 
@@ -21,16 +22,18 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive (TRIANGLES,
 // strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
 // images they use are appended, and KHR_lights_punctual lights join scene.lights and scene.directionalLights.
-// Accessors may be sparse. Normals missing from a primitive are generated flat, tangents missing are generated per
-// vertex. What is not drawn (points and lines, skins, morph targets, animations, vertex colours, other scenes,
-// used extensions outside kSupportedGltfExtensions) is named in one line on stderr per feature, as is each image
-// drawn as a placeholder (missing or undecodable; refused under `policy.strict`). Returns the world bounds of the
-// geometry appended. Throws SceneError("<path>: <field>: <what>") for a malformed file or a required extension
-// outside kSupportedGltfExtensions, leaving `scene` as it was.
+// Accessors may be sparse. Nodes are posed as `pose` says (an animation sampled at a time, or the rest pose);
+// morph targets are applied with the animation's, node's or mesh's weights and skinned meshes are skinned on the
+// CPU, placed by their joints. Normals missing from a primitive are generated flat, tangents missing are generated
+// per vertex. What is not drawn (points and lines, other scenes, used extensions outside kSupportedGltfExtensions)
+// is named in one line on stderr per feature, as is each image drawn as a placeholder (missing or undecodable;
+// refused under `policy.strict`). Returns the world bounds of the geometry appended. Throws
+// SceneError("<path>: <field>: <what>") for a malformed file or a required extension outside
+// kSupportedGltfExtensions, leaving `scene` as it was.
 // `policy` says where the file's buffers and images may be (readGltfFile).
 // A file loaded again into the same scene (by canonical path) adds its objects, placed by the new transform, and
 // its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
-                  const UriPolicy& policy = {});
+                  const UriPolicy& policy = {}, const GltfPose& pose = {});
 
 }  // namespace pbr

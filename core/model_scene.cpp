@@ -73,10 +73,11 @@ std::vector<PointLight> defaultLightRig(const Bounds& bounds) {
   return lights;
 }
 
-Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEnvironment environment) {
+Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEnvironment environment,
+                     const GltfPose& pose) {
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
-  const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy);
+  const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy, pose);
   // A file of points, lines or bare nodes is valid glTF: it renders as the empty frame it is, and says so.
   if (scene.objects.empty()) scene.notes.push_back("the file has no triangles to draw: the frame shows no geometry");
   scene.framedCamera = frameBounds(bounds, 45.0f);
