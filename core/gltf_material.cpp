@@ -156,8 +156,19 @@ int GltfMaterials::texture(int index, bool srgb, const std::string& field) {
   }
   const tinygltf::Texture& t = model.textures[static_cast<size_t>(index)];
   const std::string name = gltfElement("textures", index);
-  if (t.source < 0 || static_cast<size_t>(t.source) >= model.images.size()) {
-    file_.fail(name + ".source: no image " + std::to_string(t.source) + " (a texture needs a PNG or JPEG source)");
+  // EXT_texture_webp names the WebP image to use instead of `source`, its fallback (which may be absent).
+  int source = t.source;
+  std::string sourceField = name + ".source";
+  const auto webp = t.extensions.find("EXT_texture_webp");
+  if (webp != t.extensions.end()) {
+    sourceField = name + ".extensions.EXT_texture_webp.source";
+    const tinygltf::Value& v = webp->second.Get("source");
+    if (!v.IsInt()) file_.fail(sourceField + ": must be an image index");
+    source = v.GetNumberAsInt();
+  }
+  if (source < 0 || static_cast<size_t>(source) >= model.images.size()) {
+    file_.fail(sourceField + ": no image " + std::to_string(source) +
+               " (a texture needs a PNG, JPEG or, with EXT_texture_webp, WebP source)");
   }
   TextureData data;
   if (t.sampler >= 0) {
@@ -186,7 +197,7 @@ int GltfMaterials::texture(int index, bool srgb, const std::string& field) {
     if (s.magFilter >= 0) data.magFilter = s.magFilter;
   }
   std::string problem;
-  if (!readImage(t.source, data, problem)) {
+  if (!readImage(source, data, problem)) {
     // As viewers draw it: without the texture, which for every role is its neutral value (white base colour,
     // metal-roughness, occlusion and emission factors alone, the interpolated normal).
     if (file_.policy.strict) file_.fail(problem);

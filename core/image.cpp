@@ -3,6 +3,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 #include <tinyexr.h>
+#include <webp/decode.h>
 
 #include <climits>
 #include <cstdio>
@@ -183,11 +184,36 @@ std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned cha
   return kept;
 }
 
+bool isWebp(const unsigned char* b, size_t size) {
+  return size >= 12 && std::memcmp(b, "RIFF", 4) == 0 && std::memcmp(b + 8, "WEBP", 4) == 0;
+}
+
+std::string overLimit(int w, int h) {
+  return std::to_string(w) + "x" + std::to_string(h) + " pixels, over the image limit (" +
+         std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) + " pixels in all)";
+}
+
+// WebP (EXT_texture_webp) through libwebp: the header's size checked against the limits before the decoder
+// allocates, as for stb's formats.
+ImageRgba8 decodeWebp(const unsigned char* bytes, size_t size, const std::string& name) {
+  int w = 0, h = 0;
+  if (!WebPGetInfo(bytes, size, &w, &h)) throw std::runtime_error(name + ": cannot decode image: not a valid WebP file");
+  if (w > kMaxImageSide || h > kMaxImageSide || int64_t(w) * h > kMaxImagePixels) {
+    throw std::runtime_error(name + ": cannot decode image: " + overLimit(w, h));
+  }
+  std::unique_ptr<uint8_t, void (*)(void*)> data(WebPDecodeRGBA(bytes, size, &w, &h), WebPFree);
+  if (!data) throw std::runtime_error(name + ": cannot decode image: corrupt WebP data");
+  ImageRgba8 img{w, h, {}};
+  img.pixels.assign(data.get(), data.get() + size_t(w) * size_t(h) * 4);
+  return img;
+}
+
 }  // namespace
 
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
+  if (isWebp(bytes, size)) return decodeWebp(bytes, size, name);
   const std::string jpegProblem = jpegSegmentProblem(bytes, size);
   if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
   const std::string pngProblem = pngChunkProblem(bytes, size);
@@ -203,10 +229,7 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   if (stbi_info_from_memory(bytes, static_cast<int>(size), &declaredW, &declaredH, &declaredN) &&
       (declaredW > kMaxImageSide || declaredH > kMaxImageSide ||
        int64_t(declaredW) * declaredH > kMaxImagePixels)) {
-    throw std::runtime_error(name + ": cannot decode image: " + std::to_string(declaredW) + "x" +
-                             std::to_string(declaredH) + " pixels, over the image limit (" +
-                             std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) +
-                             " pixels in all)");
+    throw std::runtime_error(name + ": cannot decode image: " + overLimit(declaredW, declaredH));
   }
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(

@@ -192,6 +192,8 @@ def texture_seeds(project, assets, out):
     write(out, "grey-alpha8.png", png(n, n, 4, 8, [bytes(b for v in r for b in (v, 255 - v)) for r in grey]))
     write(out, "palette4.png", png(n, n, 3, 4, [bytes(((v % 16) << 4 | (v % 16)) for v in r[: n // 2]) for r in grey],
                                    palette=bytes(range(48))))
+    for webp in sorted(assets.rglob("*.webp")):
+        write(out, webp.name, webp.read_bytes())
     for jpeg in sorted(assets.rglob("*.jpg")):
         write(out, jpeg.stem + "-corner.jpg", jpeg_corner(jpeg.read_bytes()))
 

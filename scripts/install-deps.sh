@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglfw3-dev libimgui-dev libglm-dev python3-glad libstb-dev libtinygltf-dev nlohmann-json3-dev
-  doctest-dev libtinyexr-dev python3-matplotlib
+  doctest-dev libtinyexr-dev libwebp-dev libmeshoptimizer-dev libdraco-dev python3-matplotlib
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth parallel
 )

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <webp/decode.h>
+#include <webp/encode.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/assets.hpp"
@@ -747,4 +749,32 @@ TEST_CASE("gltf EXT_mesh_gpu_instancing: every instance drawn, placed by its TRS
           pbr::appendGltf(s2, path);
         }) == path + ": nodes[0].extensions.EXT_mesh_gpu_instancing.attributes: TRANSLATION, ROTATION and SCALE "
                      "must have as many elements as each other");
+}
+
+TEST_CASE("gltf EXT_texture_webp: the WebP source replaces the fallback, and decodes to the pixels it encodes") {
+  const TempDir dir;
+  pbr::ImageRgba8 image{4, 2, {}};
+  for (int i = 0; i < 8; ++i) {
+    image.pixels.insert(image.pixels.end(), {static_cast<unsigned char>(30 * i), 200, static_cast<unsigned char>(i), 255});
+  }
+  uint8_t* encoded = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(image.pixels.data(), image.width, image.height, image.width * 4, &encoded);
+  REQUIRE(size > 0);
+  std::ofstream(dir.path() / "texture.webp", std::ios::binary).write(reinterpret_cast<const char*>(encoded),
+                                                                    static_cast<std::streamsize>(size));
+  WebPFree(encoded);
+  GltfBuilder b;
+  // The fallback PNG is another picture: the WebP one must be the one drawn.
+  const int texture = b.addPngTexture(dir.path(), "fallback.png", pbr::test::solidImage(2, 2, {9, 9, 9, 255}));
+  b.doc["images"].push_back({{"uri", "texture.webp"}, {"mimeType", "image/webp"}});
+  b.doc["textures"][texture]["extensions"]["EXT_texture_webp"]["source"] = 1;
+  b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = {"EXT_texture_webp"};
+  QuadSpec spec;
+  spec.material = b.addMaterial({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+  b.addRootNode({{"mesh", pbr::test::addQuad(b, spec)}});
+  pbr::Scene scene;
+  pbr::appendGltf(scene, b.writeGltf(dir.path(), "webp"));
+  REQUIRE(scene.textures.size() == 1);
+  CHECK(scene.textures[0].width == 4);
+  CHECK(scene.textures[0].rgba == image.pixels);
 }

@@ -2,6 +2,8 @@
 // bounds, and still decodes the real textures of the shared models.
 #include <doctest/doctest.h>
 #include <stb_image_write.h>
+#include <webp/decode.h>
+#include <webp/encode.h>
 
 #include <filesystem>
 #include <sstream>
@@ -149,4 +151,24 @@ TEST_CASE("image decode: a PNG chunk declaring more bytes than the file holds is
                     ("long.png: cannot decode image: PNG chunk at byte " + std::to_string(end) +
                      " declares 1912602835 bytes, past the end of the data (" + std::to_string(bytes.size()) +
                      " bytes)").c_str());
+}
+
+TEST_CASE("image decode: a lossless WebP decodes to the pixels it encodes, and a cut one is refused with a reason") {
+  pbr::ImageRgba8 image{5, 3, {}};
+  for (int i = 0; i < 15; ++i) {
+    image.pixels.insert(image.pixels.end(), {static_cast<unsigned char>(17 * i), static_cast<unsigned char>(255 - i),
+                                             static_cast<unsigned char>(i * i), static_cast<unsigned char>(128 + i)});
+  }
+  uint8_t* encoded = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(image.pixels.data(), image.width, image.height, image.width * 4, &encoded);
+  REQUIRE(size > 0);
+  const std::vector<unsigned char> webp(encoded, encoded + size);
+  WebPFree(encoded);
+  const pbr::ImageRgba8 decoded = pbr::decodeImage(webp.data(), webp.size(), "t.webp");
+  CHECK(decoded.width == 5);
+  CHECK(decoded.height == 3);
+  CHECK(decoded.pixels == image.pixels);
+  // The RIFF header kept, the data cut: libwebp finds the image incomplete.
+  const std::vector<unsigned char> cut(webp.begin(), webp.begin() + 20);
+  CHECK(decodeError(cut) == "t.jpg: cannot decode image: not a valid WebP file");
 }
