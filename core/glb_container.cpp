@@ -68,7 +68,30 @@ GlbChunks readGlbChunks(const std::string& bytes, const std::string& path) {
   if (binLength % 4 != 0) fail("chunk 1", "length " + std::to_string(binLength) + " is not a multiple of 4");
   chunks.hasBin = true;
   chunks.binLength = binLength;
+  chunks.binOffset = jsonEnd + 8;
   return chunks;
+}
+
+std::string withGlbJson(const std::string& bytes, const GlbChunks& chunks, const std::string& json) {
+  const auto put32 = [](std::string& out, uint64_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+  };
+  std::string text = json;
+  while (text.size() % 4 != 0) text.push_back(' ');
+  const size_t total = 12 + 8 + text.size() + (chunks.hasBin ? 8 + chunks.binLength : 0);
+  std::string out = "glTF";
+  put32(out, 2);
+  put32(out, total);
+  put32(out, text.size());
+  out += "JSON";
+  out += text;
+  if (chunks.hasBin) {
+    put32(out, chunks.binLength);
+    out += "BIN";
+    out.push_back('\0');
+    out.append(bytes, chunks.binOffset, chunks.binLength);
+  }
+  return out;
 }
 
 }  // namespace pbr

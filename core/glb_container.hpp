@@ -10,7 +10,12 @@ struct GlbChunks {
   std::string json;
   bool hasBin = false;
   std::size_t binLength = 0;
+  std::size_t binOffset = 0;  // where the BIN chunk's data starts in the file
 };
+
+// A GLB of `json` and the BIN chunk of `bytes` (laid out as `chunks` says), as the specification lays one out: the
+// JSON padded with spaces, each chunk to 4 bytes.
+std::string withGlbJson(const std::string& bytes, const GlbChunks& chunks, const std::string& json);
 
 // True when the bytes start with the GLB magic "glTF".
 bool hasGlbMagic(const std::string& bytes);

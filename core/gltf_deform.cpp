@@ -58,7 +58,7 @@ void applyMorphTargets(const GltfFile& file, const tinygltf::Primitive& primitiv
 }
 
 void applySkin(const GltfFile& file, const tinygltf::Primitive& primitive, const std::vector<glm::mat4>& jointMatrices,
-               PrimitiveVertices& v, const std::string& field) {
+               const AttributeReader& read, PrimitiveVertices& v, const std::string& field) {
   const size_t count = v.positions.size() / 3;
   // Up to two sets of four influences.
   std::vector<std::vector<float>> joints, weights;
@@ -72,14 +72,12 @@ void applySkin(const GltfFile& file, const tinygltf::Primitive& primitive, const
       file.fail((j == primitive.attributes.end() ? jName : wName) + ": missing beside its " +
                 (j == primitive.attributes.end() ? "WEIGHTS" : "JOINTS") + " set");
     }
-    joints.push_back(readFloatAccessor(
-        file, j->second, TINYGLTF_TYPE_VEC4,
-        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, jName));
+    joints.push_back(read("JOINTS_" + std::to_string(set), TINYGLTF_TYPE_VEC4,
+                          {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
     requireCount(file, joints.back(), 4, count, jName);
-    weights.push_back(readFloatAccessor(
-        file, w->second, TINYGLTF_TYPE_VEC4,
-        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-        wName));
+    weights.push_back(read("WEIGHTS_" + std::to_string(set), TINYGLTF_TYPE_VEC4,
+                           {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
     requireCount(file, weights.back(), 4, count, wName);
   }
   if (joints.empty()) file.fail(field + ".attributes: a skinned mesh's primitive has no JOINTS_0 and WEIGHTS_0");

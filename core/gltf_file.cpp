@@ -67,6 +67,28 @@ bool isSupportedExtension(const std::string& name) {
                      [&](const char* supported) { return name == supported; });
 }
 
+// tinygltf 2.7 refuses a primitive whose indices accessor has no bufferView, which is how KHR_draco_mesh_compression
+// files write them (the indices are in the Draco data). Returns the document with such primitives' "indices"
+// removed, or nothing where no primitive needs it; the loader takes their indices from the Draco data.
+std::optional<nlohmann::json> withoutDracoIndices(const nlohmann::json& doc) {
+  const auto meshes = doc.find("meshes");
+  if (meshes == doc.end() || !meshes->is_array()) return std::nullopt;
+  std::optional<nlohmann::json> out;
+  for (size_t m = 0; m < meshes->size(); ++m) {
+    const nlohmann::json& primitives = (*meshes)[m].value("primitives", nlohmann::json::array());
+    for (size_t p = 0; p < primitives.size(); ++p) {
+      const nlohmann::json& primitive = primitives[p];
+      if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions") ||
+          !primitive["extensions"].is_object() || !primitive["extensions"].contains("KHR_draco_mesh_compression")) {
+        continue;
+      }
+      if (!out) out = doc;
+      (*out)["meshes"][m]["primitives"][p].erase("indices");
+    }
+  }
+  return out;
+}
+
 // A required extension outside kSupportedGltfExtensions refuses the file, checked before its structure: a mesh only
 // the extension decodes (Draco, meshopt) has buffers and accessors that look broken without it, and the message
 // is to name the extension, not what it explains. Anything but an array of strings is left to checkGltfJson.
@@ -111,6 +133,12 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   checkRequiredExtensions(doc, path);
   checkGltfJson(doc, context);
 
+  const std::optional<nlohmann::json> rewritten = withoutDracoIndices(doc);
+  if (rewritten) {
+    // checkGltfJson has checked the file as written; tinygltf reads the rewritten document.
+    const std::string text = rewritten->dump();
+    bytes = glb ? withGlbJson(bytes, readGlbChunks(bytes, path), text) : text;
+  }
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&isRegularFile, &keepPath, &readFile, &tinygltf::WriteWholeFile, nullptr});
   loader.SetImageLoader(&keepEncodedImage, &file.encodedImages);

@@ -15,6 +15,7 @@
 #include "core/gltf_accessor.hpp"
 #include "core/gltf_animation.hpp"
 #include "core/gltf_deform.hpp"
+#include "core/gltf_draco.hpp"
 #include "core/gltf_file.hpp"
 #include "core/gltf_material.hpp"
 #include "core/mesh_tangent_space.hpp"
@@ -539,9 +540,18 @@ class Loader {
       const auto it = prim.attributes.find(name);
       return it == prim.attributes.end() ? -1 : it->second;
     };
+    // KHR_draco_mesh_compression: the compressed attributes and the indices come from the decoded Draco mesh.
+    const std::optional<DracoPrimitive> draco = decodeDracoPrimitive(file_, prim, field);
+    const AttributeReader readAttribute = [&](const std::string& name, int type,
+                                              std::initializer_list<int> componentTypes) {
+      const std::string where = field + ".attributes." + name;
+      if (draco && draco->attributes.count(name)) return draco->attributes.at(name);
+      const auto it = prim.attributes.find(name);
+      return readFloatAccessor(file_, it == prim.attributes.end() ? -1 : it->second, type, componentTypes, where);
+    };
     const auto read = [&](const char* name, int type, std::initializer_list<int> componentTypes, size_t count) {
       const std::string where = field + ".attributes." + name;
-      std::vector<float> values = readFloatAccessor(file_, attribute(name), type, componentTypes, where);
+      std::vector<float> values = readAttribute(name, type, componentTypes);
       const size_t n = values.size() / static_cast<size_t>(type);
       if (count && n != count) {
         file_.fail(where + ": " + std::to_string(n) + " elements where POSITION has " + std::to_string(count));
@@ -580,7 +590,9 @@ class Loader {
     if (deformation && !deformation->weights.empty()) {
       applyMorphTargets(file_, prim, deformation->weights, attributes, field);
     }
-    if (deformation && !deformation->joints.empty()) applySkin(file_, prim, deformation->joints, attributes, field);
+    if (deformation && !deformation->joints.empty()) {
+      applySkin(file_, prim, deformation->joints, readAttribute, attributes, field);
+    }
     const std::vector<float> uvs =
         attribute("TEXCOORD_0") >= 0 ? read("TEXCOORD_0", TINYGLTF_TYPE_VEC2, quantized ? anyPosition : coreUv, count)
                                      : std::vector<float>();
@@ -630,7 +642,9 @@ class Loader {
       if (clamped) file_.warn(field + ".attributes.COLOR_0: values outside [0, 1] clamped");
     }
     std::vector<uint32_t> indices;
-    if (prim.indices >= 0) {
+    if (draco) {
+      indices = draco->indices;
+    } else if (prim.indices >= 0) {
       indices = readIndexAccessor(file_, prim.indices, count, field + ".indices");
     } else {
       indices.resize(count);

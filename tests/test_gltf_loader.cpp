@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include <draco/compression/encode.h>
+#include <draco/mesh/triangle_soup_mesh_builder.h>
 #include <glm/geometric.hpp>
 #include <webp/decode.h>
 #include <webp/encode.h>
@@ -440,10 +442,11 @@ TEST_CASE("gltf errors: malformed files give one line naming the file and the fi
   }
   {
     GltfBuilder b = quad();
-    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    b.doc["extensionsUsed"] = {"KHR_texture_basisu"};
+    b.doc["extensionsRequired"] = {"KHR_texture_basisu"};
     const auto [path, message] = load(b, "extension");
-    check(message, path, {"extensionsRequired", "KHR_draco_mesh_compression"});
+    check(message, path, {"extensionsRequired", "KHR_texture_basisu",
+                          "no Debian package transcodes Basis Universal textures"});
   }
   {
     // As gltfpack writes EXT_meshopt_compression: a fallback buffer without a URI, which only the extension
@@ -777,4 +780,82 @@ TEST_CASE("gltf EXT_texture_webp: the WebP source replaces the fallback, and dec
   REQUIRE(scene.textures.size() == 1);
   CHECK(scene.textures[0].width == 4);
   CHECK(scene.textures[0].rgba == image.pixels);
+}
+
+TEST_CASE("gltf KHR_draco_mesh_compression: a Draco-compressed quad loads as the triangles of the plain one") {
+  const TempDir dir;
+  GltfBuilder plain = pbr::test::quadModel();
+  pbr::Scene expected;
+  pbr::appendGltf(expected, plain.writeGltf(dir.path(), "plain"));
+  const pbr::MeshData& quad = expected.meshes.at(0);
+  // The same triangles through Draco (no quantization: the values come back exactly).
+  draco::TriangleSoupMeshBuilder builder;
+  builder.Start(static_cast<int>(quad.indices.size() / 3));
+  const int position = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
+  const int normal = builder.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
+  const int uv = builder.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
+  for (size_t f = 0; f < quad.indices.size() / 3; ++f) {
+    const pbr::Vertex* v[3];
+    for (size_t k = 0; k < 3; ++k) v[k] = &quad.vertices[quad.indices[3 * f + k]];
+    const draco::FaceIndex face(static_cast<uint32_t>(f));
+    builder.SetAttributeValuesForFace(position, face, &v[0]->position, &v[1]->position, &v[2]->position);
+    builder.SetAttributeValuesForFace(normal, face, &v[0]->normal, &v[1]->normal, &v[2]->normal);
+    builder.SetAttributeValuesForFace(uv, face, &v[0]->uv, &v[1]->uv, &v[2]->uv);
+  }
+  const std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
+  REQUIRE(mesh);
+  draco::EncoderBuffer encoded;
+  draco::Encoder encoder;
+  REQUIRE(encoder.EncodeMeshToBuffer(*mesh, &encoded).ok());
+
+  GltfBuilder b;
+  const int view = b.addView(encoded.data(), encoded.size());
+  const auto accessor = [&](const char* type, int componentType, size_t count) {
+    b.doc["accessors"].push_back({{"componentType", componentType}, {"count", count}, {"type", type}});
+    return static_cast<int>(b.doc["accessors"].size()) - 1;
+  };
+  const size_t points = mesh->num_points();
+  const int positions = accessor("VEC3", 5126, points);
+  b.doc["accessors"][positions]["min"] = {-1, -1, 0};
+  b.doc["accessors"][positions]["max"] = {1, 1, 0};
+  b.addRootNode({{"mesh", b.addMesh({{"attributes",
+                                      {{"POSITION", positions},
+                                       {"NORMAL", accessor("VEC3", 5126, points)},
+                                       {"TEXCOORD_0", accessor("VEC2", 5126, points)}}},
+                                     {"indices", accessor("SCALAR", 5125, quad.indices.size())},
+                                     {"extensions",
+                                      {{"KHR_draco_mesh_compression",
+                                        {{"bufferView", view},
+                                         {"attributes",
+                                          {{"POSITION", mesh->attribute(position)->unique_id()},
+                                           {"NORMAL", mesh->attribute(normal)->unique_id()},
+                                           {"TEXCOORD_0", mesh->attribute(uv)->unique_id()}}}}}}}})}});
+  b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  for (const bool glb : {false, true}) {
+    CAPTURE(glb);
+    pbr::Scene scene;
+    pbr::appendGltf(scene, glb ? b.writeGlb(dir.path(), "draco") : b.writeGltf(dir.path(), "draco"));
+    REQUIRE(scene.meshes.size() == 1);
+    const pbr::MeshData& got = scene.meshes[0];
+    REQUIRE(got.indices.size() == quad.indices.size());
+    // Draco orders the triangles, and the corners within each, its own way (keeping the winding): each decoded
+    // triangle is one of the plain quad's, turned, with the same positions, normals and UVs at its corners.
+    std::vector<bool> matched(quad.indices.size() / 3, false);
+    for (size_t f = 0; f < got.indices.size() / 3; ++f) {
+      bool found = false;
+      for (size_t e = 0; e < matched.size() && !found; ++e) {
+        for (size_t turn = 0; turn < 3 && !found; ++turn) {
+          bool same = !matched[e];
+          for (size_t k = 0; k < 3 && same; ++k) {
+            const pbr::Vertex& g = got.vertices[got.indices[3 * f + k]];
+            const pbr::Vertex& x = quad.vertices[quad.indices[3 * e + (k + turn) % 3]];
+            same = g.position == x.position && g.normal == x.normal && g.uv == x.uv;
+          }
+          if (same) matched[e] = found = true;
+        }
+      }
+      CAPTURE(f);
+      CHECK(found);
+    }
+  }
 }
