@@ -43,7 +43,8 @@ std::vector<float> sample(const std::vector<float>& times, const std::vector<flo
   const float* v1 = value(seg.k + 1, 1);
   const float s = seg.s;
   if (cubic) {
-    // glTF 2.0, Appendix C: p(s) = (2s^3 - 3s^2 + 1) v0 + (s^3 - 2s^2 + s) td b0 + (-2s^3 + 3s^2) v1 + (s^3 - s^2) td a1.
+    // glTF 2.0, Appendix C: p(s) = (2s^3 - 3s^2 + 1) v0 + (s^3 - 2s^2 + s) td b0 + (-2s^3 + 3s^2) v1
+    //                             + (s^3 - s^2) td a1.
     const float* b0 = value(seg.k, 2);
     const float* a1 = value(seg.k + 1, 0);
     const float s2 = s * s, s3 = s2 * s, td = seg.duration;

@@ -12,6 +12,7 @@
 
 #include "core/glb_container.hpp"
 #include "core/gltf_json_check.hpp"
+#include "core/gltf_meshopt.hpp"
 #include "core/input_file.hpp"
 #include "core/json_file.hpp"
 #include "core/json_text.hpp"
@@ -67,17 +68,20 @@ bool isSupportedExtension(const std::string& name) {
                      [&](const char* supported) { return name == supported; });
 }
 
-// tinygltf 2.7 refuses a primitive whose indices accessor has no bufferView, which is how KHR_draco_mesh_compression
-// files write them (the indices are in the Draco data). Returns the document with such primitives' "indices"
-// removed, or nothing where no primitive needs it; the loader takes their indices from the Draco data.
-std::optional<nlohmann::json> withoutDracoIndices(const nlohmann::json& doc) {
-  const auto meshes = doc.find("meshes");
-  if (meshes == doc.end() || !meshes->is_array()) return std::nullopt;
+// The document as tinygltf 2.7 can read it, or nothing where it can read it as written. Two things valid glTF it
+// refuses are rewritten: a primitive whose indices accessor has no bufferView, which is how
+// KHR_draco_mesh_compression files write it (the primitive loses "indices": they are in the Draco data), and a
+// buffer without a URI besides a GLB's first, which is how EXT_meshopt_compression writes a fallback buffer that
+// holds no data (it gets a 3-byte stand-in: its views are decoded from compressed ones, gltf_meshopt.hpp).
+std::optional<nlohmann::json> readableByTinygltf(const nlohmann::json& doc) {
   std::optional<nlohmann::json> out;
-  for (size_t m = 0; m < meshes->size(); ++m) {
-    const nlohmann::json& primitives = (*meshes)[m].value("primitives", nlohmann::json::array());
-    for (size_t p = 0; p < primitives.size(); ++p) {
-      const nlohmann::json& primitive = primitives[p];
+  const auto meshes = doc.find("meshes");
+  for (size_t m = 0; meshes != doc.end() && meshes->is_array() && m < meshes->size(); ++m) {
+    const nlohmann::json& mesh = (*meshes)[m];
+    const auto primitives = mesh.is_object() ? mesh.find("primitives") : mesh.end();
+    if (!mesh.is_object() || primitives == mesh.end() || !primitives->is_array()) continue;
+    for (size_t p = 0; p < primitives->size(); ++p) {
+      const nlohmann::json& primitive = (*primitives)[p];
       if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions") ||
           !primitive["extensions"].is_object() || !primitive["extensions"].contains("KHR_draco_mesh_compression")) {
         continue;
@@ -85,6 +89,14 @@ std::optional<nlohmann::json> withoutDracoIndices(const nlohmann::json& doc) {
       if (!out) out = doc;
       (*out)["meshes"][m]["primitives"][p].erase("indices");
     }
+  }
+  const auto buffers = doc.find("buffers");
+  for (size_t i = 0; buffers != doc.end() && buffers->is_array() && i < buffers->size(); ++i) {
+    const nlohmann::json& buffer = (*buffers)[i];
+    if (!isMeshoptFallback(buffer) || buffer.contains("uri")) continue;
+    if (!out) out = doc;
+    (*out)["buffers"][i]["uri"] = "data:application/octet-stream;base64,AAAA";
+    (*out)["buffers"][i]["byteLength"] = 3;
   }
   return out;
 }
@@ -133,7 +145,7 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
   checkRequiredExtensions(doc, path);
   checkGltfJson(doc, context);
 
-  const std::optional<nlohmann::json> rewritten = withoutDracoIndices(doc);
+  const std::optional<nlohmann::json> rewritten = readableByTinygltf(doc);
   if (rewritten) {
     // checkGltfJson has checked the file as written; tinygltf reads the rewritten document.
     const std::string text = rewritten->dump();
@@ -151,6 +163,7 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
                                        folder);
   if (!ok) file.fail(firstLine(!err.empty() ? err : !warn.empty() ? warn : "not a valid glTF 2.0 file"));
   file.encodedImages.resize(file.model.images.size());
+  decodeMeshoptViews(file);
 
   // The file is meant to look right without these, or it would require them; it may still look different.
   std::string ignored;

@@ -34,7 +34,8 @@ inline std::string gltfElement(const char* array, int index) {
 inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
                                                        "KHR_materials_unlit", "KHR_mesh_quantization",
                                                        "KHR_texture_transform", "EXT_mesh_gpu_instancing",
-                                                       "EXT_texture_webp", "KHR_draco_mesh_compression"};
+                                                       "EXT_texture_webp", "KHR_draco_mesh_compression",
+                                                       "EXT_meshopt_compression"};
 
 // Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through
 // readInputFile. Before tinygltf sees the file, the GLB container is checked (readGlbChunks), the JSON's nesting

@@ -14,6 +14,16 @@
 
 namespace pbr {
 
+bool isMeshoptFallback(const nlohmann::json& buffer) {
+  if (!buffer.is_object()) return false;
+  const auto extensions = buffer.find("extensions");
+  if (extensions == buffer.end() || !extensions->is_object()) return false;
+  const auto meshopt = extensions->find("EXT_meshopt_compression");
+  if (meshopt == extensions->end() || !meshopt->is_object()) return false;
+  const auto fallback = meshopt->find("fallback");
+  return fallback != meshopt->end() && fallback->is_boolean() && fallback->get<bool>();
+}
+
 namespace {
 
 using nlohmann::json;
@@ -215,6 +225,7 @@ class Checker {
       const uint64_t length = *integer(*buffer, "byteLength", field, kMaxBytes, true, 1);
       bufferLengths_.push_back(length);
       const auto uri = buffer->find("uri");
+      if (uri == buffer->end() && isMeshoptFallback(*buffer)) continue;  // its views are decoded from others
       if (uri == buffer->end()) {
         if (i != 0 || !context_.binChunk) fail(field + ".uri", "missing (only a GLB's first buffer may omit it)");
         if (length > *context_.binChunk || *context_.binChunk - length > 3) {

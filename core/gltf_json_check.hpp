@@ -27,4 +27,8 @@ struct GltfJsonContext {
 // -4)").
 void checkGltfJson(const nlohmann::json& doc, const GltfJsonContext& context);
 
+// EXT_meshopt_compression: a buffer marked as the fallback of compressed views, which may hold no data (no URI),
+// as gltfpack writes it; its views are then decoded from compressed ones (gltf_meshopt.hpp).
+bool isMeshoptFallback(const nlohmann::json& buffer);
+
 }  // namespace pbr

@@ -197,7 +197,9 @@ std::string overLimit(int w, int h) {
 // allocates, as for stb's formats.
 ImageRgba8 decodeWebp(const unsigned char* bytes, size_t size, const std::string& name) {
   int w = 0, h = 0;
-  if (!WebPGetInfo(bytes, size, &w, &h)) throw std::runtime_error(name + ": cannot decode image: not a valid WebP file");
+  if (!WebPGetInfo(bytes, size, &w, &h)) {
+    throw std::runtime_error(name + ": cannot decode image: not a valid WebP file");
+  }
   if (w > kMaxImageSide || h > kMaxImageSide || int64_t(w) * h > kMaxImagePixels) {
     throw std::runtime_error(name + ": cannot decode image: " + overLimit(w, h));
   }

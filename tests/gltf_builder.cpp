@@ -82,7 +82,13 @@ int GltfBuilder::addRootNode(const json& node) {
 std::string GltfBuilder::writeGltf(const fs::path& dir, const std::string& name) const {
   json out = doc;
   if (!bin.empty()) {
-    out["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", name + ".bin"}}});
+    // The binary is buffer 0; buffers a test adds after it are kept.
+    const json first = {{"byteLength", bin.size()}, {"uri", name + ".bin"}};
+    if (out.contains("buffers") && !out["buffers"].empty()) {
+      out["buffers"][0] = first;
+    } else {
+      out["buffers"] = json::array({first});
+    }
     std::ofstream(dir / (name + ".bin"), std::ios::binary)
         .write(reinterpret_cast<const char*>(bin.data()), static_cast<std::streamsize>(bin.size()));
   }
@@ -93,7 +99,11 @@ std::string GltfBuilder::writeGltf(const fs::path& dir, const std::string& name)
 
 std::string GltfBuilder::writeGlb(const fs::path& dir, const std::string& name) const {
   json out = doc;
-  if (!bin.empty()) out["buffers"] = json::array({{{"byteLength", bin.size()}}});
+  if (!bin.empty() && out.contains("buffers") && !out["buffers"].empty()) {
+    out["buffers"][0] = {{"byteLength", bin.size()}};
+  } else if (!bin.empty()) {
+    out["buffers"] = json::array({{{"byteLength", bin.size()}}});
+  }
   std::string text = out.dump();
   while (text.size() % 4) text.push_back(' ');  // chunks are 4-byte aligned, JSON padded with spaces
   std::vector<unsigned char> payload = bin;
