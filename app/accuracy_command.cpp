@@ -76,6 +76,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      gltfSceneOption(),
       animationOption(),
       timeOption(),
   };

@@ -76,6 +76,7 @@ const std::vector<OptionSpec>& benchOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      gltfSceneOption(),
       animationOption(),
       timeOption(),
   };

@@ -42,6 +42,7 @@ const std::vector<OptionSpec>& referenceOptions() {
        toString(referenceDefaults.forms)},
       allowOutsideUrisOption(),
       strictOption(),
+      gltfSceneOption(),
       animationOption(),
       timeOption(),
   };

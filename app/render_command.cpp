@@ -81,6 +81,7 @@ const std::vector<OptionSpec>& renderOptions() {
       eglPlatformOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      gltfSceneOption(),
       animationOption(),
       timeOption(),
   };

@@ -25,6 +25,11 @@ OptionSpec animationOption() {
           "none: the rest pose, nodes as the file places them; the first animation where only --time is given"};
 }
 
+OptionSpec gltfSceneOption() {
+  return {"--gltf-scene", "N", "draw scene N (from 0) of glTF files that hold several", "",
+          "the file's default scene (its \"scene\"), else its first"};
+}
+
 OptionSpec timeOption() {
   return {"--time", "SECONDS",
           "the time of the --animation glTF models are posed at, sampled as the file interpolates it (step, "
@@ -42,8 +47,9 @@ SceneParams sceneFileParams(const Args& args) {
   params.uris = {args.has("--allow-outside-uris"), args.has("--strict")};
   params.strictKeys = args.has("--strict");
   if (args.has("--spot-share")) params.spotShare = args.getFloat("--spot-share", 0.0f, 1.0f);
-  if (args.has("--animation")) params.gltfPose.animation = args.get("--animation");
-  if (args.has("--time")) params.gltfPose.time = args.getFloat("--time", -1e9f, 1e9f);
+  if (args.has("--gltf-scene")) params.gltfSelection.scene = args.getInt("--gltf-scene", 0, 1 << 20);
+  if (args.has("--animation")) params.gltfSelection.animation = args.get("--animation");
+  if (args.has("--time")) params.gltfSelection.time = args.getFloat("--time", -1e9f, 1e9f);
   return params;
 }
 
@@ -133,7 +139,7 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
     scene = makeBuiltinScene(nameOrPath, params);
   } else if (std::filesystem::exists(nameOrPath)) {
     scene = loadSceneFile(nameOrPath, params.lights.value_or(-1), params.uris, params.strictKeys,
-                          params.defaultEnvironment, params.spotShare, params.gltfPose);
+                          params.defaultEnvironment, params.spotShare, params.gltfSelection);
   } else {
     throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + builtinSceneList() +
                      ") and no such file exists");

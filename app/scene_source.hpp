@@ -35,8 +35,10 @@ void applyEnvironmentOptions(const Args& args, Scene& scene);
 OptionSpec allowOutsideUrisOption();
 OptionSpec strictOption();
 OptionSpec spotShareOption();
-// --animation and --time: which moment of its glTF models' animations a scene is drawn at (SceneParams::gltfPose).
+// --gltf-scene, --animation and --time: which scene and moment of its glTF models a scene is drawn at
+// (SceneParams::gltfSelection).
 OptionSpec animationOption();
+OptionSpec gltfSceneOption();
 OptionSpec timeOption();
 SceneParams sceneFileParams(const Args& args);
 

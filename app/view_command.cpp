@@ -46,6 +46,7 @@ const std::vector<OptionSpec>& viewOptions() {
       timingOption(),
       allowOutsideUrisOption(),
       strictOption(),
+      gltfSceneOption(),
       animationOption(),
       timeOption(),
   };

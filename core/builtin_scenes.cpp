@@ -192,7 +192,7 @@ Scene makeBuiltinScene(const std::string& name, const SceneParams& params) {
                             "helmet-grid, many-lights)");
   }
   Scene scene = loadSceneFile(builtinScenePath(name), fileLightCount, params.uris, params.strictKeys,
-                              params.defaultEnvironment, params.spotShare, params.gltfPose);
+                              params.defaultEnvironment, params.spotShare, params.gltfSelection);
   if (params.viewAngleDeg && builtin->setViewAngle) builtin->setViewAngle(scene, *params.viewAngleDeg);
   if (params.lights && builtin->setLightCount) builtin->setLightCount(scene, *params.lights);
   return scene;

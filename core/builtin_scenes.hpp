@@ -35,7 +35,7 @@ struct SceneParams {
   UriPolicy uris;                     // scene files: where glTF buffers and images may be
   bool strictKeys = false;            // scene files: an unknown key is an error, not a warning (--strict)
   DefaultEnvironment defaultEnvironment = DefaultEnvironment::Sky;  // scene files: for glTF models given none
-  GltfPose gltfPose;                  // scene files: the animation and time glTF models are drawn at
+  GltfSelection gltfSelection;        // scene files: the scene, animation and time glTF models are drawn at
 };
 
 std::vector<std::string> builtinSceneNames();

@@ -63,17 +63,17 @@ std::vector<float> sample(const std::vector<float>& times, const std::vector<flo
 
 }  // namespace
 
-int findAnimation(const GltfFile& file, const GltfPose& pose) {
+int findAnimation(const GltfFile& file, const GltfSelection& selection) {
   const auto& animations = file.model.animations;
   if (animations.empty()) {
-    file.fail(std::string(pose.animation ? "--animation " + *pose.animation : "--time") +
+    file.fail(std::string(selection.animation ? "--animation " + *selection.animation : "--time") +
               ": the file has no animations");
   }
-  if (!pose.animation) return 0;
+  if (!selection.animation) return 0;
   for (size_t i = 0; i < animations.size(); ++i) {
-    if (animations[i].name == *pose.animation) return static_cast<int>(i);
+    if (animations[i].name == *selection.animation) return static_cast<int>(i);
   }
-  const std::string& choice = *pose.animation;
+  const std::string& choice = *selection.animation;
   char* end = nullptr;
   const long index = std::strtol(choice.c_str(), &end, 10);
   if (!choice.empty() && *end == '\0' && index >= 0 && static_cast<size_t>(index) < animations.size()) {

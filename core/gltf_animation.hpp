@@ -10,9 +10,11 @@
 
 namespace pbr {
 
-// Which moment of a glTF file's animations to draw (`--animation`, `--time`). Without either, the rest pose: the
-// nodes as the file places them (skins and morph weights applied, no animation).
-struct GltfPose {
+// What of a glTF file to draw: which of its scenes (`--gltf-scene`, default the file's `scene`) and which moment of
+// its animations (`--animation`, `--time`). Without either of those, the rest pose: the nodes as the file places
+// them (skins and morph weights applied, no animation).
+struct GltfSelection {
+  std::optional<int> scene;              // an index into the file's scenes
   std::optional<std::string> animation;  // a name or an index; absent with `time`: the file's first animation
   std::optional<double> time;            // seconds; absent with `animation`: 0
   bool animated() const { return animation || time; }
@@ -27,9 +29,9 @@ struct AnimatedNode {
   std::optional<std::vector<float>> weights;
 };
 
-// The index of the animation `pose` names in `file` (its name, else an index); throws SceneError naming the
+// The index of the animation `selection` names in `file` (its name, else an index); throws SceneError naming the
 // choice and what the file has where it names none.
-int findAnimation(const GltfFile& file, const GltfPose& pose);
+int findAnimation(const GltfFile& file, const GltfSelection& selection);
 
 // Every channel of animation `animation` sampled at `time` seconds, by node index (file.model.nodes.size()
 // entries). Before the first keyframe and after the last the ends hold. Interpolation as glTF 2.0 specifies it:

@@ -148,16 +148,16 @@ std::vector<uint32_t> triangleList(const GltfFile& file, int mode, std::vector<u
 // the file converted them.
 class Loader {
  public:
-  Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded, const GltfPose& pose)
-      : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded), pose_(pose) {}
+  Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded, const GltfSelection& selection)
+      : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded), selection_(selection) {}
 
   Bounds load(const glm::mat4& transform) {
     const size_t placedLights = scene_.lights.size() + scene_.directionalLights.size();
     const size_t nodeCount = file_.model.nodes.size();
     placement_ = transform;
-    if (pose_.animated()) {
-      const int animation = findAnimation(file_, pose_);
-      animated_ = sampleAnimation(file_, animation, pose_.time.value_or(0.0));
+    if (selection_.animated()) {
+      const int animation = findAnimation(file_, selection_);
+      animated_ = sampleAnimation(file_, animation, selection_.time.value_or(0.0));
     }
     animated_.resize(nodeCount);
     // First every node's world transform, depth first, children in order (glTF node hierarchies are trees, so a
@@ -232,14 +232,13 @@ class Loader {
   // animations left at rest.
   void warnUndrawnFeatures() const {
     const tinygltf::Model& m = file_.model;
-    if (!m.animations.empty() && !pose_.animated()) {
+    if (!m.animations.empty() && !selection_.animated()) {
       scene_.notes.push_back(gltfFileName() + " has " + counted(m.animations.size(), "animation") +
                              ": drawn at rest (--animation NAME|INDEX and --time SECONDS pose it)");
     }
-    const int drawn = m.defaultScene >= 0 ? m.defaultScene : 0;
-    if (m.scenes.size() > 1) {
-      file_.warn("scenes: the file has " + std::to_string(m.scenes.size()) + " scenes; scene " +
-                 std::to_string(drawn) + " is drawn, the others are not");
+    if (m.scenes.size() > 1 && !selection_.scene) {
+      scene_.notes.push_back(gltfFileName() + " has " + counted(m.scenes.size(), "scene") + ": scene " +
+                             std::to_string(drawnScene()) + " is drawn (--gltf-scene N draws another)");
     }
   }
 
@@ -348,10 +347,20 @@ class Loader {
     }
   }
 
-  // The default scene's roots; a file without scenes shows every node that is no other node's child.
+  // The scene drawn: the one chosen, else the file's default, else the first; -1 for a file without scenes.
+  int drawnScene() const {
+    const tinygltf::Model& m = file_.model;
+    if (selection_.scene) return *selection_.scene;
+    return m.defaultScene >= 0 ? m.defaultScene : m.scenes.empty() ? -1 : 0;
+  }
+
+  // The drawn scene's roots; a file without scenes shows every node that is no other node's child.
   std::vector<int> rootNodes() const {
     const tinygltf::Model& m = file_.model;
-    const int scene = m.defaultScene >= 0 ? m.defaultScene : m.scenes.empty() ? -1 : 0;
+    const int scene = drawnScene();
+    if (selection_.scene && scene >= static_cast<int>(m.scenes.size())) {
+      file_.fail("--gltf-scene " + std::to_string(scene) + ": the file has " + counted(m.scenes.size(), "scene"));
+    }
     if (scene >= static_cast<int>(m.scenes.size())) file_.fail("scene: no scene " + std::to_string(scene));
     if (scene >= 0) {
       const std::string field = gltfElement("scenes", scene) + ".nodes";
@@ -747,7 +756,7 @@ class Loader {
   LoadedGltf& loaded_;
   GltfMaterials materials_;
   std::vector<std::pair<Camera, bool>> cameras_;  // and whether the file left its far plane out
-  GltfPose pose_;
+  GltfSelection selection_;
   glm::mat4 placement_{1.0f};                    // the load's transform, before the scene's roots
   std::vector<AnimatedNode> animated_;           // by node: what the chosen animation sets, nothing at rest
   std::vector<std::optional<glm::mat4>> worlds_;  // by node: its world transform, for the nodes of the scene
@@ -766,7 +775,7 @@ std::string fileKey(const std::string& path) {
 }  // namespace
 
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy,
-                  const GltfPose& pose) {
+                  const GltfSelection& selection) {
   // Read and checked again on every load: the policy may differ, and the checks blame this load's fields.
   const GltfFile file = readGltfFile(path, policy);
   const std::string key = fileKey(path);
@@ -777,7 +786,7 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
                lights = scene.lights.size(), directionalLights = scene.directionalLights.size(),
                cameras = scene.cameras.size();
   try {
-    const Bounds bounds = Loader(file, scene, loaded, pose).load(transform);
+    const Bounds bounds = Loader(file, scene, loaded, selection).load(transform);
     scene.gltfFiles[key] = std::move(loaded);
     return bounds;
   } catch (...) {

@@ -19,11 +19,11 @@ struct Bounds {
 // times the brightest colour channel) falls to this value; the renderer's windowed attenuation ends it there.
 constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 
-// Appends the default scene of a glTF 2.0 file (.gltf or .glb) to `scene`: every triangle primitive (TRIANGLES,
-// strips and fans) becomes an object (its node's world transform pre-multiplied by `transform`), materials and the
-// images they use are appended, and KHR_lights_punctual lights join scene.lights and scene.directionalLights.
-// Accessors may be sparse. Nodes are posed as `pose` says (an animation sampled at a time, or the rest pose);
-// morph targets are applied with the animation's, node's or mesh's weights and skinned meshes are skinned on the
+// Appends a scene of a glTF 2.0 file (.gltf or .glb) to `scene`, the one `selection` names or else the file's
+// default: every triangle primitive (TRIANGLES, strips and fans) becomes an object (its node's world transform
+// pre-multiplied by `transform`), materials and the images they use are appended, and KHR_lights_punctual lights
+// join scene.lights and scene.directionalLights. Accessors may be sparse. Nodes are posed as `selection` says (an
+// animation sampled at a time, or the rest pose); morph targets are applied with the animation's, node's or mesh's weights and skinned meshes are skinned on the
 // CPU, placed by their joints. Normals missing from a primitive are generated flat, tangents missing are generated
 // per vertex. What is not drawn (points and lines, other scenes, used extensions outside kSupportedGltfExtensions)
 // is named in one line on stderr per feature, as is each image drawn as a placeholder (missing or undecodable;
@@ -34,6 +34,6 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // A file loaded again into the same scene (by canonical path) adds its objects, placed by the new transform, and
 // its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
-                  const UriPolicy& policy = {}, const GltfPose& pose = {});
+                  const UriPolicy& policy = {}, const GltfSelection& selection = {});
 
 }  // namespace pbr

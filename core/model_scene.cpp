@@ -74,10 +74,10 @@ std::vector<PointLight> defaultLightRig(const Bounds& bounds) {
 }
 
 Scene loadModelScene(const std::string& path, const UriPolicy& policy, DefaultEnvironment environment,
-                     const GltfPose& pose) {
+                     const GltfSelection& selection) {
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
-  const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy, pose);
+  const Bounds bounds = appendGltf(scene, path, glm::mat4(1.0f), policy, selection);
   // A file of points, lines or bare nodes is valid glTF: it renders as the empty frame it is, and says so.
   if (scene.objects.empty()) scene.notes.push_back("the file has no triangles to draw: the frame shows no geometry");
   scene.framedCamera = frameBounds(bounds, 45.0f);

@@ -19,8 +19,8 @@ std::vector<PointLight> defaultLightRig(const Bounds& bounds);
 // A .gltf or .glb model alone: framed by frameBounds, a small ambient, the default rig when it has no lights, and
 // the procedural sky unless `environment` is None. A file with lights gets the EV100 an incident-light meter reads
 // at the model's centre (light_meter.hpp), ambient and sky scaled to it. What it adds so is said in Scene::notes.
-// `pose` picks the animation and time the model is drawn at (appendGltf).
+// `selection` picks the glTF scene, animation and time the model is drawn at (appendGltf).
 Scene loadModelScene(const std::string& path, const UriPolicy& policy = {},
-                     DefaultEnvironment environment = DefaultEnvironment::Sky, const GltfPose& pose = {});
+                     DefaultEnvironment environment = DefaultEnvironment::Sky, const GltfSelection& selection = {});
 
 }  // namespace pbr

@@ -164,7 +164,7 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   return m;
 }
 
-void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& policy, const GltfPose& pose,
+void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& policy, const GltfSelection& selection,
                 Scene& scene) {
   const JsonField shape = f["shape"], gltf = f["gltf"];
   if (shape.present() == gltf.present()) {
@@ -176,7 +176,7 @@ void readObject(const JsonField& f, const fs::path& folder, const UriPolicy& pol
     const std::string path = resolve(gltf, folder);
     requireRegularFile(gltf, path);
     try {
-      appendGltf(scene, path, transform, policy, pose);
+      appendGltf(scene, path, transform, policy, selection);
     } catch (const SceneError& e) {
       gltf.fail(e.what());
     }
@@ -294,7 +294,7 @@ std::optional<EnvironmentDesc> readEnvironment(const JsonField& f, const fs::pat
 }
 
 Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
-                    DefaultEnvironment defaultEnvironment, std::optional<float> spotShare, const GltfPose& pose) {
+                    DefaultEnvironment defaultEnvironment, std::optional<float> spotShare, const GltfSelection& selection) {
   const nlohmann::json document = readJsonFile(path);
   const JsonField root(document, path);
   if (!document.is_object()) root.expected("a JSON object");
@@ -308,7 +308,7 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
   const JsonField environment = root["environment"];
   if (environment.present()) scene.environment = readEnvironment(environment, folder);
-  for (const JsonField& o : root["objects"].items()) readObject(o, folder, policy, pose, scene);
+  for (const JsonField& o : root["objects"].items()) readObject(o, folder, policy, selection, scene);
   // Scenes of shapes alone were written for their own lights and stay without one; glTF models are lit as a model
   // given alone is.
   if (!environment.present() && !scene.gltfFiles.empty() && defaultEnvironment == DefaultEnvironment::Sky) {
@@ -357,15 +357,15 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, int lightCount, const UriPolicy& policy, bool strictKeys,
-                    DefaultEnvironment environment, std::optional<float> spotShare, const GltfPose& pose) {
+                    DefaultEnvironment environment, std::optional<float> spotShare, const GltfSelection& selection) {
   const std::string ext = lowerExtension(path);
   const bool model = ext == ".gltf" || ext == ".glb";
   if (model && (lightCount >= 0 || spotShare)) {
     throw SceneError(path + ": " + (lightCount >= 0 ? "a light count" : "a spot-light share") +
                      " applies only to scene files with random_lights");
   }
-  Scene scene = model ? loadModelScene(path, policy, environment, pose)
-                      : readJsonScene(path, lightCount, policy, strictKeys, environment, spotShare, pose);
+  Scene scene = model ? loadModelScene(path, policy, environment, selection)
+                      : readJsonScene(path, lightCount, policy, strictKeys, environment, spotShare, selection);
   validateScene(scene, path);
   return scene;
 }

@@ -15,11 +15,11 @@ namespace pbr {
 // reader never looks up is warned about on stderr, or with `strictKeys` refused (JsonField::reportUnknownKeys).
 // `environment` is what a model, or a JSON scene placing glTF models, gets when the file has no "environment" (a
 // note in Scene::notes says so); a JSON scene of shapes alone gets none. `spotShare`, when given, replaces
-// random_lights.spot_share as `lightCount` does its count. `pose` poses every glTF model the scene loads (the
-// same animation name or index and time for each; appendGltf). The scene is checked by validateScene before it is
+// random_lights.spot_share as `lightCount` does its count. `selection` applies to every glTF model the scene loads (the
+// same scene index, animation name or index and time for each; appendGltf). The scene is checked by validateScene before it is
 // returned.
 Scene loadSceneFile(const std::string& path, int lightCount = -1, const UriPolicy& policy = {},
                     bool strictKeys = false, DefaultEnvironment environment = DefaultEnvironment::Sky,
-                    std::optional<float> spotShare = std::nullopt, const GltfPose& pose = {});
+                    std::optional<float> spotShare = std::nullopt, const GltfSelection& selection = {});
 
 }  // namespace pbr

@@ -1,4 +1,4 @@
-// glTF animations, skins and morph targets posed at load (GltfPose, --animation and --time): a two-bone bar bends
+// glTF animations, skins and morph targets posed at load (GltfSelection, --animation and --time): a two-bone bar bends
 // as the joint matrices the test computes say, morph targets move vertices by their weighted displacements, and the
 // samplers interpolate as the specification's formulas do (step, linear, spherical linear, cubic spline).
 #include <doctest/doctest.h>
@@ -34,14 +34,14 @@ std::string errorOf(const std::function<void()>& load) {
   return "";
 }
 
-pbr::Scene load(const std::string& path, const pbr::GltfPose& pose) {
+pbr::Scene load(const std::string& path, const pbr::GltfSelection& pose) {
   pbr::Scene scene;
   pbr::appendGltf(scene, path, glm::mat4(1.0f), {}, pose);
   return scene;
 }
 
-pbr::GltfPose at(double time, const std::string& animation = "") {
-  pbr::GltfPose pose;
+pbr::GltfSelection at(double time, const std::string& animation = "") {
+  pbr::GltfSelection pose;
   pose.time = time;
   if (!animation.empty()) pose.animation = animation;
   return pose;
@@ -119,7 +119,7 @@ TEST_CASE("gltf skins: a two-bone bar bent 60 degrees at t = 1 follows the joint
                          glm::translate(glm::mat4(1.0f), {-1.0f, 0.0f, 0.0f});
   for (const bool posed : {false, true}) {
     CAPTURE(posed);
-    const pbr::Scene scene = load(path, posed ? at(1.0, "bend") : pbr::GltfPose{});
+    const pbr::Scene scene = load(path, posed ? at(1.0, "bend") : pbr::GltfSelection{});
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0].transform == glm::mat4(1.0f));  // placed by its joints, not its node
     const std::vector<pbr::Vertex>& v = scene.meshes[static_cast<size_t>(scene.objects[0].mesh)].vertices;
@@ -216,7 +216,7 @@ TEST_CASE("gltf animation: chosen by name or index, refused by name when absent,
   const std::string path = b.writeGltf(dir.path(), "slide");
   CHECK(load(path, at(0.5, "slide")).objects[0].transform[3].x == doctest::Approx(2.0f));
   CHECK(load(path, at(0.5, "0")).objects[0].transform[3].x == doctest::Approx(2.0f));
-  pbr::GltfPose named;
+  pbr::GltfSelection named;
   named.animation = "slide";  // time 0 without --time
   CHECK(load(path, named).objects[0].transform[3].x == doctest::Approx(0.0f));
   CHECK(errorOf([&] { load(path, at(0.5, "walk")); }) ==

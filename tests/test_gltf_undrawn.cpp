@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+
 #include "core/builtin_scenes.hpp"
 #include "core/gltf_loader.hpp"
 #include "core/scene_json.hpp"
@@ -18,7 +20,7 @@ using pbr::test::CapturedStderr;
 using pbr::test::GltfBuilder;
 using pbr::test::TempDir;
 
-TEST_CASE("gltf undrawn: other scenes get one line, and morph targets, vertex colours and animations none") {
+TEST_CASE("gltf undrawn: morph targets, vertex colours, animations and other scenes need no warning, two notes") {
   const TempDir dir;
   GltfBuilder b = pbr::test::quadModel();
   json& primitive = b.doc["meshes"][0]["primitives"][0];
@@ -41,10 +43,21 @@ TEST_CASE("gltf undrawn: other scenes get one line, and morph targets, vertex co
   pbr::Scene scene;
   pbr::appendGltf(scene, path);
   CHECK(scene.objects.size() == 1);
-  CHECK(err.text() == path + ": scenes: the file has 2 scenes; scene 0 is drawn, the others are not\n");
-  REQUIRE(scene.notes.size() == 1);
+  CHECK(err.text().empty());
+  REQUIRE(scene.notes.size() == 2);
   CHECK(scene.notes[0] == "features.gltf has 1 animation: drawn at rest (--animation NAME|INDEX and --time SECONDS "
                           "pose it)");
+  CHECK(scene.notes[1] == "features.gltf has 2 scenes: scene 0 is drawn (--gltf-scene N draws another)");
+  // The other scene, chosen: it has no nodes; one past the last is refused by name.
+  pbr::GltfSelection second;
+  second.scene = 1;
+  pbr::Scene other;
+  pbr::appendGltf(other, path, glm::mat4(1.0f), {}, second);
+  CHECK(other.objects.empty());
+  second.scene = 2;
+  pbr::Scene none;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(none, path, glm::mat4(1.0f), {}, second),
+                       (path + ": --gltf-scene 2: the file has 2 scenes").c_str(), pbr::SceneError);
 }
 
 TEST_CASE("gltf undrawn: a light range beyond the coordinate limit is read as no range, with one line") {
