@@ -77,7 +77,7 @@ std::optional<DracoPrimitive> decodeDracoPrimitive(const GltfFile& file, const t
   }
   out.indices.reserve(size_t(mesh->num_faces()) * 3);
   for (uint32_t f = 0; f < mesh->num_faces(); ++f) {
-    for (const draco::PointIndex corner : mesh->face(draco::FaceIndex(f))) {
+    for (const draco::PointIndex& corner : mesh->face(draco::FaceIndex(f))) {
       if (corner.value() >= out.vertices) file.fail(name + ": a Draco face names a vertex past its points");
       out.indices.push_back(corner.value());
     }

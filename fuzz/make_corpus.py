@@ -4,7 +4,7 @@
 Seeds are generated rather than committed: the assets are not ours to copy, and most are too large to mutate
 quickly. Each target's input is a single file, so what a seed refers to is made self-contained or absolute:
 scene files name textures and models by absolute path, glTF buffers and images become data URIs (with GLB
-versions), Radiance pictures are cut to a few scanlines, and PNG seeds are small images in each PNG colour type.
+versions), small .glb exports (Draco- and meshopt-compressed meshes) are taken as they are, Radiance pictures are cut to a few scanlines, and PNG seeds are small images in each PNG colour type.
 Usage: make_corpus.py PROJECT_DIR ASSETS_DIR OUT_DIR
 """
 import base64
@@ -139,6 +139,10 @@ def gltf_seeds(project, assets, out):
             doc["buffers"][0].pop("uri", None)
             doc["buffers"][0]["byteLength"] = len(buffers[0])
             write(out, model.stem + ".glb", glb(doc, buffers[0]))
+    # Small binary exports as they are: Draco- and meshopt-compressed meshes, whose decoders the loader feeds.
+    for model in sorted(assets.rglob("*.glb")):
+        if model.stat().st_size <= 65536:
+            write(out, model.stem + "-as-exported.glb", model.read_bytes())
 
 
 def rle_scanline_end(data, start, width):
