@@ -144,6 +144,12 @@ Scene resolveScene(const std::string& nameOrPath, const SceneParams& params) {
     throw SceneError("unknown scene '" + nameOrPath + "': not a built-in scene (" + builtinSceneList() +
                      ") and no such file exists");
   }
+  // A scene without glTF models has nothing the glTF options could choose: refused rather than ignored.
+  const GltfSelection& g = params.gltfSelection;
+  if ((g.scene || g.animated()) && scene.gltfFiles.empty()) {
+    throw UsageError(std::string(g.scene ? "--gltf-scene" : g.animation ? "--animation" : "--time") +
+                     " applies only to scenes with glTF models");
+  }
   validateScene(scene, nameOrPath);
   return scene;
 }

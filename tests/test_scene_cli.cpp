@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/assets.hpp"
 #include "tests/cli_scene.hpp"
@@ -42,6 +43,19 @@ TEST_CASE("cli: --view-angle is refused for scenes other than fresnel-floor") {
     CHECK(run.exitCode == 2);
     CHECK(isOneLine(run.err));
     CHECK(run.err.find("--view-angle applies only to --scene fresnel-floor") != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: --gltf-scene, --animation and --time are refused for scenes without glTF models") {
+  const TempDir dir;
+  const std::string scene = dir.write("scene.json", kCliScene);
+  for (const std::vector<std::string>& option :
+       {std::vector<std::string>{"--gltf-scene", "1"}, {"--animation", "walk"}, {"--time", "1.5"}}) {
+    CAPTURE(option[0]);
+    const PbrRun run = runPbr(dir, {"render", "--scene", scene, option[0], option[1]});
+    CHECK(run.exitCode == 2);
+    CHECK(isOneLine(run.err));
+    CHECK(run.err.find(option[0] + " applies only to scenes with glTF models") != std::string::npos);
   }
 }
 
