@@ -184,6 +184,18 @@ std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned cha
   return kept;
 }
 
+bool isPng(const unsigned char* b, size_t size) {
+  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  return size >= 8 && std::memcmp(b, signature, 8) == 0;
+}
+
+// A start-of-image marker after one or more 0xFF bytes, as stb_image takes it.
+bool isJpeg(const unsigned char* b, size_t size) {
+  size_t start = 0;
+  while (start < size && b[start] == 0xFF) ++start;
+  return start > 0 && start < size && b[start] == 0xD8;
+}
+
 bool isWebp(const unsigned char* b, size_t size) {
   return size >= 12 && std::memcmp(b, "RIFF", 4) == 0 && std::memcmp(b + 8, "WEBP", 4) == 0;
 }
@@ -216,6 +228,11 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");
   if (isWebp(bytes, size)) return decodeWebp(bytes, size, name);
+  // stb_image reads more formats than textures may be (Radiance, PSD, BMP, GIF, TGA, PNM), some of them with
+  // endless loops on corrupt input: only PNG and JPEG reach it.
+  if (!isPng(bytes, size) && !isJpeg(bytes, size)) {
+    throw std::runtime_error(name + ": cannot decode image: not a PNG, JPEG or WebP image");
+  }
   const std::string jpegProblem = jpegSegmentProblem(bytes, size);
   if (!jpegProblem.empty()) throw std::runtime_error(name + ": cannot decode image: " + jpegProblem);
   const std::string pngProblem = pngChunkProblem(bytes, size);

@@ -38,15 +38,15 @@ void writeHdr(std::ostream& out, HdrFileFormat format, const ImageRgbaF& image);
 // no file behind. writePng writes PNG whatever the name; writeLdr picks by the extension, as ldrFileFormat.
 void writePng(const std::string& path, const ImageRgba8& image);
 void writeLdr(const std::string& path, const ImageRgba8& image);
-// Any image decodeImage decodes (PNG, JPEG, WebP, ...), read through readInputFile.
+// Any image decodeImage decodes (PNG, JPEG, WebP), read through readInputFile.
 ImageRgba8 readPng(const std::string& path);
 // What decodeImage accepts: 16384 pixels a side and 2^26 pixels (8192 x 8192) in all, checked on the header
 // before the decoder allocates.
 constexpr int kMaxImageSide = 16384;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
 
-// Decodes PNG, JPEG and the other formats stb reads, and WebP (libwebp), to RGBA8 (16-bit images narrowed to 8
-// bits). Throws
+// Decodes PNG and JPEG (stb_image) and WebP (libwebp) to RGBA8 (16-bit images narrowed to 8 bits); any other
+// format is refused. Throws
 // std::runtime_error("NAME: cannot decode image: REASON"), or "NAME: cannot decode image" where the decoder gives
 // no reason (stb leaves none for some corrupt files).
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name);

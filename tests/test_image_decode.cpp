@@ -172,3 +172,15 @@ TEST_CASE("image decode: a lossless WebP decodes to the pixels it encodes, and a
   const std::vector<unsigned char> cut(webp.begin(), webp.begin() + 20);
   CHECK(decodeError(cut) == "t.jpg: cannot decode image: not a valid WebP file");
 }
+
+TEST_CASE("image decode: formats other than PNG, JPEG and WebP are refused before stb_image reads them") {
+  // A Radiance picture (stb's loader for it loops endlessly on some corrupt files), a BMP and a GIF header.
+  const std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n\x80\x80\x80\x81";
+  const std::string bmp = std::string("BM") + std::string(52, '\0');
+  const std::string gif = "GIF89a" + std::string(20, '\0');
+  for (const std::string& bytes : {hdr, bmp, gif}) {
+    CAPTURE(bytes.substr(0, 6));
+    CHECK(decodeError(std::vector<unsigned char>(bytes.begin(), bytes.end())) ==
+          "t.jpg: cannot decode image: not a PNG, JPEG or WebP image");
+  }
+}
