@@ -101,14 +101,41 @@ std::optional<nlohmann::json> readableByTinygltf(const nlohmann::json& doc) {
   return out;
 }
 
+// The asset's glTF version: "2.x", and a minVersion this loader (glTF 2.0) meets; a file of another major version
+// is another format, one needing a later minor version may use what 2.0 lacks (glTF 2.0, 3.2).
+void checkAssetVersion(const nlohmann::json& doc, const std::string& path) {
+  const auto asset = doc.is_object() ? doc.find("asset") : doc.end();
+  if (!doc.is_object() || asset == doc.end() || !asset->is_object()) return;  // tinygltf names a missing asset
+  for (const char* key : {"version", "minVersion"}) {
+    const auto v = asset->find(key);
+    if (v == asset->end()) continue;
+    const std::string text = v->is_string() ? v->get<std::string>() : "";
+    const size_t dot = text.find('.');
+    const bool form = dot != std::string::npos && dot > 0 && dot + 1 < text.size() &&
+                      text.find_first_not_of("0123456789.") == std::string::npos &&
+                      text.find('.', dot + 1) == std::string::npos;
+    const std::string major = form ? text.substr(0, dot) : "", minor = form ? text.substr(dot + 1) : "";
+    const bool meets = form && major == "2" && (std::string(key) == "version" || minor == "0");
+    if (!meets) {
+      throw SceneError(path + ": asset." + key + ": " + jsonText(*v) +
+                       (form ? " is not a glTF version this loader reads (2.0)" : " is not a version like \"2.0\""));
+    }
+  }
+}
+
 // A required extension outside kSupportedGltfExtensions refuses the file, checked before its structure: a mesh only
 // the extension decodes (Draco, meshopt) has buffers and accessors that look broken without it, and the message
 // is to name the extension, not what it explains. Anything but an array of strings is left to checkGltfJson.
 void checkRequiredExtensions(const nlohmann::json& doc, const std::string& path) {
   const auto required = doc.is_object() ? doc.find("extensionsRequired") : doc.end();
   if (!doc.is_object() || required == doc.end() || !required->is_array()) return;
-  for (const nlohmann::json& name : *required) {
-    if (!name.is_string() || isSupportedExtension(name.get<std::string>())) continue;
+  for (size_t i = 0; i < required->size(); ++i) {
+    const nlohmann::json& name = (*required)[i];
+    if (!name.is_string()) {
+      throw SceneError(path + ": extensionsRequired[" + std::to_string(i) + "]: must be an extension name (got " +
+                       jsonText(name) + ")");
+    }
+    if (isSupportedExtension(name.get<std::string>())) continue;
     const std::string extension = name.get<std::string>();
     throw SceneError(path + ": extensionsRequired: " + jsonText(extension) + " is not supported" +
                      (extension == "KHR_texture_basisu" ? " (no Debian package transcodes Basis Universal textures)"
@@ -142,6 +169,7 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
     if (chunks.hasBin) context.binChunk = chunks.binLength;
   }
   const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path);
+  checkAssetVersion(doc, path);
   checkRequiredExtensions(doc, path);
   checkGltfJson(doc, context);
 

@@ -951,3 +951,41 @@ TEST_CASE("gltf EXT_meshopt_compression: compressed views beside a data-less fal
   });
   CHECK(contains(message, ".extensions.EXT_meshopt_compression: the compressed data does not decode"));
 }
+
+TEST_CASE("gltf errors: an asset of another glTF version, and a required extension that is no name, are refused") {
+  const TempDir dir;
+  struct Case {
+    std::string key;
+    json value;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {"version", "1.0", "asset.version: \"1.0\" is not a glTF version this loader reads (2.0)"},
+      {"version", "3.0", "asset.version: \"3.0\" is not a glTF version this loader reads (2.0)"},
+      {"version", "two", "asset.version: \"two\" is not a version like \"2.0\""},
+      {"minVersion", "2.1", "asset.minVersion: \"2.1\" is not a glTF version this loader reads (2.0)"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.message);
+    GltfBuilder b = pbr::test::quadModel();
+    b.doc["asset"][c.key] = c.value;
+    const std::string path = b.writeGltf(dir.path(), "version");
+    CHECK(errorOf([&] {
+            pbr::Scene s;
+            pbr::appendGltf(s, path);
+          }) == path + ": " + c.message);
+  }
+  // A later minor version without a minVersion loads (glTF 2.0, 3.2).
+  GltfBuilder later = pbr::test::quadModel();
+  later.doc["asset"]["version"] = "2.1";
+  pbr::Scene s;
+  pbr::appendGltf(s, later.writeGltf(dir.path(), "later"));
+  CHECK(s.objects.size() == 1);
+  GltfBuilder number = pbr::test::quadModel();
+  number.doc["extensionsRequired"] = {5};
+  const std::string path = number.writeGltf(dir.path(), "number");
+  CHECK(errorOf([&] {
+          pbr::Scene t;
+          pbr::appendGltf(t, path);
+        }) == path + ": extensionsRequired[0]: must be an extension name (got 5)");
+}
