@@ -407,6 +407,16 @@ class Checker {
     integer(transform, "texCoord", name, kMaxIndex);
   }
 
+  // Value `key` of `object`, where present, of the JSON type `is` tests (`what` names it for the message).
+  void typed(const json& object, const char* key, const std::string& owner, bool (json::*is)() const noexcept,
+             const char* what) const {
+    const auto it = object.find(key);
+    if (it != object.end() && !((*it).*is)()) fail(join(owner, key), std::string("must be ") + what + " (got " +
+                                                                           quoteJson(*it) + ")");
+  }
+
+  // tinygltf drops a whole material (and with it the mesh's look) without a word when one of its values has the
+  // wrong form, so each is checked here by name.
   void checkMaterials() const {
     const std::vector<const json*> materials = objects(doc_, "materials", "materials");
     for (std::size_t i = 0; i < materials.size(); ++i) {
@@ -414,10 +424,29 @@ class Checker {
       const std::string field = item("materials", i);
       if (material->contains("pbrMetallicRoughness")) {
         const json& pbr = member(*material, "pbrMetallicRoughness", field);
-        textureInfo(pbr, "baseColorTexture", field + ".pbrMetallicRoughness");
-        textureInfo(pbr, "metallicRoughnessTexture", field + ".pbrMetallicRoughness");
+        const std::string owner = field + ".pbrMetallicRoughness";
+        textureInfo(pbr, "baseColorTexture", owner);
+        textureInfo(pbr, "metallicRoughnessTexture", owner);
+        numbers(pbr, "baseColorFactor", owner, 4);
+        for (const char* key : {"metallicFactor", "roughnessFactor"}) {
+          typed(pbr, key, owner, &json::is_number, "a number");
+        }
       }
-      for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) textureInfo(*material, key, field);
+      for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) {
+        textureInfo(*material, key, field);
+      }
+      if (material->contains("normalTexture")) {
+        typed(member(*material, "normalTexture", field), "scale", field + ".normalTexture", &json::is_number,
+              "a number");
+      }
+      if (material->contains("occlusionTexture")) {
+        typed(member(*material, "occlusionTexture", field), "strength", field + ".occlusionTexture",
+              &json::is_number, "a number");
+      }
+      numbers(*material, "emissiveFactor", field, 3);
+      typed(*material, "alphaMode", field, &json::is_string, "a string");
+      typed(*material, "alphaCutoff", field, &json::is_number, "a number");
+      typed(*material, "doubleSided", field, &json::is_boolean, "true or false");
     }
   }
 

@@ -989,3 +989,30 @@ TEST_CASE("gltf errors: an asset of another glTF version, and a required extensi
           pbr::appendGltf(t, path);
         }) == path + ": extensionsRequired[0]: must be an extension name (got 5)");
 }
+
+TEST_CASE("gltf errors: a material value of the wrong form is refused by name, not the material dropped") {
+  const TempDir dir;
+  const std::string pbr = "materials[0].pbrMetallicRoughness.";
+  const std::vector<std::tuple<json, std::string>> cases = {
+      {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0}}}}},
+       pbr + "baseColorFactor: must be an array of 4 numbers (got [1,0,0])"},
+      {{{"pbrMetallicRoughness", {{"roughnessFactor", "0.5"}}}},
+       pbr + "roughnessFactor: must be a number (got \"0.5\")"},
+      {{{"emissiveFactor", {1, 1}}}, "materials[0].emissiveFactor: must be an array of 3 numbers (got [1,1])"},
+      {{{"doubleSided", "yes"}}, "materials[0].doubleSided: must be true or false (got \"yes\")"},
+      {{{"alphaCutoff", {0.5}}}, "materials[0].alphaCutoff: must be a number (got [0.5])"},
+  };
+  int n = 0;
+  for (const auto& [material, message] : cases) {
+    CAPTURE(message);
+    GltfBuilder b;
+    QuadSpec spec;
+    spec.material = b.addMaterial(material);
+    b.addRootNode({{"mesh", pbr::test::addQuad(b, spec)}});
+    const std::string path = b.writeGltf(dir.path(), "material" + std::to_string(n++));
+    CHECK(errorOf([&] {
+            pbr::Scene s;
+            pbr::appendGltf(s, path);
+          }) == path + ": " + message);
+  }
+}
