@@ -120,7 +120,7 @@ void applyEnvironmentOptions(const Args& args, Scene& scene) {
 
 float applyExposureOptions(const Args& args, Scene& scene) {
   if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", -kMaxEv100, kMaxEv100);
-  if (args.has("--exposure")) scene.exposure = args.getFloat("--exposure", 0.0f, 1e6f);
+  if (args.has("--exposure")) scene.exposure = args.getFloat("--exposure", 0.0f, kMaxExposure);
   return scene.displayExposure();
 }
 

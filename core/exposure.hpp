@@ -5,6 +5,9 @@ namespace pbr {
 
 // EV100 beyond this is no camera setting (a sunny day is about 15, moonlight about -2): refused, not clamped.
 constexpr float kMaxEv100 = 64.0f;
+// The largest exposure multiplier a scene file or --exposure may give: beyond it the brightest finite radiance
+// (fp16's 65504) times the exposure leaves float range in the tone curve, and the frame turns black.
+constexpr float kMaxExposure = 1e6f;
 
 // Lagarde and de Rousiers 2014, "Moving Frostbite to Physically Based Rendering", sec. 4.2: the exposure value at
 // ISO 100 of f-number N, shutter time t (seconds) and sensitivity S, EV100 = log2(N^2 / t * 100 / S).

@@ -493,6 +493,15 @@ class Checker {
       numbers(*node, "translation", field, 3);
       numbers(*node, "rotation", field, 4);
       numbers(*node, "scale", field, 3);
+      // The specification forbids a matrix beside TRS; viewers use the matrix, as the loader does.
+      const bool trs = node->contains("translation") || node->contains("rotation") || node->contains("scale");
+      if (node->contains("matrix") && trs && context_.policy.strict) {
+        fail(field + ".matrix", "given with translation, rotation or scale (the specification allows one or the "
+                                "other)");
+      } else if (node->contains("matrix") && trs) {
+        warnOnce(context_.path + ": " + field + ".matrix: given with translation, rotation or scale; the matrix is "
+                 "used and they are ignored (--strict refuses it)");
+      }
     }
   }
 

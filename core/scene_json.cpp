@@ -304,7 +304,7 @@ Scene readJsonScene(const std::string& path, int lightCount, const UriPolicy& po
   scene.name = fs::path(path).stem().string();
   scene.camera = readCamera(root["camera"]);
   scene.ev100 = readEv100(root["camera"]);
-  scene.exposure = root["exposure"].number(R::atLeast(0.0), scene.exposure);
+  scene.exposure = root["exposure"].number(R::closed(0.0, kMaxExposure), scene.exposure);
   scene.ambient = root["ambient"].vec3OrNumber(R::atLeast(0.0), scene.ambient);
   const JsonField environment = root["environment"];
   if (environment.present()) scene.environment = readEnvironment(environment, folder);

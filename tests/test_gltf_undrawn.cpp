@@ -122,3 +122,24 @@ TEST_CASE("scene file: a scene with no light, environment, ambient light or emis
     CHECK(err.text().empty());
   }
 }
+
+TEST_CASE("gltf leniency: a node with a matrix beside translation, rotation or scale uses the matrix, with one line") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  b.doc["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1};  // moved 2 along x
+  b.doc["nodes"][0]["translation"] = {0, 5, 0};
+  const std::string path = b.writeGltf(dir.path(), "both");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  REQUIRE(scene.objects.size() == 1);
+  CHECK(scene.objects[0].transform[3] == glm::vec4(2.0f, 0.0f, 0.0f, 1.0f));
+  CHECK(err.text() == path + ": nodes[0].matrix: given with translation, rotation or scale; the matrix is used and "
+                             "they are ignored (--strict refuses it)\n");
+  pbr::Scene strict;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(strict, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}),
+                       (path + ": nodes[0].matrix: given with translation, rotation or scale (the specification "
+                               "allows one or the other)")
+                           .c_str(),
+                       pbr::SceneError);
+}

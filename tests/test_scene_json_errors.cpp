@@ -36,7 +36,9 @@ struct BadCase {
 
 const BadCase kBadCases[] = {
     // wrong types
-    {R"("exposure": 1)", R"("exposure": "bright")", R"(exposure: expected a finite number >= 0, got "bright")"},
+    {R"("exposure": 1)", R"("exposure": "bright")", R"(exposure: expected a number in [0, 1e+06], got "bright")"},
+    // An exposure that would carry the brightest radiance out of float range in the tone curve: a black frame.
+    {R"("exposure": 1)", R"("exposure": 1e25)", R"(exposure: expected a number in [0, 1e+06], got 1e+25)"},
     {R"("translate": [0, 1, 0])", R"("translate": [0, 1])", "objects[0].transform.translate: expected an array of 3 numbers, got [0,1]"},
     {R"("color": [1, 1, 1])", R"("color": [1, "x", 1])", R"(lights[0].color[1]: expected a finite number >= 0, got "x")"},
     {R"("camera": {"position": [0, 2, 6], "target": [0, 0, 0], "fov_y_deg": 50, "near": 0.1, "far": 100})",
