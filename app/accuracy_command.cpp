@@ -229,7 +229,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
                 shadowCostSize.y, cost.rounds);
     std::vector<FrameOptions> options;
     for (const ShadowRow& row : shadowRows) options.push_back(shadowRowOptions(row, shadowScene.scene));
-    shadowCosts = measureShadowCost(shaders, shadowScene.scene, shadowCostSize, shadowRowConfig(), options,
+    shadowCosts = measureShadowCost(shaders, shadowScene.scene, shadowCostSize, exactVariantConfig(), options,
                                     cost.rounds, mode);
   }
   std::vector<TransparencyCost> transparencyCosts;
@@ -322,7 +322,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
     std::printf("\n%-20s %-12s %11s %12s %17s %10s %13s %8s\n", "shadow row", "scene", "shadow ms", "lighting ms",
                 "both (p10-p90)", "rel RMSE", "misclassified", "pixels");
     const ShadowComparison comparison(shaders, shadowScene.scene, size, referenceOptions, mode);
-    const AccuracyVariant& exact = shadowRowVariant();
+    const AccuracyVariant& exact = exactVariant();
     for (size_t i = 0; i < shadowRows.size(); ++i) {
       const ShadowRow& row = shadowRows[i];
       const ShadowRowResult r = comparison.measure(row);
@@ -344,7 +344,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
     std::printf("\n%-20s %-12s %25s %22s %10s %8s %6s %8s\n", "transparency row", "scene",
                 "transparency ms (p10-p90)", "frame ms (p10-p90)", "rel RMSE", "mean lv", "max", ">2 lv");
     const TransparencyComparison comparison(shaders, transparencyScene.scene, size, referenceOptions, mode);
-    const AccuracyVariant& exact = shadowRowVariant();
+    const AccuracyVariant& exact = exactVariant();
     for (size_t i = 0; i < transparencyRows.size(); ++i) {
       const TransparencyRow& row = transparencyRows[i];
       const TransparencyRowResult r = comparison.measure(row);

@@ -96,4 +96,21 @@ AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params) {
   return {label, std::move(scene)};
 }
 
+const AccuracyVariant& exactVariant() { return accuracyLadder().front(); }
+
+RendererConfig exactVariantConfig() {
+  RendererConfig config;
+  config.hdrFormat = exactVariant().hdr;
+  config.gbuffer = exactVariant().gbuffer;
+  return config;
+}
+
+FrameOptions exactVariantOptions(const Scene& scene) {
+  FrameOptions options;
+  options.model = exactVariant().model;
+  options.variant = exactVariant().shading;
+  options.exposure = scene.displayExposure();
+  return options;
+}
+
 }  // namespace pbr

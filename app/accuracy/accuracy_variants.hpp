@@ -1,4 +1,7 @@
 #pragma once
+#include <functional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -7,6 +10,7 @@
 #include "core/scene.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/shading_model.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 
@@ -27,6 +31,26 @@ PairCostVariant pairCostVariant(const AccuracyVariant& v);
 const std::vector<AccuracyVariant>& accuracyLadder();
 // A comma-separated list of ladder names, or "all"; throws std::invalid_argument for an unknown name.
 std::vector<AccuracyVariant> selectVariants(const std::string& names);
+
+// The rows that measure a setting other than the shading (shadow rows, transparency rows) render with the ladder's
+// first variant, "exact", the reference's model, so that the setting is what differs from the reference: its
+// renderer configuration (HDR target, G-buffer), and its frame options (model, terms) at the scene's exposure.
+const AccuracyVariant& exactVariant();
+RendererConfig exactVariantConfig();
+FrameOptions exactVariantOptions(const Scene& scene);
+
+// A comma-separated list of rows, each read by `parseItem` (which throws std::invalid_argument naming a bad item),
+// or "none" for no rows; an empty list is refused, naming the `kind` of row.
+template <class Row>
+std::vector<Row> parseRowList(const std::string& list, const std::string& kind,
+                              const std::function<Row(const std::string&)>& parseItem) {
+  std::vector<Row> rows;
+  if (list == "none") return rows;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) rows.push_back(parseItem(item));
+  if (rows.empty()) throw std::invalid_argument("no " + kind + " row listed (none for no rows)");
+  return rows;
+}
 
 struct AccuracyScene {
   std::string label;  // file-name safe: fresnel-floor:40 becomes fresnel-floor-40

@@ -1,6 +1,5 @@
 #include "app/accuracy/shadow_rows.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
 #include "renderer/display_image.hpp"
@@ -43,28 +42,11 @@ ShadowRow parseShadowRow(const std::string& item) {
 }  // namespace
 
 std::vector<ShadowRow> parseShadowRows(const std::string& list) {
-  std::vector<ShadowRow> rows;
-  if (list == "none") return rows;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) rows.push_back(parseShadowRow(item));
-  if (rows.empty()) throw std::invalid_argument("no shadow row listed (none for no rows)");
-  return rows;
-}
-
-const AccuracyVariant& shadowRowVariant() { return accuracyLadder().front(); }
-
-RendererConfig shadowRowConfig() {
-  RendererConfig config;
-  config.hdrFormat = shadowRowVariant().hdr;
-  config.gbuffer = shadowRowVariant().gbuffer;
-  return config;
+  return parseRowList<ShadowRow>(list, "shadow", parseShadowRow);
 }
 
 FrameOptions shadowRowOptions(const ShadowRow& row, const Scene& scene) {
-  FrameOptions options;
-  options.model = shadowRowVariant().model;
-  options.variant = shadowRowVariant().shading;
-  options.exposure = scene.displayExposure();
+  FrameOptions options = exactVariantOptions(scene);
   options.shadows = row.settings;
   return options;
 }
@@ -96,13 +78,13 @@ ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& sc
     LightAlone l{std::move(s), {}, {}};
     l.reference = reference::renderReference(l.scene, size.x, size.y, options);
     const FrameOptions plain = shadowRowOptions(unshadowed, l.scene);
-    l.unshadowed = renderOffscreen(shaders, l.scene, size, plain, 2, shadowRowConfig(), timing).hdr;
+    l.unshadowed = renderOffscreen(shaders, l.scene, size, plain, 2, exactVariantConfig(), timing).hdr;
     lights_.push_back(std::move(l));
   }
 }
 
 ShadowRowResult ShadowComparison::measure(const ShadowRow& row) const {
-  const RendererConfig config = shadowRowConfig();
+  const RendererConfig config = exactVariantConfig();
   ShadowRowResult r;
   const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, shadowRowOptions(row, scene_), 3, config, timing_);
   r.error = measureError(f.hdr, f.ldr, reference_, referenceLdr_);

@@ -25,12 +25,9 @@ extern const char* const kDefaultShadowRows;
 // 16384), or "none" for no rows; throws std::invalid_argument naming the bad item.
 std::vector<ShadowRow> parseShadowRows(const std::string& list);
 
-// The variant every shadow row is rendered with: the ladder's first, "exact".
-const AccuracyVariant& shadowRowVariant();
-// The frame options of a row: that variant, the row's shadow settings, the scene's exposure; and the renderer
-// configuration of that variant (its HDR target and G-buffer).
+// The frame options of a row: the exact variant's (exactVariantOptions) with the row's shadow settings; rendered
+// with exactVariantConfig().
 FrameOptions shadowRowOptions(const ShadowRow& row, const Scene& scene);
-RendererConfig shadowRowConfig();
 
 // Pixels within this many of a change of the reference's lit/shadowed state are not compared (the penumbra band).
 constexpr int kShadowBandPx = 2;

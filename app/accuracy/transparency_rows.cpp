@@ -1,6 +1,5 @@
 #include "app/accuracy/transparency_rows.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
 #include "app/accuracy/frames_in_turn.hpp"
@@ -13,10 +12,7 @@ namespace pbr {
 const char* const kDefaultTransparencyRows = "sorted,oit,exact";
 
 std::vector<TransparencyRow> parseTransparencyRows(const std::string& list) {
-  std::vector<TransparencyRow> rows;
-  if (list == "none") return rows;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) {
+  return parseRowList<TransparencyRow>(list, "transparency", [](const std::string& item) {
     TransparencyRow row;
     try {
       row.transparency = parseTransparency(item);
@@ -24,17 +20,12 @@ std::vector<TransparencyRow> parseTransparencyRows(const std::string& list) {
       throw std::invalid_argument("transparency row '" + item + "': expected sorted, oit or exact");
     }
     row.name = std::string("transparency-") + toString(row.transparency);
-    rows.push_back(row);
-  }
-  if (rows.empty()) throw std::invalid_argument("no transparency row listed (none for no rows)");
-  return rows;
+    return row;
+  });
 }
 
 FrameOptions transparencyRowOptions(const TransparencyRow& row, const Scene& scene) {
-  FrameOptions options;
-  options.model = shadowRowVariant().model;
-  options.variant = shadowRowVariant().shading;
-  options.exposure = scene.displayExposure();
+  FrameOptions options = exactVariantOptions(scene);
   options.shadows.mode = ShadowMode::None;
   options.transparency = row.transparency;
   return options;
@@ -52,7 +43,7 @@ TransparencyComparison::TransparencyComparison(const ShaderLibrary& shaders, con
 
 TransparencyRowResult TransparencyComparison::measure(const TransparencyRow& row) const {
   const RenderedFrames f =
-      renderOffscreen(shaders_, scene_, size_, transparencyRowOptions(row, scene_), 3, shadowRowConfig(), timing_);
+      renderOffscreen(shaders_, scene_, size_, transparencyRowOptions(row, scene_), 3, exactVariantConfig(), timing_);
   return {measureError(f.hdr, f.ldr, reference_, referenceLdr_), relativeErrorPerPixel(f.hdr, reference_)};
 }
 
@@ -63,7 +54,7 @@ std::vector<TransparencyCost> measureTransparencyCost(const ShaderLibrary& shade
   for (const TransparencyRow& row : rows) options.push_back(transparencyRowOptions(row, scene));
   std::vector<TransparencyCost> out;
   for (const std::vector<FrameTiming>& frames :
-       timeFramesInTurn(shaders, scene, size, shadowRowConfig(), options, rounds, timing)) {
+       timeFramesInTurn(shaders, scene, size, exactVariantConfig(), options, rounds, timing)) {
     std::vector<double> transparency, frame;
     for (const FrameTiming& f : frames) {
       transparency.push_back(f.pass("transparency"));

@@ -24,8 +24,8 @@ extern const char* const kDefaultTransparencyRows;
 // Comma-separated orderings (sorted, oit, exact), or "none" for no rows; throws std::invalid_argument naming the bad item.
 std::vector<TransparencyRow> parseTransparencyRows(const std::string& list);
 
-// A row's frame options: the exact variant, no shadows, the row's ordering, the scene's exposure. The renderer
-// configuration is the exact variant's (shadowRowConfig()).
+// A row's frame options: the exact variant's (exactVariantOptions), no shadows, the row's ordering; rendered with
+// exactVariantConfig().
 FrameOptions transparencyRowOptions(const TransparencyRow& row, const Scene& scene);
 
 struct TransparencyRowResult {
