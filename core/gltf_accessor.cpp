@@ -36,9 +36,6 @@ std::string typeName(int type) {
   }
 }
 
-// Components per element of SCALAR, VECn and MAT4 accessors (the types this reader takes).
-int componentsOf(int type) { return type == TINYGLTF_TYPE_SCALAR ? 1 : type == TINYGLTF_TYPE_MAT4 ? 16 : type; }
-
 size_t componentSize(int componentType) {
   switch (componentType) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
@@ -195,6 +192,21 @@ void forEachSparse(const GltfFile& file, int index, const tinygltf::Accessor& a,
 }
 
 }  // namespace
+
+int componentsOf(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+    case TINYGLTF_TYPE_VEC3:
+    case TINYGLTF_TYPE_VEC4:
+      return type;
+    case TINYGLTF_TYPE_MAT4:
+      return 16;
+    default:
+      return 0;
+  }
+}
 
 ByteSpan bufferViewBytes(const GltfFile& file, int index, const std::string& field) {
   const auto& views = file.model.bufferViews;

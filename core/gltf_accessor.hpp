@@ -18,6 +18,9 @@ struct ByteSpan {
   size_t size;
 };
 
+// Components per element of a SCALAR, VEC2-4 or MAT4 accessor type (a TINYGLTF_TYPE_ value), 0 for the others.
+int componentsOf(int type);
+
 // The bytes of buffer view `view`.
 ByteSpan bufferViewBytes(const GltfFile& file, int view, const std::string& field);
 

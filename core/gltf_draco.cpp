@@ -6,25 +6,6 @@
 
 namespace pbr {
 
-namespace {
-
-int componentsOfType(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    case TINYGLTF_TYPE_VEC4:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-}  // namespace
-
 std::optional<DracoPrimitive> decodeDracoPrimitive(const GltfFile& file, const tinygltf::Primitive& primitive,
                                                    const std::string& field) {
   const auto extension = primitive.extensions.find("KHR_draco_mesh_compression");
@@ -59,7 +40,7 @@ std::optional<DracoPrimitive> decodeDracoPrimitive(const GltfFile& file, const t
     if (accessor->second < 0 || static_cast<size_t>(accessor->second) >= accessors.size()) {
       file.fail(field + ".attributes." + key + ": no accessor " + std::to_string(accessor->second));
     }
-    const int components = componentsOfType(accessors[static_cast<size_t>(accessor->second)].type);
+    const int components = componentsOf(accessors[static_cast<size_t>(accessor->second)].type);
     if (components == 0 || attribute->num_components() < components) {
       file.fail(where + ": Draco attribute of " + std::to_string(attribute->num_components()) +
                 " components where its accessor needs " + std::to_string(components));

@@ -168,7 +168,14 @@ class Loader {
     worlds_.assign(nodeCount, std::nullopt);
     hidden_.assign(nodeCount, false);
     std::vector<int> order;
-    std::vector<int> parents(nodeCount, -1);
+    // Every node's parent, -1 for a root: the walk below marks hidden subtrees by it, worldOf climbs it.
+    parents_.assign(nodeCount, -1);
+    for (size_t i = 0; i < nodeCount; ++i) {
+      for (const int c : file_.model.nodes[i].children) {
+        checkNode(c, gltfElement("nodes", static_cast<int>(i)) + ".children");
+        parents_[static_cast<size_t>(c)] = static_cast<int>(i);
+      }
+    }
     while (!stack.empty()) {
       const auto [index, parent] = stack.back();
       stack.pop_back();
@@ -176,15 +183,13 @@ class Loader {
       if (worlds_[static_cast<size_t>(index)]) file_.fail(name + ": reached twice (the node hierarchy is not a tree)");
       const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
       const glm::mat4 world = parent * posedTransform(index, name);
-      const int up = parents[static_cast<size_t>(index)];
+      const int up = parents_[static_cast<size_t>(index)];
       // An animation may scale a node to nothing, a common way to hide one: it and its children draw nothing.
       hidden_[static_cast<size_t>(index)] = (up >= 0 && hidden_[static_cast<size_t>(up)]) || scaledAway(index, world);
       if (!hidden_[static_cast<size_t>(index)]) checkWorld(world, node, name);
       worlds_[static_cast<size_t>(index)] = world;
       order.push_back(index);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
-        checkNode(*child, name + ".children");
-        parents[static_cast<size_t>(*child)] = index;
         stack.emplace_back(*child, world);
       }
     }
@@ -421,17 +426,10 @@ class Loader {
   // joints may lie outside the scene); the chain's root is placed as the scene's roots are.
   glm::mat4 worldOf(int index) {
     if (worlds_[static_cast<size_t>(index)]) return *worlds_[static_cast<size_t>(index)];
-    std::vector<int> parents(file_.model.nodes.size(), -1);
-    for (size_t i = 0; i < file_.model.nodes.size(); ++i) {
-      for (const int c : file_.model.nodes[i].children) {
-        checkNode(c, gltfElement("nodes", static_cast<int>(i)) + ".children");
-        parents[static_cast<size_t>(c)] = static_cast<int>(i);
-      }
-    }
     glm::mat4 world(1.0f);
     size_t steps = 0;
-    for (int n = index; n >= 0; n = parents[static_cast<size_t>(n)]) {
-      if (++steps > parents.size()) file_.fail(gltfElement("nodes", index) + ": its parents form a cycle");
+    for (int n = index; n >= 0; n = parents_[static_cast<size_t>(n)]) {
+      if (++steps > parents_.size()) file_.fail(gltfElement("nodes", index) + ": its parents form a cycle");
       world = posedTransform(n, gltfElement("nodes", n)) * world;
     }
     world = placement_ * world;
@@ -760,6 +758,7 @@ class Loader {
   glm::mat4 placement_{1.0f};                    // the load's transform, before the scene's roots
   std::vector<AnimatedNode> animated_;           // by node: what the chosen animation sets, nothing at rest
   std::vector<std::optional<glm::mat4>> worlds_;  // by node: its world transform, for the nodes of the scene
+  std::vector<int> parents_;                     // by node: its parent, -1 for a root
   std::vector<bool> hidden_;                     // by node: scaled to nothing by the animation, or under one
   Bounds bounds_;
   bool empty_ = true;

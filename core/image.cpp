@@ -78,6 +78,18 @@ std::string decoderFailureReason() {
 
 namespace {
 
+bool isPng(const unsigned char* b, size_t size) {
+  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  return size >= 8 && std::memcmp(b, signature, 8) == 0;
+}
+
+// A start-of-image marker after one or more 0xFF bytes, as stb_image takes it.
+bool isJpeg(const unsigned char* b, size_t size) {
+  size_t start = 0;
+  while (start < size && b[start] == 0xFF) ++start;
+  return start > 0 && start < size && b[start] == 0xD8;
+}
+
 // Returns what in a JPEG's marker segments stb_image would mishandle, or "" (also for data that is no JPEG). Walks
 // the segments, skipping entropy-coded data, stuffed bytes and restart markers; stb takes any run of 0xFF fill
 // bytes before a marker, the start-of-image marker included. Two things stb does not check itself:
@@ -86,9 +98,9 @@ namespace {
 // - a scan may name a Huffman table no DHT segment defined (T.81 B.2.3 requires it defined), and stb then decodes
 //   with that table's uninitialised memory, indexing its symbol array anywhere.
 std::string jpegSegmentProblem(const unsigned char* b, size_t size) {
+  if (!isJpeg(b, size)) return "";
   size_t start = 0;
-  while (start < size && b[start] == 0xFF) ++start;
-  if (start == 0 || start == size || b[start] != 0xD8) return "";  // not a JPEG
+  while (b[start] == 0xFF) ++start;  // to the start-of-image marker
   bool defined[2][4] = {};  // [class: 0 DC, 1 AC][table id], as DHT segments so far define them
   bool progressive = false;
   for (size_t pos = start + 1; pos + 1 < size;) {
@@ -148,8 +160,7 @@ std::string jpegSegmentProblem(const unsigned char* b, size_t size) {
 // length, doubling, before it finds the bytes missing, so a few hundred bytes can ask for gigabytes. Empty when
 // every chunk fits (or the data is no PNG).
 std::string pngChunkProblem(const unsigned char* b, size_t size) {
-  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (size < 8 || std::memcmp(b, signature, 8) != 0) return {};
+  if (!isPng(b, size)) return {};
   size_t pos = 8;
   while (pos + 12 <= size) {
     const size_t length = size_t(b[pos]) << 24 | size_t(b[pos + 1]) << 16 | size_t(b[pos + 2]) << 8 | b[pos + 3];
@@ -166,8 +177,7 @@ std::string pngChunkProblem(const unsigned char* b, size_t size) {
 // allocated yet when it comes first, which is undefined behaviour. Returns the file without its empty IDAT chunks,
 // or nothing when it has none (or is no PNG). Every chunk fits (pngChunkProblem).
 std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned char* b, size_t size) {
-  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (size < 8 || std::memcmp(b, signature, 8) != 0) return std::nullopt;
+  if (!isPng(b, size)) return std::nullopt;
   std::vector<unsigned char> kept(b, b + 8);
   bool dropped = false;
   size_t pos = 8;
@@ -182,18 +192,6 @@ std::optional<std::vector<unsigned char>> withoutEmptyPngData(const unsigned cha
   if (!dropped) return std::nullopt;
   kept.insert(kept.end(), b + pos, b + size);
   return kept;
-}
-
-bool isPng(const unsigned char* b, size_t size) {
-  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  return size >= 8 && std::memcmp(b, signature, 8) == 0;
-}
-
-// A start-of-image marker after one or more 0xFF bytes, as stb_image takes it.
-bool isJpeg(const unsigned char* b, size_t size) {
-  size_t start = 0;
-  while (start < size && b[start] == 0xFF) ++start;
-  return start > 0 && start < size && b[start] == 0xD8;
 }
 
 bool isWebp(const unsigned char* b, size_t size) {
