@@ -86,44 +86,42 @@ def is_transparency_row(row):
     return row.get("transparency", "-") != "-"
 
 
-def shadow_panel(ax, rows, title, xlabel):
-    xs = [float(r["passes_ms_median"]) for r in rows]
-    xerr = [[x - float(r["passes_ms_p10"]) for x, r in zip(xs, rows)],
-            [float(r["passes_ms_p90"]) - x for x, r in zip(xs, rows)]]
-    rmse = [float(r["relative_rmse"]) for r in rows]
-    share = [100.0 * float(r["misclassified_share"]) for r in rows]
-    ax.set_yscale("log")
-    rmse_points = ax.errorbar(xs, rmse, xerr=xerr, fmt="s", color="tab:purple", ecolor="tab:gray", capsize=3,
-                              zorder=3, label="relative RMSE of the shadowed frame (left)")
-    place_labels(ax, [(x, y, r["variant"]) for x, y, r in zip(xs, rmse, rows)])
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("relative RMSE vs CPU reference (shadow rays)")
-    ax.grid(True, alpha=0.3, which="both")
-    right = ax.twinx()
-    share_points, = right.plot(xs, share, "^", color="tab:red", label="lit/shadowed state misclassified (right)")
-    right.set_ylabel("pixels misclassified, % (outside the penumbra band)")
-    right.set_ylim(bottom=0.0)
-    ax.legend(handles=[rmse_points, share_points], fontsize=8, loc="upper right")
-    ax.set_title(title, fontsize=10)
+# How a panel of setting rows (shadow or transparency) plots: the time it costs along x, the frame's relative RMSE
+# on the left axis and a share of pixels on the right.
+SHADOW_PANEL = {
+    "time": "passes_ms", "marker": "s", "colour": "tab:purple",
+    "rmse_label": "relative RMSE of the shadowed frame (left)",
+    "rmse_axis": "relative RMSE vs CPU reference (shadow rays)",
+    "share": "misclassified_share", "share_label": "lit/shadowed state misclassified (right)",
+    "share_axis": "pixels misclassified, % (outside the penumbra band)",
+    "point_label": lambda r: r["variant"],
+}
+TRANSPARENCY_PANEL = {
+    "time": "transparency_ms", "marker": "D", "colour": "tab:cyan",
+    "rmse_label": "relative RMSE of the frame (left)",
+    "rmse_axis": "relative RMSE vs CPU reference (exact compositing)",
+    "share": "share_over_2", "share_label": "pixels more than 2 8-bit levels off (right)",
+    "share_axis": "pixels more than 2 levels off, %",
+    "point_label": lambda r: "%s (frame %.1f ms)" % (r["variant"], float(r["frame_ms_median"])),
+}
 
 
-def transparency_panel(ax, rows, title, xlabel):
-    xs = [float(r["transparency_ms_median"]) for r in rows]
-    xerr = [[x - float(r["transparency_ms_p10"]) for x, r in zip(xs, rows)],
-            [float(r["transparency_ms_p90"]) - x for x, r in zip(xs, rows)]]
+def setting_panel(ax, rows, title, xlabel, style):
+    xs = [float(r[style["time"] + "_median"]) for r in rows]
+    xerr = [[x - float(r[style["time"] + "_p10"]) for x, r in zip(xs, rows)],
+            [float(r[style["time"] + "_p90"]) - x for x, r in zip(xs, rows)]]
     rmse = [float(r["relative_rmse"]) for r in rows]
-    share = [100.0 * float(r["share_over_2"]) for r in rows]
+    share = [100.0 * float(r[style["share"]]) for r in rows]
     ax.set_yscale("log")
-    rmse_points = ax.errorbar(xs, rmse, xerr=xerr, fmt="D", color="tab:cyan", ecolor="tab:gray", capsize=3,
-                              zorder=3, label="relative RMSE of the frame (left)")
-    place_labels(ax, [(x, y, "%s (frame %.1f ms)" % (r["variant"], float(r["frame_ms_median"])))
-                      for x, y, r in zip(xs, rmse, rows)])
+    rmse_points = ax.errorbar(xs, rmse, xerr=xerr, fmt=style["marker"], color=style["colour"], ecolor="tab:gray",
+                              capsize=3, zorder=3, label=style["rmse_label"])
+    place_labels(ax, [(x, y, style["point_label"](r)) for x, y, r in zip(xs, rmse, rows)])
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("relative RMSE vs CPU reference (exact compositing)")
+    ax.set_ylabel(style["rmse_axis"])
     ax.grid(True, alpha=0.3, which="both")
     right = ax.twinx()
-    share_points, = right.plot(xs, share, "^", color="tab:red", label="pixels more than 2 8-bit levels off (right)")
-    right.set_ylabel("pixels more than 2 levels off, %")
+    share_points, = right.plot(xs, share, "^", color="tab:red", label=style["share_label"])
+    right.set_ylabel(style["share_axis"])
     right.set_ylim(bottom=0.0)
     ax.legend(handles=[rmse_points, share_points], fontsize=8, loc="upper right")
     ax.set_title(title, fontsize=10)
@@ -166,13 +164,13 @@ def main():
         title = "shadow settings, exact variant: %s" % meta.get("shadow_cost_frame", "?")
         shadow_xlabel = "ms per frame, shadow + lighting passes (p10-p90)" + (
             ", CPU rasterizer (llvmpipe)" if cpu else "")
-        shadow_panel(axes[2], shadow_rows, title, shadow_xlabel)
+        setting_panel(axes[2], shadow_rows, title, shadow_xlabel, SHADOW_PANEL)
     if transparency_rows:
         title = "orderings of BLEND surfaces, exact variant, no shadows:\n%s" % meta.get(
             "transparency_cost_frame", "?")
         transparency_xlabel = "ms per frame, transparency pass (p10-p90)" + (
             ", CPU rasterizer (llvmpipe)" if cpu else "")
-        transparency_panel(axes[-1], transparency_rows, title, transparency_xlabel)
+        setting_panel(axes[-1], transparency_rows, title, transparency_xlabel, TRANSPARENCY_PANEL)
     fig.suptitle("pbr accuracy: cost from %s; %s" % (meta.get("pair_cost_frame", "?"), meta.get("gl_renderer", "?")),
                  fontsize=9)
     fig.tight_layout()
