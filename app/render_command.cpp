@@ -50,6 +50,11 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
+      {"--assign-shape", "auto|invocation|workgroup",
+       "how the clustered light assignment spreads its work: four lights and one list per invocation (llvmpipe's "
+       "shape), a workgroup per light and per list (a GPU's), or per pass the one the two frames after a light "
+       "count's first time faster on this machine",
+       toString(renderer.clusters.lightPass), ""},
       {"--aa", "none|fxaa",
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
        "never filtered", toString(kDisplayAntiAliasing), ""},
@@ -132,6 +137,7 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 d.x, d.y, d.z, s.activeClusters, s.clusters ? 100.0 * s.activeClusters / s.clusters : 0.0,
                 s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
                 static_cast<unsigned long long>(s.indexEntries));
+    std::printf("assignment: %s\n", renderer.clusters().shapeSummary().c_str());
     if (s.overflowedClusters) {
       std::printf("clusters: %u clusters did not fit the light index list or the light masks and were shaded by "
                   "brute force\n", s.overflowedClusters);
@@ -219,6 +225,7 @@ int runRender(const std::vector<std::string>& argv) {
   ClusterConfig& clusterConfig = rendererConfig.clusters;
   clusterConfig.tileSize = args.getInt("--tile", 8, 512);
   clusterConfig.slices = args.getInt("--slices", 1, 256);
+  clusterConfig.lightPass = clusterConfig.fill = parseAssignShape(args.get("--assign-shape"));
   const bool stats = args.has("--stats");
   const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
   const ShadowSettings shadows = readShadowSettings(args);

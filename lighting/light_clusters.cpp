@@ -17,9 +17,17 @@ namespace {
 // 323-353 to 233-295 ms and the 65,536-light one from 46-50 to 34-46 ms (8: 232-334 ms), A B A B.
 constexpr uint32_t kLightsPerInvocation = 4;
 
-ShaderDefines lightPassDefines(bool spotLights, bool count, bool mark, bool stats, bool big) {
-  return concat(LightClusters::lightPassPermutation(spotLights, count, mark, stats, big), lightingBindingDefines());
+ShaderDefines lightPassDefines(bool spotLights, bool count, bool mark, bool stats, bool big, bool everyLight) {
+  return concat(LightClusters::lightPassPermutation(spotLights, count, mark, stats, big, everyLight),
+                lightingBindingDefines());
 }
+
+ShaderDefines fillDefines(bool workgroupPerSlot) {
+  return concat({{"WORKGROUP_PER_SLOT", workgroupPerSlot ? "1" : "0"}}, lightingBindingDefines());
+}
+
+// The most workgroups one dispatch dimension is sure to take (GL_MAX_COMPUTE_WORK_GROUP_COUNT's least maximum).
+constexpr uint32_t kMaxGroups = 65535;
 
 GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
 
@@ -50,7 +58,6 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       activateProgram_(programs.compute("lighting/cluster_activate.comp", lightingBindingDefines())),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
-      fillProgram_(programs.compute("lighting/cluster_fill.comp", lightingBindingDefines())),
       status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
@@ -205,9 +212,15 @@ void LightClusters::growTo(uint32_t demand) {
 
 void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
                            const Texture& depth, const BlendedSurfaces* blended, bool stats) {
-  if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
+  const bool newGrid = !headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_;
+  if (newGrid) rebuildGrid(f);
   growFromPastDemand();
   const uint32_t count = lights.count();
+  const bool trialing = config_.lightPass == AssignShape::Automatic || config_.fill == AssignShape::Automatic;
+  const auto mark = [this, trialing](AssignShapeTrials::Mark at) {
+    if (trialing) trials_.mark(at);
+  };
+  if (trialing) trials_.beginFrame(count, newGrid);
   ensureLightBuffers(count);
   planMasks(count, expectedActive_);
   const uint32_t clusters = blockData_.counts.y;
@@ -238,7 +251,20 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
     }
   }
   const uint32_t windows = std::max(1u, (count + windowLights_ - 1) / windowLights_);
+  if (trialing && trials_.trialFrame()) {
+    // Compiled before the timestamps, so that neither shape's time holds a compilation: the counting (and, in one
+    // window, marking) pass and the windows' marking passes, in both shapes.
+    for (const bool windowPass : {false, windows > 1}) {
+      for (const auto& [big, every] : {std::pair{false, false}, {true, false}, {true, true}}) {
+        programs_.compute("lighting/cluster_lights.comp",
+                          lightPassDefines(lights.hasSpotLights(), !windowPass, windowPass || windows == 1,
+                                           stats && !windowPass, big, every));
+      }
+    }
+  }
+  mark(AssignShapeTrials::LightPassBegin);
   dispatchLights(lights.hasSpotLights(), true, windows == 1, stats, 0, count);
+  mark(AssignShapeTrials::LightPassEnd);
   dispatchScan(stats);
   // Likewise the list: a frame without a past one to size it from waits for its own demand.
   if (sizing) {
@@ -252,6 +278,8 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
       dispatchScan(stats);
     }
   }
+  // With windows, the fill's time holds their marking light passes.
+  mark(AssignShapeTrials::FillBegin);
   for (uint32_t w = 0; w < windows; ++w) {
     const uint32_t begin = w * windowLights_, end = std::min(count, begin + windowLights_);
     if (windows > 1) {
@@ -260,6 +288,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
     }
     fillWindow(end - begin, w == 0, w + 1 == windows);
   }
+  mark(AssignShapeTrials::FillEnd);
 
   PendingStatus& slot = pending_[pendingNext_];
   pendingNext_ = (pendingNext_ + 1) % pending_.size();
@@ -356,22 +385,60 @@ void LightClusters::setWindow(uint32_t begin, uint32_t end) {
   block_.update(blockData_);
 }
 
-ShaderDefines LightClusters::lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big) {
+ShaderDefines LightClusters::lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big,
+                                                  bool everyLight) {
   return {{"SPOT_LIGHTS", spotLights ? "1" : "0"}, {"LIGHT_COUNT", count ? "1" : "0"},
           {"LIGHT_MARK", mark ? "1" : "0"},        {"ASSIGN_STATS", stats ? "1" : "0"},
-          {"BIG_LIGHTS", big ? "1" : "0"},          {"LIGHTS_PER_INVOCATION", std::to_string(kLightsPerInvocation)}};
+          {"BIG_LIGHTS", big ? "1" : "0"},          {"EVERY_LIGHT", everyLight ? "1" : "0"},
+          {"LIGHTS_PER_INVOCATION", std::to_string(kLightsPerInvocation)}};
+}
+
+AssignShape LightClusters::lightPassShape() const {
+  return config_.lightPass == AssignShape::Automatic ? trials_.lightPass() : config_.lightPass;
+}
+
+AssignShape LightClusters::fillShape() const {
+  return config_.fill == AssignShape::Automatic ? trials_.fill() : config_.fill;
+}
+
+std::string LightClusters::shapeSummary() const {
+  std::string out = std::string("light pass ") + toString(lightPassShape()) + ", fill " + toString(fillShape());
+  if (config_.lightPass != AssignShape::Automatic && config_.fill != AssignShape::Automatic) return out + " (forced)";
+  if (!trials_.decided()) return out + " (timing both shapes: the invocation shape until both are measured)";
+  char measured[160];
+  const auto l = trials_.lightPassMs(), f = trials_.fillMs();
+  if (l[1] < 0.0) {
+    std::snprintf(measured, sizeof measured, " (timed here, invocation / workgroup: light pass %.3f ms / not tried "
+                  "over %u lights, fill %.3f / %.3f ms)", l[0], AssignShapeTrials::kMaxWorkgroupLightPass, f[0], f[1]);
+  } else {
+    std::snprintf(measured, sizeof measured, " (timed here, invocation / workgroup: light pass %.3f / %.3f ms, fill "
+                  "%.3f / %.3f ms)", l[0], l[1], f[0], f[1]);
+  }
+  return out + measured;
 }
 
 void LightClusters::dispatchLights(bool spotLights, bool count, bool mark, bool stats, uint32_t begin, uint32_t end) {
   const DebugGroup group(count ? "cluster lights" : "cluster lights (window)");
+  if (lightPassShape() == AssignShape::Workgroup) {
+    const Program& perLight =
+        programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true, true));
+    perLight.use();
+    for (uint32_t first = begin; first < end; first += std::min(end - first, kMaxGroups)) {
+      const uint32_t groups = std::min(end - first, kMaxGroups);
+      glProgramUniform4ui(perLight.id(), 0, first, first + groups, 0, 0);
+      glDispatchCompute(groups, 1, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return;
+  }
   const uint32_t reset[4] = {0, 1, 1, 0};
   glNamedBufferSubData(bigLights_->id(), 0, sizeof reset, reset);
-  const Program& inline_ = programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, false));
+  const Program& inline_ = programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, false, false));
   inline_.use();
   glProgramUniform4ui(inline_.id(), 0, begin, end, 0, 0);
   glDispatchCompute(groupsFor(end - begin, 64 * kLightsPerInvocation), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true)).use();
+  programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true, false)).use();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bigLights_->id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -389,12 +456,14 @@ void LightClusters::dispatchScan(bool stats) {
 // runs its (empty) fill. The fill leaves the window's masks zero.
 void LightClusters::fillWindow(uint32_t windowLights, bool first, bool last) {
   const DebugGroup group("cluster fill");
-  fillProgram_.use();
+  const bool perSlot = fillShape() == AssignShape::Workgroup;
+  const Program& program = programs_.compute("lighting/cluster_fill.comp", fillDefines(perSlot));
+  program.use();
   const uint32_t chunks = std::max(1u, (windowLights + kAssignChunkLights - 1) / kAssignChunkLights);
   for (uint32_t c = 0; c < chunks; ++c) {
     const uint32_t begin = c * kAssignChunkLights, end = std::min(windowLights, begin + kAssignChunkLights);
-    glProgramUniform4ui(fillProgram_.id(), 0, begin, end, first && c == 0 ? 1u : 0u, last && c + 1 == chunks ? 1u : 0u);
-    glDispatchCompute(groupsFor(slotCapacity_, 64), 1, 1);
+    glProgramUniform4ui(program.id(), 0, begin, end, first && c == 0 ? 1u : 0u, last && c + 1 == chunks ? 1u : 0u);
+    glDispatchCompute(perSlot ? std::max(1u, std::min(slotCapacity_, kMaxGroups)) : groupsFor(slotCapacity_, 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 }

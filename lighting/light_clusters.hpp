@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -11,6 +12,7 @@
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
+#include "lighting/assign_shape_trials.hpp"
 #include "lighting/cluster_block.hpp"
 #include "lighting/light_buffer.hpp"
 
@@ -28,6 +30,9 @@ struct ClusterConfig {
   // it, or past twice the driver's largest storage block, lights are assigned in windows, each costing another
   // light pass.
   uint64_t maxMaskBytes = 256ull << 20;
+  // The assignment passes' shapes: measured per machine (AssignShapeTrials) unless forced.
+  AssignShape lightPass = AssignShape::Automatic;
+  AssignShape fill = AssignShape::Automatic;
 };
 
 // Depth-slice boundaries of the exponential slicing, shared by the GPU grid and its CPU documentation:
@@ -82,8 +87,15 @@ class LightClusters {
   // index list, or holds no surface, reads as empty. Waits for the GPU: for tests and tools.
   std::vector<std::vector<uint32_t>> readLists() const;
 
-  // The defines of the light pass (cluster_lights.comp) for these choices, without the binding defines.
-  static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big);
+  // The defines of the light pass (cluster_lights.comp) for these choices, without the binding defines: `big` the
+  // workgroup-per-light build, `everyLight` that build over a range of lights rather than the queued ones.
+  static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big,
+                                            bool everyLight);
+  // The shapes the passes take this frame: as configured, or as the trials choose.
+  AssignShape lightPassShape() const;
+  AssignShape fillShape() const;
+  // The shapes of this frame and why: "light pass workgroup, fill invocation (timed here, ...)".
+  std::string shapeSummary() const;
 
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }
@@ -115,7 +127,7 @@ class LightClusters {
 
   ClusterConfig config_;
   ProgramCache& programs_;
-  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_, &fillProgram_;
+  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_;
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
@@ -136,6 +148,7 @@ class LightClusters {
   uint32_t maxCapacity_ = 0;
   bool warnedLimit_ = false;
   bool warnedMasks_ = false;
+  AssignShapeTrials trials_;
 
   // Status copies read a few frames later, so that sizing the list never waits for the GPU.
   struct PendingStatus {

@@ -218,15 +218,15 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
   DefineSets lightPass;
   const std::vector<std::string> lightPassFlags = {"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS",
-                                                   "BIG_LIGHTS"};
+                                                   "BIG_LIGHTS", "EVERY_LIGHT"};
   for (const ShaderDefines& flags : flagCombinations(lightPassFlags)) {
     const auto on = [&](size_t i) { return flags[i].value == "1"; };
-    lightPass.push_back(pbr::LightClusters::lightPassPermutation(on(0), on(1), on(2), on(3), on(4)));
+    lightPass.push_back(pbr::LightClusters::lightPassPermutation(on(0), on(1), on(2), on(3), on(4), on(5)));
   }
   checkComputeCompiles("lighting/cluster_lights.comp", lightPass);
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});
   checkComputeCompiles("lighting/cluster_activate.comp", DefineSets{ShaderDefines{}});
-  checkComputeCompiles("lighting/cluster_fill.comp", DefineSets{ShaderDefines{}});
+  checkComputeCompiles("lighting/cluster_fill.comp", flagCombinations({"WORKGROUP_PER_SLOT"}));
   checkComputeCompiles("lighting/cluster_debug.comp", flagCombinations({"DEBUG_SLICES"}));
   checkComputeCompiles("lighting/efficiency_debug.comp", DefineSets{ShaderDefines{}});
   for (const pbr::DebugChannel channel : pbr::kDebugChannels) {

@@ -8,6 +8,12 @@
 // limit of 65535 iterations: a chunk of 131,072 lights has at most 128 summary words and 4,096 mask words, and its
 // loop runs at most once per summary word, twice per mask word and once per four lights (41,088 times). The fill
 // keeps its place in `cursors` between dispatches.
+//
+// With WORKGROUP_PER_SLOT a workgroup fills each slot (LightClusters::fillShape): its lanes take contiguous runs of
+// the chunk's mask words, count their bits, and an exclusive prefix sum of the counts over the lanes gives each
+// lane its place in the list, so the list comes out in the same ascending order as one invocation writes it, in
+// about 1/64 of the time where lists are long (a GPU's shape; one invocation per slot suits llvmpipe's few wide
+// threads). A lane's loops stay short: at most 64 mask words of a chunk, their summary words and their bits.
 layout(local_size_x = 64) in;
 
 #include "clusters.glsl"
@@ -48,6 +54,75 @@ void writeLowestBit(inout uint bits, uint base) {
   bits &= bits - 1u;
 }
 
+#if WORKGROUP_PER_SLOT
+shared uint laneCounts[64];
+
+// Bits [lo, hi) of a word (hi <= 32).
+uint bitRange(uint lo, uint hi) { return hi <= lo ? 0u : (0xFFFFFFFFu >> (32u - (hi - lo))) << lo; }
+
+// The slot's mask words in [begin, end) that its summary marks: pass 0 counts their bits, pass 1 writes their
+// lights from gCursor and leaves them zero (the summary words are cleared after both passes).
+uint walkMaskWords(uint summaryBase, uint maskBase, uint begin, uint end, bool write) {
+  uint lights = 0u;
+  for (uint w = begin; w < end;) {
+    uint s = w / 32u, next = min(end, 32u * s + 32u);
+    uint marked = (gHigh ? masksHigh[summaryBase + s] : masksLow[summaryBase + s]) & bitRange(w - 32u * s, next - 32u * s);
+    while (marked != 0u) {
+      uint m = 32u * s + uint(findLSB(marked));
+      marked &= marked - 1u;
+      if (write) {
+        uint bits = takeSlotWord(maskBase + m), base = clusterGrid.window.x + 32u * m;
+        while (bits != 0u) writeLowestBit(bits, base);
+      } else {
+        lights += uint(bitCount(gHigh ? masksHigh[maskBase + m] : masksLow[maskBase + m]));
+      }
+    }
+    w = next;
+  }
+  return lights;
+}
+
+void fillSlot(uint slot) {
+  uint lane = gl_LocalInvocationIndex;
+  uint cluster = slotClusters[slot];
+  ClusterHeader header = headers[cluster];
+  bool writes = listFits(header);
+  gHigh = slotIsHigh(slot);
+  uint summaryBase = slotSummaryBase(slot), maskBase = slotMaskBase(slot);
+  uint firstWord = fillChunk.x / 32u, endWord = min((fillChunk.y + 31u) / 32u, slotMaskWords());
+  uint perLane = (max(endWord, firstWord) - firstWord + 63u) / 64u;
+  uint begin = min(firstWord + lane * perLane, endWord), end = min(begin + perLane, endWord);
+  uint start = fillChunk.z != 0u ? header.offset : cursors[cluster];
+  laneCounts[lane] = writes ? walkMaskWords(summaryBase, maskBase, begin, end, false) : 0u;
+  barrier();
+  // Hillis-Steele inclusive scan of the lanes' counts.
+  for (uint stride = 1u; stride < 64u; stride <<= 1u) {
+    uint add = lane >= stride ? laneCounts[lane - stride] : 0u;
+    barrier();
+    laneCounts[lane] += add;
+    barrier();
+  }
+  gCursor = start + (lane > 0u ? laneCounts[lane - 1u] : 0u);
+  if (writes) {
+    walkMaskWords(summaryBase, maskBase, begin, end, true);
+  } else {
+    // A list that does not fit is not written, but its mask is still cleared.
+    for (uint m = begin; m < end; ++m) takeSlotWord(maskBase + m);
+  }
+  if (writes && fillChunk.w == 0u && lane == 63u) cursors[cluster] = gCursor;
+  barrier();
+  for (uint s = firstWord / 32u + lane; s < (endWord + 31u) / 32u; s += 64u) takeSlotWord(summaryBase + s);
+}
+
+void main() {
+  // Slots in turn over at most 65,535 workgroups; every condition below is the workgroup's own, so the barriers
+  // stay in uniform control flow.
+  for (uint slot = gl_WorkGroupID.x; slot < min(activeCount, slotCapacity()); slot += gl_NumWorkGroups.x) {
+    if (headers[slotClusters[slot]].count != 0u) fillSlot(slot);
+    barrier();
+  }
+}
+#else
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= min(activeCount, slotCapacity())) return;
@@ -85,3 +160,4 @@ void main() {
   }
   if (writes && fillChunk.w == 0u) cursors[cluster] = gCursor;
 }
+#endif

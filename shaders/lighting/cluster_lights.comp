@@ -8,7 +8,9 @@
 // cluster has a slot are visited (tileSliceBase). A light whose tiles x slices could loop past INLINE_CANDIDATES
 // iterations, or past what its invocation's earlier lights left of INVOCATION_CANDIDATES, is queued instead and
 // visited by the BIG_LIGHTS build, a workgroup per light sharing its tiles, so that no invocation loops past
-// llvmpipe's limit of 65535 iterations (see deferred.comp).
+// llvmpipe's limit of 65535 iterations (see deferred.comp). With EVERY_LIGHT that build takes every light of
+// lightRange, one per workgroup, without the inline pass: the parallelism a GPU needs when lights are few and
+// large (LightClusters::lightPassShape).
 #if BIG_LIGHTS
 layout(local_size_x = 256) in;
 #else
@@ -176,7 +178,11 @@ void finishLight() {
 void main() {
 #if BIG_LIGHTS
   gHit = false;
+#if EVERY_LIGHT
+  if (!prepareLight(lightRange.x + gl_WorkGroupID.x)) return;
+#else
   if (!prepareLight(bigLights[gl_WorkGroupID.x])) return;
+#endif
   for (uint t = gl_LocalInvocationIndex; t < gTiles; t += gl_WorkGroupSize.x) visitTile(t);
   finishLight();
 #else

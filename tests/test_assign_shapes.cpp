@@ -1,0 +1,188 @@
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/builtin_scenes.hpp"
+#include "renderer/renderer.hpp"
+#include "tests/gl_test_context.hpp"
+#include "tests/render_util.hpp"
+
+using namespace pbr;
+
+// The assignment passes' two shapes (AssignShape): four lights and one list per invocation, or a workgroup per light
+// and per list. Forced in every combination, they must give the same sorted lists, and the frames they shade must
+// equal brute force bit for bit: the light counts and kinds of the culling tests, spot lights included.
+namespace {
+
+// A floor, a box and a sphere seen across the near plane.
+Scene shapeScene(int lights, uint64_t seed, float radiusMin, float radiusMax, float spotShare) {
+  Scene s;
+  s.camera.position = {0.0f, 2.0f, 6.0f};
+  s.camera.target = {0.0f, 0.5f, 0.0f};
+  s.camera.nearPlane = 0.3f;
+  s.camera.farPlane = 40.0f;
+  s.ambient = glm::vec3(0.01f);
+  s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(60.0f, 1.0f, 60.0f)), {glm::vec3(0.6f), 0.7f, 0.0f});
+  s.addShape(Shape::Box, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, -1.0f)), {glm::vec3(0.8f, 0.3f, 0.2f), 0.3f, 0.0f});
+  s.addShape(Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.8f, 0.5f)), glm::vec3(1.6f)),
+             {glm::vec3(0.9f, 0.8f, 0.5f), 0.25f, 1.0f});
+  RandomLightSpec spec;
+  spec.count = lights;
+  spec.seed = seed;
+  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
+  spec.boundsMax = {12.0f, 4.0f, 8.0f};
+  spec.radiusMin = radiusMin;
+  spec.radiusMax = radiusMax;
+  // Sums of up to a million lights stay well inside half floats.
+  spec.powerMin = 40.0f / float(std::max(lights, 1));
+  spec.powerMax = 400.0f / float(std::max(lights, 1));
+  spec.spotShare = spotShare;
+  s.lights = makeRandomLights(spec);
+  return s;
+}
+
+struct Shaded {
+  std::vector<std::vector<uint32_t>> lists;
+  test::RenderedFrame frame;
+};
+
+Shaded shade(const Scene& scene, glm::ivec2 size, AssignShape lightPass, AssignShape fill) {
+  ClusterConfig config;
+  config.lightPass = lightPass;
+  config.fill = fill;
+  FrameOptions options;
+  options.culling = Culling::Clustered;
+  Shaded out;
+  out.frame = test::renderScene(scene, size, options, 2, config);
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, size.x, size.y, RendererConfig{config});
+  Profiler profiler(TimingMode::Serializing);
+  renderer.renderFrame({}, profiler);
+  renderer.renderFrame({}, profiler);
+  out.lists = renderer.clusters().readLists();
+  return out;
+}
+
+void checkShapesAgree(const Scene& scene, glm::ivec2 size, bool mixed) {
+  FrameOptions options;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, size, options, 1);
+  std::vector<std::pair<AssignShape, AssignShape>> shapes = {{AssignShape::Invocation, AssignShape::Invocation},
+                                                             {AssignShape::Workgroup, AssignShape::Workgroup}};
+  if (mixed) {
+    shapes.push_back({AssignShape::Invocation, AssignShape::Workgroup});
+    shapes.push_back({AssignShape::Workgroup, AssignShape::Invocation});
+  }
+  std::vector<std::vector<uint32_t>> first;
+  size_t listed = 0;
+  for (const auto& [lightPass, fill] : shapes) {
+    CAPTURE(scene.lights.size());
+    CAPTURE(toString(lightPass));
+    CAPTURE(toString(fill));
+    const Shaded shaded = shade(scene, size, lightPass, fill);
+    CHECK(shaded.frame.stats.overflowedClusters == 0);
+    CHECK(test::maxRelativeDifference(shaded.frame.hdr, reference.hdr) == 0.0);
+    CHECK(test::countDifferentBytes(shaded.frame.ldr, reference.ldr) == 0);
+    if (first.empty()) {
+      first = shaded.lists;
+      for (const auto& list : first) {
+        listed += list.size();
+        CHECK(std::is_sorted(list.begin(), list.end()));
+      }
+    } else {
+      CHECK(shaded.lists == first);
+    }
+  }
+  if (!scene.lights.empty()) CHECK(listed > 0);
+}
+
+}  // namespace
+
+TEST_CASE("assignment shapes: every combination lists and shades as brute force, 0 to 4,096 lights, spots included") {
+  PBR_REQUIRE_GL();
+  checkShapesAgree(shapeScene(0, 1, 0.5f, 4.0f, 0.0f), {160, 90}, true);
+  checkShapesAgree(shapeScene(1, 2, 6.0f, 6.0f, 0.0f), {160, 90}, true);
+  // Few and large: each light reaches most tiles, the case a workgroup per light is for.
+  checkShapesAgree(shapeScene(256, 3, 8.0f, 20.0f, 0.5f), {160, 90}, true);
+  checkShapesAgree(shapeScene(4096, 4, 0.5f, 4.0f, 0.3f), {160, 90}, true);
+}
+
+TEST_CASE("assignment shapes: 65,536 lights, and masks over their budget in windows, list as the other shape") {
+  PBR_REQUIRE_GL();
+  checkShapesAgree(shapeScene(65536, 5, 0.3f, 2.0f, 0.2f), {96, 54}, false);
+  const Scene scene = shapeScene(3000, 6, 0.5f, 4.0f, 0.0f);
+  const auto lists = [&scene](const ClusterConfig& config) {
+    const ShaderLibrary shaders;
+    Renderer renderer(shaders, scene, 160, 90, RendererConfig{config});
+    Profiler profiler(TimingMode::Serializing);
+    renderer.renderFrame({}, profiler);
+    renderer.renderFrame({}, profiler);
+    REQUIRE(renderer.lightStats().overflowedClusters == 0);
+    return std::make_pair(renderer.clusters().readLists(), renderer.clusters().windowLights());
+  };
+  const auto whole = lists(ClusterConfig{});
+  REQUIRE(whole.second == scene.lights.size());
+  for (const AssignShape shape : {AssignShape::Invocation, AssignShape::Workgroup}) {
+    ClusterConfig budget;
+    budget.maxMaskBytes = 64ull << 10;  // windows of 1,024 lights: a light pass and a fill each
+    budget.lightPass = budget.fill = shape;
+    CAPTURE(toString(shape));
+    const auto windowed = lists(budget);
+    CHECK(windowed.second < scene.lights.size());
+    CHECK(windowed.first == whole.first);
+  }
+}
+
+TEST_CASE("assignment shapes: 1,048,576 lights on a small frame list as the other shape and shade as brute force") {
+  PBR_REQUIRE_GL();
+  checkShapesAgree(shapeScene(1 << 20, 7, 0.2f, 1.5f, 0.1f), {24, 14}, false);
+}
+
+TEST_CASE("assignment shapes: automatic shapes time both shapes on the frames after the first, exact on every frame") {
+  PBR_REQUIRE_GL();
+  const Scene scene = shapeScene(256, 3, 8.0f, 20.0f, 0.5f);
+  FrameOptions options;
+  options.culling = Culling::None;
+  const test::RenderedFrame reference = test::renderScene(scene, {160, 90}, options, 1);
+  options.culling = Culling::Clustered;
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, 160, 90, RendererConfig{ClusterConfig{}});
+  Profiler profiler(TimingMode::Serializing);
+  // The first frame sizes the lists, the next two are the trials; the results come back within a few frames.
+  for (int frame = 0; frame < 8; ++frame) {
+    ImageRgbaF hdr;
+    renderer.renderFrame(options, profiler, FrameCapture{nullptr, &hdr});
+    CAPTURE(frame);
+    CHECK(test::maxRelativeDifference(hdr, reference.hdr) == 0.0);
+  }
+  const std::string summary = renderer.clusters().shapeSummary();
+  CAPTURE(summary);
+  CHECK(summary.find("timed here") != std::string::npos);
+  // Each pass keeps the shape it timed faster.
+  for (const std::string pass : {"light pass", "fill"}) {
+    const size_t at = summary.find(pass + " ");
+    REQUIRE(at != std::string::npos);
+    const bool workgroup = summary.compare(at + pass.size() + 1, 9, "workgroup") == 0;
+    double ms[2] = {0.0, 0.0};
+    REQUIRE(std::sscanf(summary.c_str() + summary.find(pass + " ", summary.find("timed here")) + pass.size(),
+                        "%lf / %lf", &ms[0], &ms[1]) == 2);
+    CAPTURE(pass);
+    CHECK(workgroup == (ms[1] < ms[0]));
+  }
+}
+
+TEST_CASE("assignment shapes: over 65,536 lights the automatic choice keeps an invocation's four lights untried") {
+  PBR_REQUIRE_GL();
+  const Scene scene = shapeScene(70000, 8, 0.2f, 1.5f, 0.0f);
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, 24, 14, RendererConfig{ClusterConfig{}});
+  Profiler profiler(TimingMode::Serializing);
+  for (int frame = 0; frame < 6; ++frame) renderer.renderFrame({}, profiler);
+  const std::string summary = renderer.clusters().shapeSummary();
+  CAPTURE(summary);
+  CHECK(summary.rfind("light pass invocation, ", 0) == 0);
+  CHECK(summary.find("not tried over 65536 lights") != std::string::npos);
+}
