@@ -42,7 +42,9 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--scene", "NAME", "scene to measure", sweep.scene, ""},
       {"--lights", "LIST", "comma-separated light counts",
        listText(sweep.lights, [](int n) { return std::to_string(n); }), ""},
-      {"--culling", "LIST", "culling modes: none, clustered",
+      {"--culling", "LIST",
+       "culling modes: none, clustered, auto (per frame, whichever the times measured here predict cheaper; the "
+       "table shows which ran)",
        listText(sweep.culling, [](Culling c) { return toString(c); }), ""},
       {"--model", "LIST", "shading models: pbr, blinn-phong",
        listText(sweep.models, [](ShadingModel m) { return toString(m); }), ""},

@@ -42,7 +42,9 @@ const std::vector<OptionSpec>& renderOptions() {
       lightsOption("the scene's; 256 for default"),
       viewAngleOption(),
       spotShareOption(),
-      {"--culling", "C", "clustered or none (brute force: every light for every pixel)", toString(frame.culling), ""},
+      {"--culling", "C",
+       "clustered, none (brute force: every light for every pixel) or auto (per frame, whichever the times "
+       "measured here predict cheaper)", toString(kCommandCulling), ""},
       shadowModeOption(),
       shadowFilterOption(),
       transparencyOption(),
@@ -111,6 +113,7 @@ void printWarmUp(const WarmUpReport& w) {
   if (w.listSizingFrames) {
     std::printf(" (%d of them to size the light-index list to the measured demand)", w.listSizingFrames);
   }
+  if (w.cullingFrames) std::printf(" (%d of them until culling auto had timed both paths)", w.cullingFrames);
   std::printf("\n");
   if (w.overflowedClusters) {
     std::printf("warm-up: the light-index list or the light masks reached their limit: %u clusters are shaded by "
@@ -129,7 +132,7 @@ void printTimings(const BenchResult& r, TimingMode mode) {
 
 void printLightStats(const LightStats& s, const Renderer& renderer, const FrameOptions& options) {
   std::printf("lights: %u in the frame", s.lights);
-  if (options.culling == Culling::Clustered) {
+  if (s.culling == Culling::Clustered) {
     const glm::uvec3 d = renderer.clusters().dims();
     if (options.stats) std::printf(", %u survive frustum culling", s.visibleLights);
     std::printf("\nclusters: %ux%ux%u, %u holding a surface (%.1f %%), %u non-empty, %.1f lights per non-empty "
@@ -145,6 +148,7 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   } else {
     std::printf("\n");
   }
+  if (s.decision) std::printf("culling: auto ran %s\n", s.decision->describe().c_str());
   if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
     const ShadowStats& h = s.shadows;
     const int atlas = options.shadows.atlasSize;
@@ -232,7 +236,7 @@ int runRender(const std::vector<std::string>& argv) {
   std::optional<DebugChannel> debug;
   if (args.has("--debug")) debug = parseDebugChannel(args.get("--debug"));
   // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.
-  if (debug && needsClusterGrid(*debug) && culling != Culling::Clustered) {
+  if (debug && needsClusterGrid(*debug) && culling == Culling::None) {
     throw UsageError(std::string("--debug ") + toString(*debug) + " needs --culling clustered");
   }
   const glm::ivec2 size = args.getSize("--size");

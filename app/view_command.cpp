@@ -21,7 +21,9 @@ const std::vector<OptionSpec>& viewOptions() {
       spotShareOption(),
       {"--model", "MODEL", "shading model at start: pbr or blinn-phong (key M switches)", toString(viewer.frame.model),
        ""},
-      {"--culling", "C", "clustered or none at start (key C switches)", toString(viewer.frame.culling), ""},
+      {"--culling", "C",
+       "clustered, none or auto (per frame, whichever the times measured here predict cheaper) at start (key C "
+       "cycles)", toString(kCommandCulling), ""},
       shadowModeOption(),
       shadowFilterOption(),
       transparencyOption(),

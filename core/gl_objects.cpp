@@ -81,4 +81,16 @@ void checkGlError(const std::string& what) {
   }
 }
 
+bool queryAvailable(const Query& query) {
+  GLint available = 0;
+  glGetQueryObjectiv(query.id(), GL_QUERY_RESULT_AVAILABLE, &available);
+  return available != 0;
+}
+
+GLuint64 queryNs(const Query& query) {
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
+  return ns;
+}
+
 }  // namespace pbr

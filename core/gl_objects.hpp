@@ -157,6 +157,12 @@ class Query {
   GlHandle<QueryTraits> handle_;
 };
 
+// Whether a timestamp query's result has arrived (never waits); its time in ns (waits if it has not); the ms from
+// one timestamp to a later one (0 where the later reads earlier).
+bool queryAvailable(const Query& query);
+GLuint64 queryNs(const Query& query);
+inline double spanMs(GLuint64 beginNs, GLuint64 endNs) { return endNs > beginNs ? double(endNs - beginNs) * 1e-6 : 0.0; }
+
 // Throws std::runtime_error naming `what` and the GL error if one is pending.
 void checkGlError(const std::string& what);
 

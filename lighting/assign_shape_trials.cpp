@@ -71,14 +71,12 @@ void AssignShapeTrials::collect() {
   for (int i = 0; i < kTrialFrames; ++i) {
     Trial& t = trials_[static_cast<size_t>(i)];
     if (t.issued && !t.read) {
-      GLint available = 0;
-      glGetQueryObjectiv((*t.queries)[FillEnd].id(), GL_QUERY_RESULT_AVAILABLE, &available);
-      if (available) {
+      if (queryAvailable((*t.queries)[FillEnd])) {
         GLuint64 ns[4];
-        for (int q = 0; q < 4; ++q) glGetQueryObjectui64v((*t.queries)[q].id(), GL_QUERY_RESULT, &ns[q]);
+        for (int q = 0; q < 4; ++q) ns[q] = queryNs((*t.queries)[q]);
         const size_t shape = trialShape(i) == AssignShape::Workgroup ? 1 : 0;
         const size_t lightPassShape = tryLightPass() ? shape : 0;
-        const auto ms = [&ns](Mark begin, Mark end) { return ns[end] > ns[begin] ? double(ns[end] - ns[begin]) * 1e-6 : 0.0; };
+        const auto ms = [&ns](Mark begin, Mark end) { return spanMs(ns[begin], ns[end]); };
         keepFastest(lightPassMs_[lightPassShape], ms(LightPassBegin, LightPassEnd));
         keepFastest(fillMs_[shape], ms(FillBegin, FillEnd));
         t.read = true;

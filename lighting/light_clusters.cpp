@@ -202,6 +202,7 @@ void LightClusters::growFromPastDemand() {
     glGetNamedBufferSubData(p.buffer->id(), 0, sizeof s, &s);
     growTo(s.demand);
     expectedActive_ = std::max(expectedActive_, s.activeClusters);
+    recentListLength_ = s.activeClusters ? double(s.demand) / s.activeClusters : 0.0;
   }
 }
 
@@ -270,7 +271,9 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   if (sizing) {
     sizedFor_ = count;
     const uint32_t before = capacity_;
-    growTo(readStatus().demand);
+    const ClusterStatus sized = readStatus();
+    growTo(sized.demand);
+    recentListLength_ = sized.activeClusters ? double(sized.demand) / sized.activeClusters : 0.0;
     if (capacity_ != before) {
       blockData_.counts.z = capacity_;
       block_.update(blockData_);
@@ -399,6 +402,11 @@ AssignShape LightClusters::lightPassShape() const {
 
 AssignShape LightClusters::fillShape() const {
   return config_.fill == AssignShape::Automatic ? trials_.fill() : config_.fill;
+}
+
+bool LightClusters::settled(uint32_t lights) const {
+  const bool trialing = config_.lightPass == AssignShape::Automatic || config_.fill == AssignShape::Automatic;
+  return headers_ && sizedFor_ == lights && (!trialing || trials_.decided());
 }
 
 std::string LightClusters::shapeSummary() const {

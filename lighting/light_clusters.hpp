@@ -97,6 +97,12 @@ class LightClusters {
   // The shapes of this frame and why: "light pass workgroup, fill invocation (timed here, ...)".
   std::string shapeSummary() const;
 
+  // Whether the next assign of `lights` lights runs as later ones will: its lists sized on this grid, no
+  // assignment shape left to time.
+  bool settled(uint32_t lights) const;
+  // Light-index entries per cluster holding a surface, from the latest status read back without waiting (0 before
+  // any): the list length culling auto scales its clustered prediction by.
+  double recentListLength() const { return recentListLength_; }
   glm::uvec3 dims() const { return dims_; }
   uint32_t capacity() const { return capacity_; }
   // Lights per mask window: all of them unless the masks exceed their budget.
@@ -149,6 +155,7 @@ class LightClusters {
   bool warnedLimit_ = false;
   bool warnedMasks_ = false;
   AssignShapeTrials trials_;
+  double recentListLength_ = 0.0;
 
   // Status copies read a few frames later, so that sizing the list never waits for the GPU.
   struct PendingStatus {

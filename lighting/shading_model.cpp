@@ -167,9 +167,17 @@ unsigned glInternalFormat(HdrFormat format) {
 Culling parseCulling(const std::string& name) {
   if (name == "none") return Culling::None;
   if (name == "clustered") return Culling::Clustered;
-  throw std::invalid_argument("unknown culling '" + name + "' (expected none or clustered)");
+  if (name == "auto") return Culling::Auto;
+  throw std::invalid_argument("unknown culling '" + name + "' (expected none, clustered or auto)");
 }
 
-const char* toString(Culling culling) { return culling == Culling::None ? "none" : "clustered"; }
+const char* toString(Culling culling) {
+  switch (culling) {
+    case Culling::None: return "none";
+    case Culling::Clustered: return "clustered";
+    case Culling::Auto: return "auto";
+  }
+  return "?";
+}
 
 }  // namespace pbr

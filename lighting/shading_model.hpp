@@ -35,8 +35,9 @@ struct ShadingVariant {
   }
 };
 
-// Which lights the lighting pass visits per pixel: all of them (the reference path) or its cluster's.
-enum class Culling { None, Clustered };
+// Which lights the lighting pass visits per pixel: all of them (the reference path) or its cluster's; Auto, a
+// request only, runs per frame whichever the renderer predicts cheaper (renderer/culling_choice.hpp).
+enum class Culling { None, Clustered, Auto };
 
 ShadingModel parseShadingModel(const std::string& name);  // "pbr" | "blinn-phong"
 const char* toString(ShadingModel model);
@@ -62,7 +63,7 @@ std::vector<std::string> blinnPhongDefineNames();
 HdrFormat parseHdrFormat(const std::string& name);  // "rgba16f" | "r11g11b10f" | "rgba32f"
 const char* toString(HdrFormat format);
 unsigned glInternalFormat(HdrFormat format);  // the GLenum
-Culling parseCulling(const std::string& name);  // "none" | "clustered"
+Culling parseCulling(const std::string& name);  // "none" | "clustered" | "auto"
 const char* toString(Culling culling);
 
 }  // namespace pbr

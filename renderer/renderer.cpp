@@ -82,7 +82,8 @@ void Renderer::setCamera(const Camera& camera) {
 PassList Renderer::passList(const FrameOptions& options, const FrameCapture& capture) {
   using R = FrameResource;
   FrameTargets& t = *targets_;
-  const bool clustered = options.culling == Culling::Clustered;
+  // Auto lists the cluster pass its frames may run (renderFrame resolves it).
+  const bool clustered = options.culling != Culling::None;
   const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
   const bool shadows = shadowed(options.shadows.mode);
   const bool blended = scene_.geometry.hasBlended();
@@ -108,8 +109,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
     if (blended) clusterReads.push_back(R::Geometry);  // the BLEND surfaces occupy clusters too
     passes.push_back({"cluster", clusterReads, {R::ClusterLists}, [this, &t, blended, stats = options.stats] {
                         const BlendedSurfaces surfaces = blendedSurfaces(t.blendTarget.id());
+                        markCulling(CullingChoice::ClusterBegin);
                         t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth,
                                           blended ? &surfaces : nullptr, stats);
+                        markCulling(CullingChoice::ClusterEnd);
                       }});
   }
   // After the cluster pass: the shadow views are planned from the clusters the surfaces occupy.
@@ -147,8 +150,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        scene_.geometry.hasUnlit()};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
+                        markCulling(CullingChoice::LightingBegin);
                         scene_.lighting.render(surface, scene_.lights, lighting, frame_, t.hdr,
                                                clustered ? &t.clusters : nullptr, partial);
+                        markCulling(CullingChoice::LightingEnd);
                       }});
   }
   if (blended && !emission && !replacesDisplay) {
@@ -245,13 +250,42 @@ FramePass Renderer::debugPass(DebugChannel channel) {
           }};
 }
 
-void Renderer::renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture) {
+void Renderer::markCulling(CullingChoice::Mark at) {
+  if (cullingTimed_) cullingChoice_.mark(at);
+}
+
+FrameOptions Renderer::resolveCulling(const FrameOptions& options) {
+  FrameOptions resolved = options;
+  cullingTimed_ = false;
+  lastDecision_.reset();
+  if (options.culling != Culling::Auto) return resolved;
+  // The cluster views show the clusters' lists: those frames run clustered, untimed.
+  if (options.debug && needsClusterGrid(*options.debug)) {
+    resolved.culling = Culling::Clustered;
+    return resolved;
+  }
+  // What the cost of a light-pixel pair depends on: a change starts the measurements again.
+  const std::string key = std::string(toString(options.model)) + "|" + toString(options.variant) + "|" +
+                          toString(options.shadows.mode) + "|" + toString(options.shadows.filter) + "|" +
+                          std::to_string(options.shadows.atlasSize) + "|" +
+                          std::to_string(width()) + "x" + std::to_string(height());
+  const CullingCounts counts{scene_.lights.count(), uint64_t(width()) * uint64_t(height()),
+                             targets_->clusters.recentListLength()};
+  resolved.culling = cullingChoice_.choose(key, counts, targets_->clusters.settled(scene_.lights.count()));
+  lastDecision_ = cullingChoice_.decision();
+  cullingTimed_ = true;
+  return resolved;
+}
+
+void Renderer::renderFrame(const FrameOptions& requested, Profiler& profiler, const FrameCapture& capture) {
+  const FrameOptions options = resolveCulling(requested);
   const PassList passes = passList(options, capture);
   std::optional<CapturedFrame> captured;
   if (++framesRendered_ == captureFrame_ && capturer_) captured.emplace(*capturer_, framesRendered_);
   profiler.beginFrame();
   runPassList(passes, profiler);
   profiler.endFrame();
+  cullingTimed_ = false;
   lastOptions_ = options;
   lastShadowed_ = std::any_of(passes.begin(), passes.end(), [](const FramePass& p) { return p.name == "shadow"; });
 }
@@ -263,7 +297,14 @@ RendererCounters Renderer::counters() const {
 WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, int frames) {
   WarmUpReport report;
   for (; report.frames < frames; ++report.frames) renderFrame(options, profiler);
-  if (options.culling != Culling::Clustered) return report;
+  // Timed frames should not be the trials of culling auto (a brute-force trial can cost many clustered frames).
+  constexpr int kMaxCullingFrames = 16;
+  while (lastDecision_ && !cullingChoice_.decided() && report.cullingFrames < kMaxCullingFrames) {
+    renderFrame(options, profiler);
+    ++report.frames;
+    ++report.cullingFrames;
+  }
+  if (lastOptions_.culling != Culling::Clustered) return report;
   // Light lists only grow: a few rounds fit any static frame; the bound guards against a list at its limit.
   constexpr int kMaxSizingFrames = 4;
   while (report.listSizingFrames < kMaxSizingFrames && targets_->clusters.growToDemand()) {
@@ -292,6 +333,8 @@ LightStats Renderer::lightStats() const {
   }
   if (lastOptions_.stats) s.pairs = scene_.lighting.readPairCounts();
   if (lastShadowed_) s.shadows = scene_.shadows.stats();
+  s.culling = lastOptions_.culling;
+  s.decision = lastDecision_;
   const Buffer* lists = targets_->layerListsIfMade();
   if (lastOptions_.transparency == Transparency::Exact && lists) s.droppedLayers = readDroppedLayers(*lists);
   return s;

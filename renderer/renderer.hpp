@@ -12,12 +12,16 @@
 #include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/debug_channel.hpp"
+#include "renderer/culling_choice.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
 #include "renderer/renderer_config.hpp"
 #include "renderer/scene_resources.hpp"
 
 namespace pbr {
+
+// The culling `pbr render`, `view` and `bench` start from; a FrameOptions made in code starts from Clustered.
+constexpr Culling kCommandCulling = Culling::Auto;
 
 struct FrameOptions {
   ShadingModel model = ShadingModel::Pbr;
@@ -47,6 +51,8 @@ struct LightStats {
   PairCounts pairs;
   ShadowStats shadows;              // of the last frame's shadow pass; zero without one
   uint32_t droppedLayers = 0;       // BLEND fragments the last frame's exact transparency left out (kLayerNodesPerPixel)
+  Culling culling = Culling::Clustered;     // the path the last frame ran
+  std::optional<CullingDecision> decision;  // with --culling auto: why
   double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
   // Light-pixel pairs that contribute over pairs evaluated.
   double cullingEfficiency() const { return pairs.evaluated ? double(pairs.contributing) / pairs.evaluated : 0.0; }
@@ -62,6 +68,7 @@ struct FrameCapture {
 struct WarmUpReport {
   int frames = 0;            // untimed frames rendered
   int listSizingFrames = 0;  // of those, frames added because a cluster's light list did not fit yet
+  int cullingFrames = 0;     // of those, frames added until culling auto had timed what it compares
   uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list or masks at their limit)
 };
 
@@ -90,7 +97,8 @@ class Renderer {
   // The passes one frame runs with these options, in order, each saying what it reads and writes.
   PassList passList(const FrameOptions& options, const FrameCapture& capture = {});
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
-  // After at least one frame: renders `frames` more untimed frames, then, with clustered culling, more until every cluster's light
+  // After at least one frame: renders `frames` more untimed frames, then, with culling auto, more until it has
+  // timed both paths (at most 16), then, with clustered culling, more until every cluster's light
   // list fits (each grows the list at once to the measured demand), so that no timed frame pays for a list sized
   // a frame late. Stops early when the list has reached its memory limit: the report says how many clusters
   // still fall back to brute force.
@@ -128,6 +136,9 @@ class Renderer {
   // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
   BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);
+  // `options` with culling Auto replaced by this frame's choice (cullingChoice_), which its passes then time.
+  FrameOptions resolveCulling(const FrameOptions& options);
+  void markCulling(CullingChoice::Mark at);
 
   const Scene& sceneData_;
   RendererConfig config_;
@@ -141,7 +152,10 @@ class Renderer {
   const std::vector<PointLight>* lights_;  // the frame's point and spot lights: the scene's or lightsSet_
   std::optional<std::pair<ShadowMode, bool>> shadowedCache_;
   bool lastShadowed_ = false;
-  FrameOptions lastOptions_;
+  FrameOptions lastOptions_;  // as the last frame ran them: culling Auto resolved
+  CullingChoice cullingChoice_;
+  std::optional<CullingDecision> lastDecision_;
+  bool cullingTimed_ = false;  // this frame's cluster and lighting passes mark cullingChoice_
   int framesRendered_ = 0;
   int captureFrame_ = 0;
   const FrameCapturer* capturer_ = nullptr;

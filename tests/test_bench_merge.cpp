@@ -33,6 +33,7 @@ BenchSettings tinySweep(std::vector<int> lights = {4, 8}) {
   s.size = {32, 32};
   s.lights = std::move(lights);
   s.models = {pbr::ShadingModel::Pbr};
+  s.culling = {pbr::Culling::None, pbr::Culling::Clustered};
   s.warmup = 1;
   s.frames = 2;
   return s;

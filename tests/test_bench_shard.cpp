@@ -58,9 +58,9 @@ TEST_CASE("bench shard: the shards of a sweep are disjoint, cover it and differ 
   }
 }
 
-TEST_CASE("bench shard: each of 4 shards of the standard sweep gets brute force and clustered, light counts mixed") {
+TEST_CASE("bench shard: each of 4 shards of the standard sweep gets each culling mode, light counts mixed") {
   const std::vector<BenchConfig> sweep = pbr::sweepConfigs(BenchSettings{});
-  REQUIRE(sweep.size() == 20);
+  REQUIRE(sweep.size() == 30);
   for (int index = 1; index <= 4; ++index) {
     CAPTURE(index);
     std::set<pbr::Culling> culling;
@@ -71,9 +71,9 @@ TEST_CASE("bench shard: each of 4 shards of the standard sweep gets brute force 
       lights.insert(sweep[p].lights);
       atMost += sweep[p].lights == 16384;
     }
-    CHECK(culling.size() == 2);
+    CHECK(culling.size() == 3);
     CHECK(lights.size() == 5);
-    CHECK(atMost == 1);  // the four most expensive configurations go to four different shards
+    CHECK(atMost <= 2);  // the six most expensive configurations spread over the four shards
   }
 }
 

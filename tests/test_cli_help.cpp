@@ -84,7 +84,7 @@ TEST_CASE("cli help: each default the help states is the value the code starts f
   const std::map<std::string, std::map<std::string, std::string>> expected = {
       {"render",
        {{"--model", pbr::toString(frame.model)},
-        {"--culling", pbr::toString(frame.culling)},
+        {"--culling", pbr::toString(pbr::kCommandCulling)},
         {"--tile", std::to_string(renderer.clusters.tileSize)},
         {"--slices", std::to_string(renderer.clusters.slices)},
         {"--hdr-format", pbr::toString(renderer.hdrFormat)},
@@ -93,7 +93,8 @@ TEST_CASE("cli help: each default the help states is the value the code starts f
         {"--aa", display},
         {"--timing", "auto"},
         {"--egl-platform", pbr::toString(pbr::EglPlatform::Auto)}}},
-      {"view", {{"--model", pbr::toString(frame.model)}, {"--culling", pbr::toString(frame.culling)}, {"--aa", display}}},
+      {"view", {{"--model", pbr::toString(frame.model)}, {"--culling", pbr::toString(pbr::kCommandCulling)},
+                {"--aa", display}}},
       {"bench",
        {{"--scene", sweep.scene},
         {"--lights", joined(sweep.lights, [](int n) { return std::to_string(n); })},

@@ -112,7 +112,7 @@ Json settingsJson(const BenchSettings& s) {
 // One CSV row; the column names are the same for every result, skipped or not.
 Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
   const bool ok = !r.skipped;
-  const bool clustered = r.config.culling == Culling::Clustered;
+  const bool clustered = r.stats.culling == Culling::Clustered && r.config.culling != Culling::None;
   Record rec = {{"scene", r.config.scene},
                 {"width", std::to_string(r.config.size.x)},
                 {"height", std::to_string(r.config.size.y)},
@@ -167,7 +167,7 @@ Json timesJson(const TimeSummary& t) {
 
 Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
   const bool ok = !r.skipped;
-  const bool clustered = r.config.culling == Culling::Clustered;
+  const bool clustered = r.stats.culling == Culling::Clustered && r.config.culling != Culling::None;
   Json j = Json::object();
   j["label"] = r.config.label();
   j["scene"] = r.config.scene;
@@ -175,6 +175,15 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
   j["height"] = r.config.size.y;
   j["lights"] = r.config.lights;
   j["culling"] = toString(r.config.culling);
+  if (ok && r.stats.decision) {
+    const CullingDecision& d = *r.stats.decision;
+    const auto known = [](double ms) { return ms < 0.0 ? Json(nullptr) : Json(ms); };
+    j["culling_auto"] = {{"ran", toString(d.ran)},
+                         {"predicted_clustered_ms", known(d.clusteredMs)},
+                         {"predicted_brute_force_ms", known(d.bruteForceMs)},
+                         {"brute_force_at_least_ms", known(d.bruteForceAtLeastMs)},
+                         {"brute_force_trial_up_to_ms", known(d.bruteForceTrialUpToMs)}};
+  }
   j["model"] = toString(r.config.model);
   j["light_radius_scale"] = r.config.radiusScale;
   j["status"] = ok ? "ok" : kSkipped;
@@ -290,14 +299,15 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
 
   std::vector<std::vector<std::string>> rows = {header};
   for (const BenchResult& r : report.results) {
-    std::vector<std::string> row = {std::to_string(r.config.lights), toString(r.config.culling),
-                                    toString(r.config.model)};
+    std::string culling = toString(r.config.culling);
+    if (r.config.culling == Culling::Auto && !r.skipped) culling += std::string("->") + toString(r.stats.culling);
+    std::vector<std::string> row = {std::to_string(r.config.lights), culling, toString(r.config.model)};
     if (!r.skipped) {
       for (const std::string& name : passes) {
         const PassSummary* p = r.pass(name);
         row.push_back(p ? fixedDecimals(p->ms.median, 2) : "-");
       }
-      const bool clustered = r.config.culling == Culling::Clustered;
+      const bool clustered = r.stats.culling == Culling::Clustered && r.config.culling != Culling::None;
       row.push_back(fixedDecimals(r.frameTime.median, 2));
       row.push_back(fixedDecimals(r.frameTime.p10, 1) + "-" + fixedDecimals(r.frameTime.p90, 1));
       row.push_back(fixedDecimals(r.cpuTime.median, 2));

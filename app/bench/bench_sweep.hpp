@@ -16,7 +16,7 @@ struct BenchSettings {
   std::string scene = "stress";
   glm::ivec2 size{1280, 720};
   std::vector<int> lights{64, 256, 1024, 4096, 16384};
-  std::vector<Culling> culling{Culling::None, Culling::Clustered};
+  std::vector<Culling> culling{Culling::None, Culling::Clustered, kCommandCulling};
   std::vector<ShadingModel> models{ShadingModel::Pbr, ShadingModel::BlinnPhong};
   int warmup = 5;  // the first warm-up frame also estimates the configuration's time
   int frames = 30;

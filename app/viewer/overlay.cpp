@@ -158,7 +158,17 @@ void Overlay::lightStatistics(Viewer& viewer) {
   const Scene& scene = viewer.scene();
   row("point and spot lights", "%.0f", double(s.lights));
   if (!scene.directionalLights.empty()) row("directional lights", "%.0f", double(scene.directionalLights.size()));
-  if (viewer.frameOptions().culling == Culling::Clustered) {
+  if (s.decision) {
+    ImGui::TextUnformatted(("auto ran " + std::string(toString(s.decision->ran))).c_str());
+    const auto predicted = [](const char* label, double ms) {
+      if (ms >= 0.0) row(label, "%.3f ms", ms);
+    };
+    predicted("  predicted clustered", s.decision->clusteredMs);
+    predicted("  predicted brute force", s.decision->bruteForceMs);
+    predicted("  brute force at least", s.decision->bruteForceAtLeastMs);
+    predicted("  untried: a frame up to", s.decision->bruteForceTrialUpToMs);
+  }
+  if (s.culling == Culling::Clustered) {
     if (viewer.frameOptions().stats) row("visible lights", "%.0f", double(s.visibleLights));
     row("clusters", "%.0f", double(s.clusters));
     row("  with a surface", "%.0f", double(s.activeClusters));
@@ -247,12 +257,14 @@ void Overlay::controls(Viewer& viewer) {
   }
   ImGui::Unindent();
 
-  int culling = f.culling == Culling::Clustered ? 0 : 1;
+  int culling = f.culling == Culling::Clustered ? 0 : f.culling == Culling::None ? 1 : 2;
   ImGui::TextUnformatted("culling");
   ImGui::SameLine(90.0f);
   if (ImGui::RadioButton("clustered", &culling, 0)) viewer.setCulling(Culling::Clustered);
   ImGui::SameLine();
   if (ImGui::RadioButton("none (brute force)", &culling, 1)) viewer.setCulling(Culling::None);
+  ImGui::SameLine();
+  if (ImGui::RadioButton("auto", &culling, 2)) viewer.setCulling(Culling::Auto);
 
   shadowControls(viewer);
 

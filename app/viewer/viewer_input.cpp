@@ -31,7 +31,7 @@ const std::vector<KeyHelp>& viewerKeys() {
       {"drag, scroll", "orbit, zoom"},
       {"W/A/S/D/Q/E", "fly"},
       {"M", "Blinn-Phong / PBR"},
-      {"C", "clustered / brute force"},
+      {"C", "culling: auto / clustered / brute force"},
       {"V", "debug view: final, then " + debugChannelNames(", ")},
       {"+ / -", "exposure by half a stop"},
       {"[ / ]", "halve / double the lights"},
@@ -91,7 +91,8 @@ void Viewer::handleKey(int key) {
       setModel(f.model == ShadingModel::Pbr ? ShadingModel::BlinnPhong : ShadingModel::Pbr);
       break;
     case GLFW_KEY_C:
-      setCulling(f.culling == Culling::Clustered ? Culling::None : Culling::Clustered);
+      setCulling(f.culling == Culling::Auto ? Culling::Clustered
+                 : f.culling == Culling::Clustered ? Culling::None : Culling::Auto);
       break;
     case GLFW_KEY_V: {  // final -> each debug channel in turn -> final
       const auto next = view_ ? std::find(kDebugChannels.begin(), kDebugChannels.end(), *view_) + 1

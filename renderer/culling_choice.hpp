@@ -1,0 +1,91 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/gl_objects.hpp"
+#include "lighting/shading_model.hpp"
+
+namespace pbr {
+
+// What `--culling auto` decided for a frame, and from what.
+struct CullingDecision {
+  Culling ran = Culling::Clustered;
+  double clusteredMs = -1.0;  // predicted cluster + lighting passes; negative before a clustered frame was timed
+  double bruteForceMs = -1.0; // predicted brute-force lighting pass; negative before one was timed
+  // Before any brute-force frame was timed, why none is tried (else negative): the least it could take (a pair at
+  // an eighth of a listed pair's cost) already exceeds the clustered prediction; or the most a trial frame could
+  // take (a pair at a listed pair's cost, the clustered lighting pass counted as pairs alone) is over the larger
+  // of 4 clustered frames and 20 ms.
+  double bruteForceAtLeastMs = -1.0;
+  double bruteForceTrialUpToMs = -1.0;
+  std::string describe() const;  // "clustered (predicted: clustered 1.20 ms, brute force 4.50 ms)"
+};
+
+// The counts a frame's prediction scales the measured times by.
+struct CullingCounts {
+  uint32_t lights = 0;
+  uint64_t pixels = 0;
+  double listLength = 0.0;  // light-index entries per occupied cluster, as the clusters last measured it (0: unknown)
+};
+
+// Chooses brute force or clustered culling per frame from times measured on this machine. Each frame times the path
+// it runs (GPU timestamps around the cluster and lighting passes, read back a few frames later without waiting);
+// the other path's prediction scales its last measurement by the counts: brute force costs a pair per light and
+// pixel, clustered its assignment per light and a pair per listed light (pixels x list length). After a reset,
+// frames run clustered until two whose assignment is settled (lists sized, assignment shapes chosen) are timed.
+// Brute force is then tried on two frames in a row (the first may compile its program), and clustered run on two
+// more, so that both are timed at the same GPU clocks (which rise over a GPU's first frames); each path keeps its
+// fastest frame. No trial is made where even an eighth of a listed pair's cost per brute-force pair would make brute
+// force the slower (a listed pair measured at 1.5-3x a brute-force one, docs/performance.md) and a trial frame could
+// take long (CullingDecision). Then each frame runs the cheaper prediction, keeping the path it ran while the two lie
+// within 5 %. A change of shading model, variant, shadows or frame size starts again; the path not running keeps
+// the time measured then, scaled by the counts.
+class CullingChoice {
+ public:
+  enum Mark { ClusterBegin, ClusterEnd, LightingBegin, LightingEnd };
+
+  // The path of this frame; `key` names what the costs per pair depend on (the model, variant, shadows, size);
+  // `settled`: whether a clustered frame now would assign as later ones do (LightClusters::settled).
+  Culling choose(const std::string& key, const CullingCounts& counts, bool settled);
+  // A timestamp of the frame chosen last (brute-force frames have no cluster marks).
+  void mark(Mark at);
+  const CullingDecision& decision() const { return decision_; }
+  // Whether both paths' costs are known (or brute force was ruled out without a trial), with no trial frame's
+  // time still to come: later frames run as the predictions say.
+  bool decided() const;
+
+ private:
+  struct Sample {
+    CullingCounts counts;
+    double clusterMs = 0.0, lightingMs = 0.0;
+  };
+  struct InFlight {
+    std::unique_ptr<std::array<Query, 4>> queries;
+    bool pending = false;   // issued, its times not read yet
+    bool issuedEnd = false; // the frame reached its last mark
+    bool clustered = false;
+    bool settled = false;   // a clustered frame that may be sampled
+    bool trial = false;     // a frame of the measurements (brute force, or clustered right after)
+    bool afterTrials = false;
+    CullingCounts counts;
+  };
+  void collect();
+  double predictClustered(const CullingCounts& now) const;
+  double predictBruteForce(const CullingCounts& now) const;
+
+  std::string key_;
+  std::optional<Sample> clustered_, bruteForce_;
+  int bruteForceTrials_ = 0;  // frames of brute force run before any was timed
+  int clusteredSamples_ = 0;  // settled clustered frames timed
+  int clusteredAfterTrials_ = 0;  // clustered frames run right after the brute-force trials
+  bool afterTrialsTimed_ = false;
+  std::array<InFlight, 4> inFlight_;
+  size_t next_ = 0;
+  InFlight* current_ = nullptr;
+  CullingDecision decision_;
+};
+
+}  // namespace pbr
