@@ -7,6 +7,7 @@
 
 #include "core/builtin_scenes.hpp"
 #include "renderer/renderer.hpp"
+#include "tests/cluster_test_scene.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 
@@ -17,19 +18,9 @@ using namespace pbr;
 // equal brute force bit for bit: the light counts and kinds of the culling tests, spot lights included.
 namespace {
 
-// A floor, a box and a sphere seen across the near plane.
+// The culling tests' scene (cluster_test_scene.hpp) and its lights.
 Scene shapeScene(int lights, uint64_t seed, float radiusMin, float radiusMax, float spotShare) {
-  Scene s;
-  s.camera.position = {0.0f, 2.0f, 6.0f};
-  s.camera.target = {0.0f, 0.5f, 0.0f};
-  s.camera.nearPlane = 0.3f;
-  s.camera.farPlane = 40.0f;
-  s.ambient = glm::vec3(0.01f);
-  s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(60.0f, 1.0f, 60.0f)), {glm::vec3(0.6f), 0.7f, 0.0f});
-  s.addShape(Shape::Box, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, -1.0f)),
-             {glm::vec3(0.8f, 0.3f, 0.2f), 0.3f, 0.0f});
-  s.addShape(Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.8f, 0.5f)), glm::vec3(1.6f)),
-             {glm::vec3(0.9f, 0.8f, 0.5f), 0.25f, 1.0f});
+  Scene s = test::clusterScene();
   RandomLightSpec spec;
   spec.count = lights;
   spec.seed = seed;

@@ -8,6 +8,7 @@
 #include "core/builtin_scenes.hpp"
 #include "lighting/light_clusters.hpp"
 #include "lighting/lighting_pass.hpp"
+#include "tests/cluster_test_scene.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 
@@ -17,21 +18,7 @@ namespace {
 
 const glm::ivec2 kSize{160, 90};
 
-// A floor, a box and a sphere in depth, with a camera whose near plane some of the lights straddle.
-Scene clusterScene() {
-  Scene s;
-  s.name = "cluster-test";
-  s.camera.position = {0.0f, 2.0f, 6.0f};
-  s.camera.target = {0.0f, 0.5f, 0.0f};
-  s.camera.nearPlane = 0.3f;
-  s.camera.farPlane = 40.0f;
-  s.ambient = glm::vec3(0.01f);
-  s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(60.0f, 1.0f, 60.0f)), {glm::vec3(0.6f), 0.7f, 0.0f});
-  s.addShape(Shape::Box, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, -1.0f)), {glm::vec3(0.8f, 0.3f, 0.2f), 0.3f, 0.0f});
-  s.addShape(Shape::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.8f, 0.5f)), glm::vec3(1.6f)),
-             {glm::vec3(0.9f, 0.8f, 0.5f), 0.25f, 1.0f});
-  return s;
-}
+using test::clusterScene;
 
 std::vector<PointLight> randomLights(int count, uint64_t seed) {
   RandomLightSpec spec;
