@@ -14,6 +14,10 @@ constexpr double kLeastBruteForceShare = 1.0 / 8.0;
 // A brute-force trial frame may take up to this many clustered frames, or kTrialFloorMs.
 constexpr double kTrialFrames = 4.0;
 constexpr double kTrialFloorMs = 20.0;
+// The path not running is timed again this many frames after the measurements, then every kRetimeEvery frames
+// while predicted within kRetimeWithin of the running one.
+constexpr int kFirstRetimeAfter = 8, kRetimeEvery = 240;
+constexpr double kRetimeWithin = 2.0;
 // Predictions this close keep the path the last frame ran, so that noise does not alternate them.
 constexpr double kHysteresis = 0.05;
 
@@ -52,13 +56,17 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
     clusteredSamples_ = 0;
     clusteredAfterTrials_ = 0;
     afterTrialsTimed_ = false;
+    retimes_ = sinceRetime_ = 0;
+    retimed_ = false;
     for (InFlight& f : inFlight_) f.pending = false;
   }
   collect();
   const Culling previous = decision_.ran;
   decision_ = CullingDecision{};
   Culling ran = Culling::Clustered;
-  bool trialNow = false;
+  bool trialNow = false, retimeNow = false;
+  // A frame that measures something waits for a free timing slot (results come back frames later on a GPU).
+  const bool canTime = !inFlight_[next_].pending;
   if (clustered_) {
     decision_.clusteredMs = predictClustered(counts);
     if (bruteForce_) decision_.bruteForceMs = predictBruteForce(counts);
@@ -70,6 +78,21 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
         ran = previous;
       } else {
         ran = decision_.bruteForceMs < decision_.clusteredMs ? Culling::None : Culling::Clustered;
+      }
+      // The path not chosen is timed again: once, a few frames after the measurements (a time taken while a GPU's
+      // clocks rose would otherwise stand), then now and then while its prediction is within 2x, so that the
+      // choice follows the scene.
+      if (afterTrialsTimed_) {
+        const bool runsBruteForce = ran == Culling::None;
+        const double ranMs = runsBruteForce ? decision_.bruteForceMs : decision_.clusteredMs;
+        const double otherMs = runsBruteForce ? decision_.clusteredMs : decision_.bruteForceMs;
+        const int due = retimes_ == 0 ? kFirstRetimeAfter : kRetimeEvery;
+        if (++sinceRetime_ >= due && canTime && (retimes_ == 0 || otherMs <= kRetimeWithin * ranMs)) {
+          ran = runsBruteForce ? Culling::Clustered : Culling::None;
+          sinceRetime_ = 0;
+          ++retimes_;
+          retimeNow = true;
+        }
       }
     } else {
       // The sample's own list length is read back after it was taken: the latest stands in for it.
@@ -91,7 +114,7 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
       // Brute force is tried on two frames in a row, once the list length says what a trial may cost and two
       // settled clustered frames have been timed.
       const bool ruledOut = decision_.bruteForceAtLeastMs >= 0.0 || decision_.bruteForceTrialUpToMs >= 0.0;
-      if (listed > 0.0 && clusteredSamples_ >= 2 && !ruledOut && bruteForceTrials_ < 2) {
+      if (listed > 0.0 && clusteredSamples_ >= 2 && !ruledOut && bruteForceTrials_ < 2 && canTime) {
         ran = Culling::None;
         ++bruteForceTrials_;
         trialNow = true;
@@ -99,7 +122,7 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
     }
     // Clustered again right after the trials, so that both paths are timed at the same clocks (a GPU's rise over
     // its first frames would otherwise favour the path timed later).
-    if (!trialNow && bruteForceTrials_ == 2 && clusteredAfterTrials_ < 2) {
+    if (!trialNow && bruteForceTrials_ == 2 && clusteredAfterTrials_ < 2 && canTime) {
       ran = Culling::Clustered;
       ++clusteredAfterTrials_;
     }
@@ -119,6 +142,7 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
     f.settled = settled;
     f.trial = ran == Culling::None && !bruteForce_;
     f.afterTrials = ran == Culling::Clustered && bruteForceTrials_ == 2;
+    f.retime = retimeNow;
     f.counts = counts;
     current_ = &f;
   }
@@ -130,7 +154,7 @@ bool CullingChoice::decided() const {
   const bool trialPending = std::any_of(inFlight_.begin(), inFlight_.end(),
                                         [](const InFlight& f) { return f.pending && f.trial; });
   const bool ruledOut = decision_.bruteForceAtLeastMs >= 0.0 || decision_.bruteForceTrialUpToMs >= 0.0;
-  return !trialPending && (ruledOut || (bruteForce_ && afterTrialsTimed_));
+  return !trialPending && (ruledOut || (bruteForce_ && afterTrialsTimed_ && retimed_));
 }
 
 void CullingChoice::mark(Mark at) {
@@ -152,10 +176,11 @@ void CullingChoice::collect() {
     // While measuring, each path keeps its fastest frame (a first frame may wait on a compilation, a GPU clock
     // rising); once decided, the latest, so that the path running follows the scene.
     const bool measuring = !decided();
-    const auto keep = [measuring, &sample](std::optional<Sample>& slot) {
+    const auto keep = [measuring, &sample, &f](std::optional<Sample>& slot) {
       const double total = sample.clusterMs + sample.lightingMs;
-      if (!slot || !measuring || total < slot->clusterMs + slot->lightingMs) slot = sample;
+      if (!slot || !measuring || f.retime || total < slot->clusterMs + slot->lightingMs) slot = sample;
     };
+    if (f.retime) retimed_ = true;
     if (!f.clustered) {
       keep(bruteForce_);
     } else if (f.settled) {

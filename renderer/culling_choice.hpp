@@ -41,8 +41,9 @@ struct CullingCounts {
 // fastest frame. No trial is made where even an eighth of a listed pair's cost per brute-force pair would make brute
 // force the slower (a listed pair measured at 1.5-3x a brute-force one, docs/performance.md) and a trial frame could
 // take long (CullingDecision). Then each frame runs the cheaper prediction, keeping the path it ran while the two lie
-// within 5 %. A change of shading model, variant, shadows or frame size starts again; the path not running keeps
-// the time measured then, scaled by the counts.
+// within 5 %. The path not running is timed again 8 frames later (its first time may have been taken while a GPU's
+// clocks rose), then every 240 frames while predicted within 2x of the running one. A change of shading model,
+// variant, shadows or frame size starts again.
 class CullingChoice {
  public:
   enum Mark { ClusterBegin, ClusterEnd, LightingBegin, LightingEnd };
@@ -70,6 +71,7 @@ class CullingChoice {
     bool settled = false;   // a clustered frame that may be sampled
     bool trial = false;     // a frame of the measurements (brute force, or clustered right after)
     bool afterTrials = false;
+    bool retime = false;    // the path not chosen, timed again
     CullingCounts counts;
   };
   void collect();
@@ -82,7 +84,9 @@ class CullingChoice {
   int clusteredSamples_ = 0;  // settled clustered frames timed
   int clusteredAfterTrials_ = 0;  // clustered frames run right after the brute-force trials
   bool afterTrialsTimed_ = false;
-  std::array<InFlight, 4> inFlight_;
+  int retimes_ = 0, sinceRetime_ = 0;  // times the path not chosen was timed again, frames since
+  bool retimed_ = false;               // the first of those is back
+  std::array<InFlight, 8> inFlight_;
   size_t next_ = 0;
   InFlight* current_ = nullptr;
   CullingDecision decision_;

@@ -298,7 +298,7 @@ WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, i
   WarmUpReport report;
   for (; report.frames < frames; ++report.frames) renderFrame(options, profiler);
   // Timed frames should not be the trials of culling auto (a brute-force trial can cost many clustered frames).
-  constexpr int kMaxCullingFrames = 16;
+  constexpr int kMaxCullingFrames = 32;
   while (lastDecision_ && !cullingChoice_.decided() && report.cullingFrames < kMaxCullingFrames) {
     renderFrame(options, profiler);
     ++report.frames;

@@ -98,7 +98,7 @@ class Renderer {
   PassList passList(const FrameOptions& options, const FrameCapture& capture = {});
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
   // After at least one frame: renders `frames` more untimed frames, then, with culling auto, more until it has
-  // timed both paths (at most 16), then, with clustered culling, more until every cluster's light
+  // timed both paths (at most 32), then, with clustered culling, more until every cluster's light
   // list fits (each grows the list at once to the measured demand), so that no timed frame pays for a list sized
   // a frame late. Stops early when the list has reached its memory limit: the report says how many clusters
   // still fall back to brute force.
