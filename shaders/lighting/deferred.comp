@@ -6,6 +6,7 @@
 // over, and, shading every light, for more lights than one uniform-buffer window holds.
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#include "../common/dealt_tiles.glsl"
 #include "gbuffer_surface.glsl"
 #include "shade_lights.glsl"
 
@@ -31,22 +32,8 @@ vec3 background(ivec2 p) {
 }
 #endif
 
-// The pixel this invocation shades. llvmpipe hands each of its threads one contiguous run of a dispatch's
-// workgroups, so in row order a thread whose rows show sky finishes early while another shades the model: the
-// workgroups are dealt to tiles in TILE_BANDS interleaved bands instead (workgroup i shades a tile of band i mod
-// TILE_BANDS, the bands each a contiguous run of tiles), so that every run of workgroups holds tiles from all over
-// the frame. The deal is a bijection of the dispatch's workgroups, so every pixel is shaded once, as before.
-const uint TILE_BANDS = 16u;
-ivec2 shadedPixel() {
-  uint columns = gl_NumWorkGroups.x, n = columns * gl_NumWorkGroups.y;
-  uint i = gl_WorkGroupID.y * columns + gl_WorkGroupID.x;
-  uint band = i % TILE_BANDS, perBand = n / TILE_BANDS, longer = n % TILE_BANDS;
-  uint tile = band * perBand + min(band, longer) + i / TILE_BANDS;
-  return ivec2(uvec2(tile % columns, tile / columns) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy);
-}
-
 void main() {
-  ivec2 p = shadedPixel();
+  ivec2 p = dealtPixel();
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   Surface s;
   if (!readSurface(p, s)) {
