@@ -8,11 +8,6 @@
 
 namespace pbr {
 
-namespace {
-
-
-}  // namespace
-
 Scene pairCostScene(int lights) {
   Scene s;
   s.name = "pair-cost";
