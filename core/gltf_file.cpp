@@ -168,7 +168,13 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
     jsonText = chunks.json;
     if (chunks.hasBin) context.binChunk = chunks.binLength;
   }
-  const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path);
+  std::vector<std::string> duplicates;
+  const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path, &duplicates);
+  for (const std::string& field : duplicates) {
+    if (policy.strict) throw SceneError(path + ": " + field + ": given twice in one object (--strict refuses it)");
+    file.warn(field + ": given twice in one object; the later value is used, as JSON.parse and the viewers read it "
+              "(--strict refuses it)");
+  }
   checkAssetVersion(doc, path);
   checkRequiredExtensions(doc, path);
   checkGltfJson(doc, context);

@@ -19,7 +19,9 @@ using nlohmann::json;
 // number overflow (1e999), which nlohmann reports without a location, can be named like any other bad field.
 class PathTrackingSax : public nlohmann::json_sax<json> {
  public:
-  explicit PathTrackingSax(json& root) : root_(root) {}
+  // `duplicates`: where a key given twice in one object is noted (the later value kept, as JSON.parse does);
+  // null: such a key stops the parse (duplicatePath names it).
+  PathTrackingSax(json& root, std::vector<std::string>* duplicates) : root_(root), duplicates_(duplicates) {}
 
   bool null() override { return add(nullptr); }
   bool boolean(bool v) override { return add(v); }
@@ -30,7 +32,15 @@ class PathTrackingSax : public nlohmann::json_sax<json> {
   bool binary(binary_t& v) override { return add(json::binary(v)); }
   bool start_object(std::size_t) override { return open(json::object()); }
   bool key(string_t& k) override {
-    frames_.back().key = k;
+    Frame& f = frames_.back();
+    f.key = k;
+    if (!f.container->contains(k)) return true;
+    const std::string path = JsonField::displayPath(pendingPath());
+    if (!duplicates_) {
+      duplicatePath_ = path;
+      return false;
+    }
+    duplicates_->push_back(path);
     return true;
   }
   bool end_object() override { return close(); }
@@ -48,6 +58,7 @@ class PathTrackingSax : public nlohmann::json_sax<json> {
   const std::string& token() const { return token_; }
   bool overflow() const { return overflow_; }
   const std::string& message() const { return message_; }
+  const std::string& duplicatePath() const { return duplicatePath_; }
 
   // The path of the value that the parser is reading now, e.g. lights[3].radius. Enclosing arrays already hold
   // the element being read; the innermost one does not yet.
@@ -96,6 +107,8 @@ class PathTrackingSax : public nlohmann::json_sax<json> {
   }
 
   json& root_;
+  std::vector<std::string>* duplicates_;
+  std::string duplicatePath_;
   std::vector<Frame> frames_;
   std::size_t position_ = 0;
   std::string token_, message_;
@@ -123,12 +136,16 @@ json readJsonFile(const std::string& path) {
   return parseJsonText(text, path);
 }
 
-json parseJsonText(const std::string& text, const std::string& path) {
+json parseJsonText(const std::string& text, const std::string& path, std::vector<std::string>* duplicates) {
   checkJsonNesting(text, path);
 
   json root;
-  PathTrackingSax sax(root);
+  PathTrackingSax sax(root, duplicates);
   if (json::sax_parse(text, &sax)) return root;
+  if (!sax.duplicatePath().empty()) {
+    throw SceneError(path + ": " + sax.duplicatePath() + ": given twice in one object (readers differ on which "
+                     "counts)");
+  }
   // nlohmann reports how many characters it read; the last one read is the one in error.
   const std::string where = path + ":" + lineColumn(text, sax.position() == 0 ? 0 : sax.position() - 1) + ": ";
   if (sax.overflow()) {
