@@ -73,6 +73,7 @@ class Checker {
     checkMaterials();
     checkMeshes();
     checkNodes();
+    checkLights();
     const std::vector<const json*> scenes = objects(doc_, "scenes", "scenes");
     for (std::size_t i = 0; i < scenes.size(); ++i) {
       const json* scene = scenes[i];
@@ -447,6 +448,36 @@ class Checker {
       typed(*material, "alphaMode", field, &json::is_string, "a string");
       typed(*material, "alphaCutoff", field, &json::is_number, "a number");
       typed(*material, "doubleSided", field, &json::is_boolean, "true or false");
+    }
+  }
+
+  // KHR_lights_punctual's values of their form: tinygltf reads a string intensity ("NaN") or range as its default
+  // without a word. A range of 0, which the specification forbids, is what three.js reads as unbounded, and so is
+  // it read here, with a warning.
+  void checkLights() const {
+    const auto extensions = doc_.find("extensions");
+    if (extensions == doc_.end() || !extensions->is_object() || !extensions->contains("KHR_lights_punctual")) return;
+    const json& punctual = member(*extensions, "KHR_lights_punctual", "extensions");
+    const std::vector<const json*> lights = objects(punctual, "lights", "extensions.KHR_lights_punctual.lights");
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      const json& light = *lights[i];
+      const std::string field = item("extensions.KHR_lights_punctual.lights", i);
+      typed(light, "type", field, &json::is_string, "a string");
+      extensionNumbers(light, "color", field, 3);
+      extensionNumbers(light, "intensity", field);
+      extensionNumbers(light, "range", field);
+      // Babylon's exporter writes "spot": null on point lights, read as absent, as tinygltf and the viewers do.
+      if (light.contains("spot") && !light["spot"].is_null()) {
+        const json& spot = member(light, "spot", field);
+        extensionNumbers(spot, "innerConeAngle", field + ".spot");
+        extensionNumbers(spot, "outerConeAngle", field + ".spot");
+      }
+      const auto range = light.find("range");
+      if (range != light.end() && *range == 0) {
+        if (context_.policy.strict) fail(field + ".range", "must be positive (got 0)");
+        warnOnce(context_.path + ": " + field + ".range: 0 read as no range, as three.js reads it (the specification "
+                 "asks for a positive number; --strict refuses it)");
+      }
     }
   }
 

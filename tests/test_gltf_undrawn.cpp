@@ -143,3 +143,35 @@ TEST_CASE("gltf leniency: a node with a matrix beside translation, rotation or s
                            .c_str(),
                        pbr::SceneError);
 }
+
+TEST_CASE("gltf leniency: a light range of 0 is read as no range with one line, a string intensity refused") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 5.0}, {"range", 0}}};
+  b.doc["nodes"].push_back({{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  b.doc["scenes"][0]["nodes"].push_back(1);
+  const std::string path = b.writeGltf(dir.path(), "range0");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  REQUIRE(scene.lights.size() == 1);
+  // As an absent range: the light ends where it gives the cutoff illuminance, well past 0.
+  CHECK(scene.lights[0].radius > 1.0f);
+  CHECK(err.text() == path + ": extensions.KHR_lights_punctual.lights[0].range: 0 read as no range, as three.js reads "
+                             "it (the specification asks for a positive number; --strict refuses it)\n");
+  pbr::Scene strict;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(strict, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}),
+                       (path + ": extensions.KHR_lights_punctual.lights[0].range: must be positive (got 0)").c_str(),
+                       pbr::SceneError);
+
+  // tinygltf would read the string as its default intensity without a word.
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = "NaN";
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"][0].erase("range");
+  const std::string nan = b.writeGltf(dir.path(), "nan");
+  pbr::Scene refused;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(refused, nan),
+                       (nan + ": extensions.KHR_lights_punctual.lights[0].intensity: must be a number (got \"NaN\")")
+                           .c_str(),
+                       pbr::SceneError);
+}
