@@ -74,6 +74,7 @@ class Checker {
     checkMeshes();
     checkNodes();
     checkLights();
+    checkCameras();
     const std::vector<const json*> scenes = objects(doc_, "scenes", "scenes");
     for (std::size_t i = 0; i < scenes.size(); ++i) {
       const json* scene = scenes[i];
@@ -477,6 +478,29 @@ class Checker {
         if (context_.policy.strict) fail(field + ".range", "must be positive (got 0)");
         warnOnce(context_.path + ": " + field + ".range: 0 read as no range, as three.js reads it (the specification "
                  "asks for a positive number; --strict refuses it)");
+      }
+    }
+  }
+
+  // A perspective camera's values of their form (tinygltf reads a string as the default without a word). The
+  // frame's own aspect ratio replaces the file's, so an aspectRatio of 0 or below, which the specification forbids,
+  // changes nothing drawn: a warning, --strict refusing it.
+  void checkCameras() const {
+    const std::vector<const json*> cameras = objects(doc_, "cameras", "cameras");
+    for (std::size_t i = 0; i < cameras.size(); ++i) {
+      const std::string field = item("cameras", i);
+      typed(*cameras[i], "type", field, &json::is_string, "a string");
+      if (!cameras[i]->contains("perspective")) continue;
+      const json& perspective = member(*cameras[i], "perspective", field);
+      const std::string owner = field + ".perspective";
+      for (const char* key : {"aspectRatio", "yfov", "znear", "zfar"}) {
+        typed(perspective, key, owner, &json::is_number, "a number");
+      }
+      const auto aspect = perspective.find("aspectRatio");
+      if (aspect != perspective.end() && *aspect <= 0) {
+        if (context_.policy.strict) fail(owner + ".aspectRatio", "must be positive (got " + quoteJson(*aspect) + ")");
+        warnOnce(context_.path + ": " + owner + ".aspectRatio: " + quoteJson(*aspect) + " is not an aspect ratio; "
+                 "the frame's own is used, as for any camera (--strict refuses it)");
       }
     }
   }

@@ -175,3 +175,28 @@ TEST_CASE("gltf leniency: a light range of 0 is read as no range with one line, 
                            .c_str(),
                        pbr::SceneError);
 }
+
+TEST_CASE("gltf leniency: a camera aspectRatio of 0 or below is named and the frame's own used, --strict refusing it") {
+  const TempDir dir;
+  GltfBuilder b = pbr::test::quadModel();
+  b.doc["cameras"] = {{{"type", "perspective"},
+                       {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 100.0}, {"aspectRatio", -1}}}}};
+  b.doc["nodes"].push_back({{"translation", {0, 0, 5}}, {"camera", 0}});
+  b.doc["scenes"][0]["nodes"].push_back(1);
+  const std::string path = b.writeGltf(dir.path(), "aspect");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  CHECK(err.text().find(path + ": cameras[0].perspective.aspectRatio: -1 is not an aspect ratio; the frame's own is "
+                               "used, as for any camera (--strict refuses it)\n") != std::string::npos);
+  pbr::Scene strict;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(strict, path, glm::mat4(1.0f), pbr::UriPolicy{false, true}),
+                       (path + ": cameras[0].perspective.aspectRatio: must be positive (got -1)").c_str(),
+                       pbr::SceneError);
+  b.doc["cameras"][0]["perspective"]["aspectRatio"] = "1.5";
+  const std::string text = b.writeGltf(dir.path(), "text");
+  pbr::Scene refused;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(refused, text),
+                       (text + ": cameras[0].perspective.aspectRatio: must be a number (got \"1.5\")").c_str(),
+                       pbr::SceneError);
+}
