@@ -50,14 +50,7 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
   current_ = nullptr;
   if (key != key_) {
     key_ = key;
-    clustered_.reset();
-    bruteForce_.reset();
-    bruteForceTrials_ = 0;
-    clusteredSamples_ = 0;
-    clusteredAfterTrials_ = 0;
-    afterTrialsTimed_ = false;
-    retimes_ = sinceRetime_ = 0;
-    retimed_ = false;
+    m_ = {};
     for (InFlight& f : inFlight_) f.pending = false;
   }
   collect();
@@ -67,11 +60,11 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
   bool trialNow = false, retimeNow = false;
   // A frame that measures something waits for a free timing slot (results come back frames later on a GPU).
   const bool canTime = !inFlight_[next_].pending;
-  if (clustered_) {
+  if (m_.clustered) {
     decision_.clusteredMs = predictClustered(counts);
-    if (bruteForce_) decision_.bruteForceMs = predictBruteForce(counts);
+    if (m_.bruteForce) decision_.bruteForceMs = predictBruteForce(counts);
     // The second trial frame follows the first even when the first's time is back.
-    if (bruteForce_ && bruteForceTrials_ != 1) {
+    if (m_.bruteForce && m_.bruteForceTrials != 1) {
       const double low = std::min(decision_.clusteredMs, decision_.bruteForceMs);
       const double high = std::max(decision_.clusteredMs, decision_.bruteForceMs);
       if (high - low <= kHysteresis * low) {
@@ -82,21 +75,21 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
       // The path not chosen is timed again: once, a few frames after the measurements (a time taken while a GPU's
       // clocks rose would otherwise stand), then now and then while its prediction is within 2x, so that the
       // choice follows the scene.
-      if (afterTrialsTimed_) {
+      if (m_.afterTrialsTimed) {
         const bool runsBruteForce = ran == Culling::None;
         const double ranMs = runsBruteForce ? decision_.bruteForceMs : decision_.clusteredMs;
         const double otherMs = runsBruteForce ? decision_.clusteredMs : decision_.bruteForceMs;
-        const int due = retimes_ == 0 ? kFirstRetimeAfter : kRetimeEvery;
-        if (++sinceRetime_ >= due && canTime && (retimes_ == 0 || otherMs <= kRetimeWithin * ranMs)) {
+        const int due = m_.retimes == 0 ? kFirstRetimeAfter : kRetimeEvery;
+        if (++m_.sinceRetime >= due && canTime && (m_.retimes == 0 || otherMs <= kRetimeWithin * ranMs)) {
           ran = runsBruteForce ? Culling::Clustered : Culling::None;
-          sinceRetime_ = 0;
-          ++retimes_;
+          m_.sinceRetime = 0;
+          ++m_.retimes;
           retimeNow = true;
         }
       }
     } else {
       // The sample's own list length is read back after it was taken: the latest stands in for it.
-      const Sample& s = *clustered_;
+      const Sample& s = *m_.clustered;
       const double listLength = s.counts.listLength > 0.0 ? s.counts.listLength : counts.listLength;
       const double listed = double(s.counts.pixels) * listLength;
       // A trial that cannot take long is made; a longer one only where brute force might be the cheaper.
@@ -114,17 +107,17 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
       // Brute force is tried on two frames in a row, once the list length says what a trial may cost and two
       // settled clustered frames have been timed.
       const bool ruledOut = decision_.bruteForceAtLeastMs >= 0.0 || decision_.bruteForceTrialUpToMs >= 0.0;
-      if (listed > 0.0 && clusteredSamples_ >= 2 && !ruledOut && bruteForceTrials_ < 2 && canTime) {
+      if (listed > 0.0 && m_.clusteredSamples >= 2 && !ruledOut && m_.bruteForceTrials < 2 && canTime) {
         ran = Culling::None;
-        ++bruteForceTrials_;
+        ++m_.bruteForceTrials;
         trialNow = true;
       }
     }
     // Clustered again right after the trials, so that both paths are timed at the same clocks (a GPU's rise over
     // its first frames would otherwise favour the path timed later).
-    if (!trialNow && bruteForceTrials_ == 2 && clusteredAfterTrials_ < 2 && canTime) {
+    if (!trialNow && m_.bruteForceTrials == 2 && m_.clusteredAfterTrials < 2 && canTime) {
       ran = Culling::Clustered;
-      ++clusteredAfterTrials_;
+      ++m_.clusteredAfterTrials;
     }
   }
   decision_.ran = ran;
@@ -140,8 +133,8 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
     f.issuedEnd = false;
     f.clustered = ran == Culling::Clustered;
     f.settled = settled;
-    f.trial = ran == Culling::None && !bruteForce_;
-    f.afterTrials = ran == Culling::Clustered && bruteForceTrials_ == 2;
+    f.trial = ran == Culling::None && !m_.bruteForce;
+    f.afterTrials = ran == Culling::Clustered && m_.bruteForceTrials == 2;
     f.retime = retimeNow;
     f.counts = counts;
     current_ = &f;
@@ -150,11 +143,11 @@ Culling CullingChoice::choose(const std::string& key, const CullingCounts& count
 }
 
 bool CullingChoice::decided() const {
-  if (!clustered_) return false;
+  if (!m_.clustered) return false;
   const bool trialPending = std::any_of(inFlight_.begin(), inFlight_.end(),
                                         [](const InFlight& f) { return f.pending && f.trial; });
   const bool ruledOut = decision_.bruteForceAtLeastMs >= 0.0 || decision_.bruteForceTrialUpToMs >= 0.0;
-  return !trialPending && (ruledOut || (bruteForce_ && afterTrialsTimed_ && retimed_));
+  return !trialPending && (ruledOut || (m_.bruteForce && m_.afterTrialsTimed && m_.retimed));
 }
 
 void CullingChoice::mark(Mark at) {
@@ -180,20 +173,20 @@ void CullingChoice::collect() {
       const double total = sample.clusterMs + sample.lightingMs;
       if (!slot || !measuring || f.retime || total < slot->clusterMs + slot->lightingMs) slot = sample;
     };
-    if (f.retime) retimed_ = true;
+    if (f.retime) m_.retimed = true;
     if (!f.clustered) {
-      keep(bruteForce_);
+      keep(m_.bruteForce);
     } else if (f.settled) {
-      keep(clustered_);
-      ++clusteredSamples_;
-      if (f.afterTrials) afterTrialsTimed_ = true;
+      keep(m_.clustered);
+      ++m_.clusteredSamples;
+      if (f.afterTrials) m_.afterTrialsTimed = true;
     }
     f.pending = false;
   }
 }
 
 double CullingChoice::predictClustered(const CullingCounts& now) const {
-  const Sample& s = *clustered_;
+  const Sample& s = *m_.clustered;
   const double listNow = now.listLength > 0.0 ? now.listLength : s.counts.listLength;
   const double pairs = s.counts.listLength > 0.0
                            ? ratio(double(now.pixels) * listNow, double(s.counts.pixels) * s.counts.listLength)
@@ -202,7 +195,7 @@ double CullingChoice::predictClustered(const CullingCounts& now) const {
 }
 
 double CullingChoice::predictBruteForce(const CullingCounts& now) const {
-  const Sample& s = *bruteForce_;
+  const Sample& s = *m_.bruteForce;
   return s.lightingMs * ratio(double(now.pixels) * now.lights, double(s.counts.pixels) * s.counts.lights);
 }
 

@@ -69,8 +69,8 @@ class CullingChoice {
     bool issuedEnd = false; // the frame reached its last mark
     bool clustered = false;
     bool settled = false;   // a clustered frame that may be sampled
-    bool trial = false;     // a frame of the measurements (brute force, or clustered right after)
-    bool afterTrials = false;
+    bool trial = false;     // a brute-force frame run to time it
+    bool afterTrials = false;  // a clustered frame right after the brute-force trials
     bool retime = false;    // the path not chosen, timed again
     CullingCounts counts;
   };
@@ -79,13 +79,17 @@ class CullingChoice {
   double predictBruteForce(const CullingCounts& now) const;
 
   std::string key_;
-  std::optional<Sample> clustered_, bruteForce_;
-  int bruteForceTrials_ = 0;  // frames of brute force run before any was timed
-  int clusteredSamples_ = 0;  // settled clustered frames timed
-  int clusteredAfterTrials_ = 0;  // clustered frames run right after the brute-force trials
-  bool afterTrialsTimed_ = false;
-  int retimes_ = 0, sinceRetime_ = 0;  // times the path not chosen was timed again, frames since
-  bool retimed_ = false;               // the first of those is back
+  // What the measurements since the last change of key found and where they stand; a new key starts them afresh.
+  struct Measurements {
+    std::optional<Sample> clustered, bruteForce;
+    int bruteForceTrials = 0;      // frames of brute force run before any was timed
+    int clusteredSamples = 0;      // settled clustered frames timed
+    int clusteredAfterTrials = 0;  // clustered frames run right after the brute-force trials
+    bool afterTrialsTimed = false;
+    int retimes = 0, sinceRetime = 0;  // times the path not chosen was timed again, frames since
+    bool retimed = false;              // the first of those is back
+  };
+  Measurements m_;
   std::array<InFlight, 8> inFlight_;
   size_t next_ = 0;
   InFlight* current_ = nullptr;
