@@ -29,6 +29,9 @@ ShaderDefines fillDefines(bool workgroupPerSlot) {
 // The most workgroups one dispatch dimension is sure to take (GL_MAX_COMPUTE_WORK_GROUP_COUNT's least maximum).
 constexpr uint32_t kMaxGroups = 65535;
 
+// Light-index entries per cluster holding a surface.
+double listLength(const ClusterStatus& s) { return s.activeClusters ? double(s.demand) / s.activeClusters : 0.0; }
+
 GLuint groupsFor(uint64_t items, uint32_t groupSize) { return static_cast<GLuint>((items + groupSize - 1) / groupSize); }
 
 // Words of one slot's light mask over a window of lights (a bit per light), and of its summary (a bit per mask
@@ -202,7 +205,7 @@ void LightClusters::growFromPastDemand() {
     glGetNamedBufferSubData(p.buffer->id(), 0, sizeof s, &s);
     growTo(s.demand);
     expectedActive_ = std::max(expectedActive_, s.activeClusters);
-    recentListLength_ = s.activeClusters ? double(s.demand) / s.activeClusters : 0.0;
+    recentListLength_ = listLength(s);
   }
 }
 
@@ -273,7 +276,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
     const uint32_t before = capacity_;
     const ClusterStatus sized = readStatus();
     growTo(sized.demand);
-    recentListLength_ = sized.activeClusters ? double(sized.demand) / sized.activeClusters : 0.0;
+    recentListLength_ = listLength(sized);
     if (capacity_ != before) {
       blockData_.counts.z = capacity_;
       block_.update(blockData_);
