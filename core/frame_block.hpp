@@ -16,7 +16,7 @@ struct FrameBlock {
   glm::vec4 cameraPosition;  // xyz world, w unused
   glm::vec4 viewport;        // width, height, 1/width, 1/height
   glm::vec4 projParams;      // P[0][0], P[1][1], P[2][2], P[3][2]: view-space position from depth
-  glm::vec4 clip;            // near, far, unused, unused
+  glm::vec4 clip;            // near, far, P[2][3], P[3][3]: -1, 0 perspective; 0, 1 orthographic
 };
 static_assert(sizeof(FrameBlock) == 4 * 64 + 4 * 16, "FrameBlock must match its std140 layout");
 

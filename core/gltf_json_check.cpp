@@ -482,14 +482,23 @@ class Checker {
     }
   }
 
-  // A perspective camera's values of their form (tinygltf reads a string as the default without a word). The
-  // frame's own aspect ratio replaces the file's, so an aspectRatio of 0 or below, which the specification forbids,
+  // A camera's values of their form (tinygltf reads a string as the default without a word), an orthographic
+  // camera's four all given (the specification requires them; their values are checked at load). The frame's own
+  // aspect ratio replaces the file's, so a perspective aspectRatio of 0 or below, which the specification forbids,
   // changes nothing drawn: a warning, --strict refusing it.
   void checkCameras() const {
     const std::vector<const json*> cameras = objects(doc_, "cameras", "cameras");
     for (std::size_t i = 0; i < cameras.size(); ++i) {
       const std::string field = item("cameras", i);
       typed(*cameras[i], "type", field, &json::is_string, "a string");
+      if (cameras[i]->contains("orthographic")) {
+        const json& orthographic = member(*cameras[i], "orthographic", field);
+        const std::string owner = field + ".orthographic";
+        for (const char* key : {"xmag", "ymag", "znear", "zfar"}) {
+          if (!orthographic.contains(key)) fail(owner + "." + key, "is required");
+          typed(orthographic, key, owner, &json::is_number, "a number");
+        }
+      }
       if (!cameras[i]->contains("perspective")) continue;
       const json& perspective = member(*cameras[i], "perspective", field);
       const std::string owner = field + ".perspective";

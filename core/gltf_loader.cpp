@@ -30,6 +30,9 @@ constexpr float kPi = 3.14159265358979f;
 // matrix that overflows; zero collapses the model entirely.
 constexpr double kMinDeterminant = 1e-30;
 
+// Where an orthographic camera with znear 0 gets its near plane, as a share of its far plane's distance.
+constexpr float kOrthographicNearShare = 1e-4f;
+
 // "1 animation", "2 animations".
 std::string counted(size_t n, const std::string& noun) {
   return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
@@ -301,7 +304,8 @@ class Loader {
     return out;
   }
 
-  // A perspective camera looks down its node's -Z with +Y up; the frame's own aspect ratio replaces the file's.
+  // A camera looks down its node's -Z with +Y up; the frame's own aspect ratio replaces the file's (a perspective
+  // camera's aspectRatio, an orthographic one's xmag: its ymag sets the height, the frame's aspect the width).
   void addCamera(int index, const glm::mat4& world, const std::string& field) {
     const auto& cameras = file_.model.cameras;
     if (static_cast<size_t>(index) >= cameras.size()) {
@@ -309,25 +313,57 @@ class Loader {
     }
     const tinygltf::Camera& c = cameras[static_cast<size_t>(index)];
     const std::string name = gltfElement("cameras", index);
-    if (c.type != "perspective") {
+    Camera camera;
+    bool infinite = false;
+    if (c.type == "perspective") {
+      const tinygltf::PerspectiveCamera& p = c.perspective;
+      if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>())) file_.fail(name + ".perspective.yfov: must be in (0, pi)");
+      if (!(p.znear > 0.0 && p.znear <= kMaxCoordinate)) file_.fail(name + ".perspective.znear: must be > 0");
+      if (p.zfar != 0.0 && !(p.zfar > p.znear && p.zfar <= kMaxCoordinate)) {
+        file_.fail(name + ".perspective.zfar: must be greater than znear");
+      }
+      camera.fovYDeg = static_cast<float>(glm::degrees(p.yfov));
+      camera.nearPlane = static_cast<float>(p.znear);
+      camera.farPlane = static_cast<float>(p.zfar);  // 0: tinygltf's absent zfar, set from the bounds in load()
+      infinite = p.zfar == 0.0;
+    } else if (c.type == "orthographic") {
+      readOrthographic(c.orthographic, name + ".orthographic", camera);
+    } else {
       file_.warn(name + ": " + c.type + " cameras are not supported, skipped");
       return;
     }
-    const tinygltf::PerspectiveCamera& p = c.perspective;
-    if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>())) file_.fail(name + ".perspective.yfov: must be in (0, pi)");
-    if (!(p.znear > 0.0 && p.znear <= kMaxCoordinate)) file_.fail(name + ".perspective.znear: must be > 0");
-    if (p.zfar != 0.0 && !(p.zfar > p.znear && p.zfar <= kMaxCoordinate)) {
-      file_.fail(name + ".perspective.zfar: must be greater than znear");
-    }
-    Camera camera;
     camera.position = glm::vec3(world[3]);
     const glm::vec3 forward = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f));
     camera.target = camera.position + forward;
     camera.up = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 1.0f, 0.0f));
-    camera.fovYDeg = static_cast<float>(glm::degrees(p.yfov));
-    camera.nearPlane = static_cast<float>(p.znear);
-    camera.farPlane = static_cast<float>(p.zfar);  // 0: tinygltf's absent zfar, set from the bounds in load()
-    cameras_.push_back({camera, p.zfar == 0.0});
+    cameras_.push_back({camera, infinite});
+  }
+
+  // The specification forbids xmag and ymag of 0 and advises against negative ones (which some viewers read as a
+  // mirrored image): their magnitude is used, with a warning. A znear of 0 is valid, but the depth slices are
+  // spaced by the logarithm of depth: the near plane then lies at 1e-4 of zfar, said in a note.
+  void readOrthographic(const tinygltf::OrthographicCamera& o, const std::string& owner, Camera& camera) const {
+    for (const auto& [key, mag] : {std::pair<const char*, double>{"xmag", o.xmag}, {"ymag", o.ymag}}) {
+      if (!(mag != 0.0 && std::fabs(mag) <= kMaxCoordinate)) {
+        file_.fail(owner + "." + key + ": must be a non-zero magnification (got " + number(mag) + ")");
+      }
+      if (mag < 0.0) {
+        if (file_.policy.strict) file_.fail(owner + "." + key + ": must not be negative (got " + number(mag) + ")");
+        file_.warn(owner + "." + key + ": " + number(mag) + " is negative; its magnitude is used, unmirrored "
+                   "(--strict refuses it)");
+      }
+    }
+    if (!(o.znear >= 0.0 && o.znear <= kMaxCoordinate)) file_.fail(owner + ".znear: must be >= 0");
+    if (!(o.zfar > o.znear && o.zfar <= kMaxCoordinate)) file_.fail(owner + ".zfar: must be greater than znear");
+    camera.orthographic = true;
+    camera.orthoHalfHeight = static_cast<float>(std::fabs(o.ymag));
+    camera.farPlane = static_cast<float>(o.zfar);
+    camera.nearPlane = static_cast<float>(o.znear);
+    if (o.znear == 0.0) {
+      camera.nearPlane = camera.farPlane * kOrthographicNearShare;
+      scene_.notes.push_back(gltfFileName() + ": " + owner + ".znear: 0, the near plane set at " +
+                             number(camera.nearPlane) + " (1e-4 of zfar): the depth slices need one above 0");
+    }
   }
 
   // A node's transform combined with its parents' may still overflow or collapse; the node is named, not the

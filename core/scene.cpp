@@ -97,6 +97,7 @@ void validateScene(const Scene& scene, const std::string& source) {
   c.finite("camera.target", cam.target);
   c.finite("camera.up", cam.up);
   c.inRange("camera.fov_y_deg", cam.fovYDeg, 1.0f, 179.0f);
+  if (cam.orthographic) c.inRange("camera.ortho_half_height", cam.orthoHalfHeight, 1e-6f, 1e6f);
   c.atLeast("camera.near", cam.nearPlane, 1e-6f);
   if (!(cam.farPlane > cam.nearPlane)) c.fail("camera.far", "must be greater than camera.near", cam.farPlane);
   c.atLeast("exposure", scene.exposure, 0.0f);

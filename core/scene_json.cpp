@@ -75,6 +75,11 @@ Camera readCamera(const JsonField& f) {
   c.target = f["target"].vec3(kCoordinate);
   c.up = f["up"].vec3(R::any(), c.up);
   c.fovYDeg = f["fov_y_deg"].number(R::open(0.0, 180.0), c.fovYDeg);
+  if (f["ortho_half_height"].present()) {
+    if (f["fov_y_deg"].present()) f.fail("expected fov_y_deg or ortho_half_height, got both");
+    c.orthographic = true;
+    c.orthoHalfHeight = static_cast<float>(f["ortho_half_height"].number(R::closed(1e-6, 1e6)));
+  }
   c.nearPlane = f["near"].number(R::above(0.0), c.nearPlane);
   c.farPlane = f["far"].number(R::above(c.nearPlane, "camera.near"), c.farPlane);
   const glm::vec3 view = c.target - c.position;

@@ -258,19 +258,21 @@ const GpuMesh& GBufferPass::casterMesh(const Draw& d, const ShadowCasterView& v,
   return own;
 }
 
-void GBufferPass::drawBlended(GLuint framebuffer, const glm::vec3& viewer, const BlendedProgram& program,
+void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const BlendedProgram& program,
                               BlendOrder order, int repeats) const {
   std::vector<const Draw*> blended;
   for (size_t i = opaqueDraws_; i < draws_.size(); ++i) blended.push_back(&draws_[i]);
   if (order == BlendOrder::BackToFront) {
     // By the distance of the bounds' centres, which orders them as their view depths do for objects ahead of the
-    // camera and keeps the order when the camera turns on the spot (glTF-Sample-Viewer sorts by the centre's depth).
-    auto distance2 = [&](const Draw* d) {
-      const glm::vec3 c = 0.5f * (d->bounds.min + d->bounds.max) - viewer;
-      return glm::dot(c, c);
+    // camera and keeps the order when the camera turns on the spot (glTF-Sample-Viewer sorts by the centre's depth);
+    // along parallel rays by the centres' depth itself, the distance from the camera's plane.
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    auto farness = [&](const Draw* d) {
+      const glm::vec3 c = 0.5f * (d->bounds.min + d->bounds.max) - camera.position;
+      return camera.orthographic ? glm::dot(c, forward) : glm::dot(c, c);
     };
     std::stable_sort(blended.begin(), blended.end(),
-                     [&](const Draw* a, const Draw* b) { return distance2(a) > distance2(b); });
+                     [&](const Draw* a, const Draw* b) { return farness(a) > farness(b); });
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glEnable(GL_DEPTH_TEST);

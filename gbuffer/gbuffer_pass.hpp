@@ -32,9 +32,9 @@ class GBufferPass {
   // Whether the G-buffer holds unlit surfaces (hasUnlitSurface), whose pixels the lighting pass leaves unlit.
   bool hasUnlit() const { return unlit_; }
   // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
-  // the program `program` makes from this pass's vertex shader and the object's permutation. `viewer` is the
-  // camera's position, from which BackToFront orders them.
-  void drawBlended(GLuint framebuffer, const glm::vec3& viewer, const BlendedProgram& program, BlendOrder order,
+  // the program `program` makes from this pass's vertex shader and the object's permutation; BackToFront orders
+  // them as seen by `camera`.
+  void drawBlended(GLuint framebuffer, const Camera& camera, const BlendedProgram& program, BlendOrder order,
                    int repeats) const;
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }

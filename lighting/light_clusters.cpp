@@ -95,8 +95,11 @@ void LightClusters::rebuildGrid(const FrameBlock& f) {
   // How far, in slices, a cluster's box may reach past its slice (the light pass widens each light's slice range
   // by it): the occupancy pass's 1e-3 of a slice, and the box's padding (occupiedBox: 1e-4 of its largest
   // coordinate, which inside the view is at most k times the depth of the slice's far end, k = max(1, 1/P00,
-  // 1/P11), plus 1e-6, at least the near plane's depth away), doubled.
-  const float k = std::max(1.0f, std::max(1.0f / f.projParams.x, 1.0f / f.projParams.y));
+  // 1/P11) in perspective; in orthographic x and y reach 1/P00 and 1/P11 at any depth, at most k = max(1,
+  // 1/(P00 near), 1/(P11 near)) times a depth past the near plane; plus 1e-6, at least the near plane's depth
+  // away), doubled.
+  const float depthScale = f.clip.w != 0.0f ? nearPlane : 1.0f;
+  const float k = std::max(1.0f, std::max(1.0f / (f.projParams.x * depthScale), 1.0f / (f.projParams.y * depthScale)));
   const float margin = 2.0f * (1e-3f + scale * (1e-4f * k * std::exp(1.0f / scale) + 1e-6f / nearPlane));
   blockData_.slicing = glm::vec4(nearPlane, margin, scale, -scale * std::log(nearPlane));
   blockData_.counts = glm::uvec4(0, clusters, 0, 0);

@@ -18,8 +18,8 @@ namespace {
 // Where the ray through the continuous image point (px, py), py counted down from the top edge, meets the
 // plane; nullopt where it misses.
 std::optional<dvec3> castRay(const Scene& scene, int width, int height, double px, double py) {
-  const dvec3 eye(scene.camera.position);
-  const dvec3 dir = cameraDirection(scene.camera, width, height, px, py);
+  const Ray ray = cameraRayAt(scene.camera, width, height, px, py);
+  const dvec3 &eye = ray.origin, &dir = ray.direction;
   const Plane& plane = scene.plane;
   // The plane is one-sided (back faces are culled): seen from behind it is invisible.
   if (glm::dot(eye - plane.center, plane.normal) <= 0.0) return std::nullopt;
@@ -51,7 +51,10 @@ Image render(const Scene& scene, int width, int height, Shade shade) {
         const bool probeHits = castRay(scene, width, height, px + o[0], py + o[1]).has_value();
         if (probeHits != hit.has_value()) out.kind = PixelKind::Edge;
       }
-      if (hit) out.radiance = shade(*hit, glm::normalize(dvec3(scene.camera.position) - *hit));
+      if (hit) {
+        const dvec3 eye = cameraRayAt(scene.camera, width, height, px, py).origin;
+        out.radiance = shade(*hit, glm::normalize(eye - *hit));
+      }
     }
   }
   return image;

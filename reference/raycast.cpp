@@ -144,20 +144,25 @@ bool AnalyticScene::occluded(const Ray& ray, double tMin, double tMax) const {
   return false;
 }
 
-dvec3 cameraDirection(const Camera& camera, int width, int height, double px, double py) {
+Ray cameraRayAt(const Camera& camera, int width, int height, double px, double py) {
   // glm::lookAtRH's basis: the camera looks down -z, x is right, y is up.
   const dvec3 forward = glm::normalize(dvec3(camera.target) - dvec3(camera.position));
   const dvec3 right = glm::normalize(glm::cross(forward, dvec3(camera.up)));
   const dvec3 up = glm::cross(right, forward);
-  const double tanHalf = std::tan(glm::radians(double(camera.fovYDeg)) * 0.5);
   const double aspect = double(width) / double(height);
   const double ndcX = px / width * 2.0 - 1.0;
   const double ndcY = 1.0 - py / height * 2.0;
-  return forward + ndcX * aspect * tanHalf * right + ndcY * tanHalf * up;
+  if (camera.orthographic) {
+    const double h = camera.orthoHalfHeight;
+    return {dvec3(camera.position) + ndcX * aspect * h * right + ndcY * h * up, forward};
+  }
+  const double tanHalf = std::tan(glm::radians(double(camera.fovYDeg)) * 0.5);
+  return {dvec3(camera.position), forward + ndcX * aspect * tanHalf * right + ndcY * tanHalf * up};
 }
 
 Ray cameraRay(const Camera& camera, int width, int height, int x, int y) {
-  return {dvec3(camera.position), glm::normalize(cameraDirection(camera, width, height, x + 0.5, y + 0.5))};
+  const Ray ray = cameraRayAt(camera, width, height, x + 0.5, y + 0.5);
+  return {ray.origin, glm::normalize(ray.direction)};
 }
 
 }  // namespace pbr::reference

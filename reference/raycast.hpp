@@ -13,7 +13,7 @@ using glm::dvec3;
 
 struct Ray {
   dvec3 origin;
-  dvec3 direction;  // unit
+  dvec3 direction;  // unit, but for cameraRayAt's
 };
 
 struct Hit {
@@ -63,10 +63,11 @@ class AnalyticScene final : public RayCaster {
   double extent_ = 0.0;
 };
 
-// The direction from the camera through the continuous image point (px, py), py counted down from the top edge,
+// The camera's ray through the continuous image point (px, py), py counted down from the top edge, its direction
 // unnormalised: its component along the view axis is 1, so a ray parameter along it is the depth that the near
-// and far planes clip.
-dvec3 cameraDirection(const Camera& camera, int width, int height, double px, double py);
+// and far planes clip. Perspective rays leave the camera's position; orthographic ones leave the point of the
+// camera's plane that the image point shows, all along the view axis.
+Ray cameraRayAt(const Camera& camera, int width, int height, double px, double py);
 // The ray through the centre of pixel (x, y), rows counted from the top, for the scene camera.
 Ray cameraRay(const Camera& camera, int width, int height, int x, int y);
 

@@ -62,7 +62,7 @@ BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {
   return {[this, framebuffer](const BlendedProgram& program, BlendOrder order, int repeats) {
     frame_.bind(kFrameUbo.index);
     glViewport(0, 0, width(), height());
-    scene_.geometry.drawBlended(framebuffer, camera_.position, program, order, repeats);
+    scene_.geometry.drawBlended(framebuffer, camera_, program, order, repeats);
   }};
 }
 

@@ -35,8 +35,9 @@ int ceilPow2(float x, int lo, int hi) {
   return s;
 }
 
-// The light's sphere's radius on screen in pixels; the whole frame's height when the camera is inside it.
+// The light's sphere's radius on screen in pixels; the whole frame's height when a perspective camera is inside it.
 float screenRadius(const Camera& camera, int frameHeight, const glm::vec3& centre, float R) {
+  if (camera.orthographic) return std::min(R / camera.orthoHalfHeight, 2.0f) * float(frameHeight) * 0.5f;
   const float d = glm::distance(camera.position, centre);
   if (d <= R * 1.001f) return float(frameHeight);
   const float tanAngle = R / std::sqrt(d * d - R * R);

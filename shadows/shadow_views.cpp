@@ -57,13 +57,13 @@ ShadowViewPlan cascadeView(const Camera& camera, float aspect, const CascadeSpli
   const glm::vec3 forward = glm::normalize(camera.target - camera.position);
   frameAround(forward, right, up);
   // frameAround's up need not be the camera's: the slice's corners depend only on the frustum's extent.
-  const float tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5f), tanX = tanY * aspect;
   glm::vec3 centre(0.0f);
   std::array<glm::vec3, 8> slice;
   for (int i = 0; i < 8; ++i) {
     const float z = i & 4 ? end : begin;
-    slice[size_t(i)] = camera.position + forward * z + right * (z * tanX * (i & 1 ? 1.0f : -1.0f)) +
-                       up * (z * tanY * (i & 2 ? 1.0f : -1.0f));
+    const glm::vec2 half = camera.halfExtent(z, aspect);
+    slice[size_t(i)] = camera.position + forward * z + right * (half.x * (i & 1 ? 1.0f : -1.0f)) +
+                       up * (half.y * (i & 2 ? 1.0f : -1.0f));
     centre += slice[size_t(i)] / 8.0f;
   }
   float radius = 0.0f;

@@ -346,7 +346,7 @@ TEST_CASE("gltf lights: KHR_lights_punctual point and directional lights with in
   CHECK(2.5f * 0.8f / (b.radius * b.radius) == doctest::Approx(pbr::kGltfLightCutoffIlluminance));
 }
 
-TEST_CASE("gltf cameras: perspective cameras in node order, placed by their nodes and an absent zfar ends past the bounds") {
+TEST_CASE("gltf cameras: cameras in node order, placed by their nodes and an absent zfar ends past the bounds") {
   const TempDir dir;
   GltfBuilder builder;
   builder.addRootNode({{"mesh", pbr::test::addQuad(builder, {})}});
@@ -361,7 +361,7 @@ TEST_CASE("gltf cameras: perspective cameras in node order, placed by their node
   builder.doc["nodes"].push_back({{"translation", {6, 0, 0}}, {"rotation", {0, h, 0, h}}, {"camera", 2}});
   builder.doc["scenes"][0]["nodes"] = {0, 1, 2, 3};
   const pbr::Scene scene = pbr::loadModelScene(builder.writeGltf(dir.path(), "cameras"));
-  REQUIRE(scene.cameras.size() == 2);  // the orthographic one is skipped with a warning
+  REQUIRE(scene.cameras.size() == 3);
   const pbr::Camera& a = scene.cameras[0];
   CHECK(a.position == glm::vec3(0, 0, 5));
   CHECK(a.target == glm::vec3(0, 0, 4));
@@ -369,7 +369,14 @@ TEST_CASE("gltf cameras: perspective cameras in node order, placed by their node
   CHECK(a.fovYDeg == doctest::Approx(0.5 * 180.0 / kPi));
   CHECK(a.nearPlane == 0.2f);
   CHECK(a.farPlane == 30.0f);
-  const pbr::Camera& b = scene.cameras[1];
+  CHECK_FALSE(a.orthographic);
+  const pbr::Camera& o = scene.cameras[1];
+  CHECK(o.orthographic);
+  CHECK(o.position == glm::vec3(0, 1, 0));
+  CHECK(o.orthoHalfHeight == 1.0f);
+  CHECK(o.nearPlane == 0.1f);
+  CHECK(o.farPlane == 10.0f);
+  const pbr::Camera& b = scene.cameras[2];
   CHECK(b.position == glm::vec3(6, 0, 0));
   CHECK(b.target.x == doctest::Approx(5.0));
   CHECK(b.target.z == doctest::Approx(0.0).epsilon(1e-6));

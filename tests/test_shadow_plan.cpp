@@ -9,6 +9,9 @@
 #include <numeric>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include "shadows/atlas_packing.hpp"
 #include "shadows/shadow_plan.hpp"
 #include "shadows/shadow_views.hpp"
@@ -171,6 +174,36 @@ TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the receivers' de
     for (int axis = 0; axis < 2; ++axis) {
       const double shift = (double(va.viewProjection[3][axis]) - double(vb.viewProjection[3][axis])) * va.size / 2.0;
       CHECK(std::abs(shift - std::round(shift)) < 1e-2);
+    }
+  }
+}
+
+TEST_CASE("shadow views: each cascade's square holds its slice of the view, perspective or orthographic") {
+  const glm::vec3 sun = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.2f));
+  const float aspect = 16.0f / 9.0f;
+  for (const bool orthographic : {false, true}) {
+    CAPTURE(orthographic);
+    pbr::Camera cam = camera();
+    cam.orthographic = orthographic;
+    cam.orthoHalfHeight = 3.0f;
+    const pbr::CascadeSplits splits = pbr::cascadeSplits(cam, 2.0f, 20.0f, pbr::kCascades);
+    REQUIRE(splits.count == pbr::kCascades);
+    const glm::vec3 forward = glm::normalize(cam.target - cam.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up)), up = glm::cross(right, forward);
+    for (int c = 0; c < splits.count; ++c) {
+      CAPTURE(c);
+      const pbr::ShadowViewPlan v = pbr::cascadeView(cam, aspect, splits, c, sun, floorBounds(), 1024);
+      const float begin = c == 0 ? splits.begin : splits.ends[size_t(c - 1)], end = splits.ends[size_t(c)];
+      for (int i = 0; i < 8; ++i) {
+        // The slice's corners: half a view of 2 ortho half-heights at every depth, or 2 z tan(fov / 2) at depth z.
+        const float z = i & 4 ? end : begin;
+        const float halfY = orthographic ? cam.orthoHalfHeight : z * std::tan(glm::radians(cam.fovYDeg) / 2.0f);
+        const glm::vec3 corner = cam.position + forward * z + right * (halfY * aspect * (i & 1 ? 1.0f : -1.0f)) +
+                                 up * (halfY * (i & 2 ? 1.0f : -1.0f));
+        const glm::vec4 clip = v.viewProjection * glm::vec4(corner, 1.0f);
+        CHECK(std::abs(clip.x / clip.w) <= 1.0f + 1e-5f);
+        CHECK(std::abs(clip.y / clip.w) <= 1.0f + 1e-5f);
+      }
     }
   }
 }

@@ -25,6 +25,10 @@ void OrbitCamera::orbit(float yawDelta, float pitchDelta) {
 }
 
 void OrbitCamera::zoom(float factor) {
+  if (camera_.orthographic) {  // a parallel view's size does not change with distance: the view's height does
+    camera_.orthoHalfHeight = std::clamp(camera_.orthoHalfHeight * factor, 1e-4f, 1e5f);
+    return;
+  }
   // Never through the near plane onto the target, never past the far plane.
   distance_ = std::clamp(distance_ * factor, camera_.nearPlane * 2.0f, camera_.farPlane * 0.9f);
   place();

@@ -367,7 +367,11 @@ void Overlay::camera(Viewer& viewer) {
   ImGui::Text("target    %8.3f %8.3f %8.3f", c.target.x, c.target.y, c.target.z);
   ImGui::Text("yaw %.1f deg, pitch %.1f deg, distance %.3f", glm::degrees(orbit.yaw()), glm::degrees(orbit.pitch()),
               orbit.distance());
-  ImGui::Text("fov %.1f deg (vertical), near %.3g, far %.3g", c.fovYDeg, c.nearPlane, c.farPlane);
+  if (c.orthographic) {
+    ImGui::Text("orthographic, half height %.3g, near %.3g, far %.3g", c.orthoHalfHeight, c.nearPlane, c.farPlane);
+  } else {
+    ImGui::Text("fov %.1f deg (vertical), near %.3g, far %.3g", c.fovYDeg, c.nearPlane, c.farPlane);
+  }
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::InputText("##scene file", scenePath_, sizeof scenePath_);
   if (ImGui::Button("save as scene JSON")) {

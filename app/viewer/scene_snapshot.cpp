@@ -43,8 +43,14 @@ void makeAbsolute(json& value, const fs::path& folder) {
 }
 
 json cameraBlock(const Camera& c) {
-  return {{"position", vec3(c.position)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
-          {"fov_y_deg", number(c.fovYDeg)}, {"near", number(c.nearPlane)}, {"far", number(c.farPlane)}};
+  json block = {{"position", vec3(c.position)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+                {"near", number(c.nearPlane)}, {"far", number(c.farPlane)}};
+  if (c.orthographic) {
+    block["ortho_half_height"] = number(c.orthoHalfHeight);
+  } else {
+    block["fov_y_deg"] = number(c.fovYDeg);
+  }
+  return block;
 }
 
 json environmentBlock(const std::optional<EnvironmentDesc>& environment) {

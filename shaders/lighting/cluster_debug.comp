@@ -41,7 +41,7 @@ void main() {
   if (depth <= 0.0) {
     color = shade * 0.3;
   } else {
-    float zView = -frame.projParams.w / (depth + frame.projParams.z);
+    float zView = viewZAt(depth);
 #if DEBUG_SLICES
     vec3 tint = sliceColor(depthSlice(-zView));
 #else

@@ -84,12 +84,16 @@ uint gColumns, gTiles, gSliceFirst, gSliceLast;
 bool gHit;
 
 // The tiles the sphere's projection may cover: the screen rectangle of its view-space bounding box, widened by
-// a pixel; every tile when the box reaches the eye plane. False when the rectangle misses the screen.
+// a pixel; in perspective every tile when the box reaches the eye plane. False when the rectangle misses the
+// screen.
 bool tileRectangle(vec4 sphere, out uvec2 first, out uvec2 last) {
   float nearDepth = -sphere.z - sphere.w, farDepth = -sphere.z + sphere.w;
   vec2 ndcLo = vec2(-1.0), ndcHi = vec2(1.0);
-  if (nearDepth > 1e-6) {
-    vec2 lo = sphere.xy - sphere.w, hi = sphere.xy + sphere.w;
+  vec2 lo = sphere.xy - sphere.w, hi = sphere.xy + sphere.w;
+  if (frame.clip.w != 0.0) {  // orthographic: x and y do not shrink with depth
+    ndcLo = lo * frame.projParams.xy;
+    ndcHi = hi * frame.projParams.xy;
+  } else if (nearDepth > 1e-6) {
     ndcLo = min(lo / nearDepth, lo / farDepth) * frame.projParams.xy;
     ndcHi = max(hi / nearDepth, hi / farDepth) * frame.projParams.xy;
   }

@@ -27,8 +27,7 @@ layout(rgba32f, binding = PARTIAL_RADIANCE_IMAGE) uniform image2D partialRadianc
 // The environment's unfiltered radiance along the pixel's view ray, the same ray readSurface would reconstruct.
 vec3 background(ivec2 p) {
   vec2 ndc = (vec2(p) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  vec3 viewRay = vec3(ndc.x / frame.projParams.x, ndc.y / frame.projParams.y, -1.0);
-  return iblSpecular(normalize(mat3(frame.inverseView) * viewRay), 0.0);
+  return iblSpecular(normalize(mat3(frame.inverseView) * viewRayAt(ndc)), 0.0);
 }
 #endif
 

@@ -17,20 +17,11 @@ struct Surface {
 #endif
 };
 
-// The view-space point at pixel p (integer coordinates of its lower-left corner) with reversed-Z depth `depth`.
-// Reversed-Z projection: depth = -P22 - P32 / z_view, solved for z_view; exact where the inverse view-projection
-// matrix would lose digits.
-vec3 viewPositionAt(vec2 p, float depth) {
-  vec2 ndc = (p + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  float zView = -frame.projParams.w / (depth + frame.projParams.z);
-  return vec3(-zView * ndc.x / frame.projParams.x, -zView * ndc.y / frame.projParams.y, zView);
-}
-
 // The point's place and view terms from its view-space position and unit normal.
 void placeSurface(vec3 viewPos, vec3 normal, inout Surface s) {
   s.position = (frame.inverseView * vec4(viewPos, 1.0)).xyz;
   s.viewDepth = -viewPos.z;
   s.normal = normal;
-  s.V = normalize(frame.cameraPosition.xyz - s.position);
+  s.V = normalize(towardsViewer(s.position));
   s.NoV = max(dot(s.normal, s.V), 1e-4);
 }
