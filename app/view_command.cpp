@@ -36,7 +36,7 @@ const std::vector<OptionSpec>& viewOptions() {
       environmentOption(),
       environmentIntensityOption(),
       {"--size", "WxH", "window size in pixels", sizeText(viewer.size), ""},
-      {"--paused", "", "start with the light animation paused (key P toggles)"},
+      {"--paused", "", "start with the light animation, or the glTF animation the scene plays, paused (key P toggles)"},
       {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)", "",
        "run until the window is closed"},
       {"--screenshot", "F.png|F.jpg", "where F12 and the end of a --frames run save the frame"},
@@ -82,6 +82,8 @@ int runView(const std::vector<std::string>& argv) {
   ViewerOptions options;
   options.sceneName = args.get("--scene");
   options.sceneParams = sceneFileParams(args);
+  // The viewer plays the animation --animation or --time chooses, from that time.
+  options.sceneParams.gltfSelection.playable = options.sceneParams.gltfSelection.animated();
   options.sceneParams.defaultEnvironment = defaultEnvironment(args);
   applySceneShapeOptions(args, options.sceneParams);
   options.frame.model = parseShadingModel(args.get("--model"));

@@ -170,4 +170,17 @@ std::vector<AnimatedNode> sampleAnimation(const GltfFile& file, int animation, d
   return nodes;
 }
 
+double animationDuration(const GltfFile& file, int animation) {
+  const tinygltf::Animation& a = file.model.animations[static_cast<size_t>(animation)];
+  const std::string name = gltfElement("animations", animation);
+  double end = 0.0;
+  for (size_t i = 0; i < a.samplers.size(); ++i) {
+    const std::vector<float> times =
+        readFloatAccessor(file, a.samplers[i].input, TINYGLTF_TYPE_SCALAR, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                          name + "." + gltfElement("samplers", static_cast<int>(i)) + ".input");
+    if (!times.empty() && std::isfinite(times.back())) end = std::max(end, double(times.back()));
+  }
+  return end;
+}
+
 }  // namespace pbr

@@ -17,6 +17,9 @@ struct GltfSelection {
   std::optional<int> scene;              // an index into the file's scenes
   std::optional<std::string> animation;  // a name or an index; absent with `time`: the file's first animation
   std::optional<double> time;            // seconds; absent with `animation`: 0
+  // For the viewer, which plays the animation: the load keeps what posing it at other times needs (posePlayback):
+  // the parsed file, and every node's objects and lights, those the animation scales to nothing drawn as nothing.
+  bool playable = false;
   bool animated() const { return animation || time; }
 };
 
@@ -38,5 +41,8 @@ int findAnimation(const GltfFile& file, const GltfSelection& selection);
 // STEP, LINEAR (rotations by spherical interpolation, the shorter way) and CUBICSPLINE (Hermite, with the output's
 // in-tangent, value, out-tangent triples; rotations normalized after). Throws SceneError for malformed samplers.
 std::vector<AnimatedNode> sampleAnimation(const GltfFile& file, int animation, double time);
+
+// The time of animation `animation`'s last keyframe, in seconds (0 for one without channels).
+double animationDuration(const GltfFile& file, int animation);
 
 }  // namespace pbr

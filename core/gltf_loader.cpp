@@ -154,6 +154,17 @@ class Loader {
   Loader(const GltfFile& file, Scene& scene, LoadedGltf& loaded, const GltfSelection& selection)
       : file_(file), scene_(scene), loaded_(loaded), materials_(file, scene, loaded), selection_(selection) {}
 
+  // The playable load `playback` again at this loader's selection's time, in place: the objects and lights it
+  // placed, and the meshes it deforms (their indices added to `changed`).
+  void pose(const GltfPlayback& playback, std::vector<int>& changed) {
+    pose_ = &playback;
+    changed_ = &changed;
+    nextObject_ = playback.firstObject;
+    nextLight_ = playback.firstLight;
+    nextDirectional_ = playback.firstDirectionalLight;
+    load(playback.transform);
+  }
+
   Bounds load(const glm::mat4& transform) {
     const size_t placedLights = scene_.lights.size() + scene_.directionalLights.size();
     const size_t nodeCount = file_.model.nodes.size();
@@ -198,7 +209,9 @@ class Loader {
     }
     // Then what the nodes place, in the same order.
     for (const int index : order) {
-      if (hidden_[static_cast<size_t>(index)]) continue;
+      // A playable load keeps the objects and lights of hidden nodes, drawn as nothing.
+      hiddenNode_ = hidden_[static_cast<size_t>(index)];
+      if (hiddenNode_ && !selection_.playable) continue;
       const std::string name = gltfElement("nodes", index);
       const tinygltf::Node& node = file_.model.nodes[static_cast<size_t>(index)];
       const glm::mat4& world = *worlds_[static_cast<size_t>(index)];
@@ -217,8 +230,10 @@ class Loader {
       }
       const auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end()) addLight(light->second, world, name + ".extensions.KHR_lights_punctual");
-      if (node.camera >= 0) addCamera(node.camera, world, name + ".camera");
+      if (node.camera >= 0 && !pose_ && !hiddenNode_) addCamera(node.camera, world, name + ".camera");
     }
+    hiddenNode_ = false;
+    if (pose_) return bounds_;
     const bool placed = scene_.lights.size() + scene_.directionalLights.size() > placedLights;
     scene_.gltfPlacedLights = scene_.gltfPlacedLights || placed;
     if (!file_.model.lights.empty() && !placed) {
@@ -489,11 +504,13 @@ class Loader {
     }
     const bool targets = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
                                      [](const tinygltf::Primitive& p) { return !p.targets.empty(); });
-    if (!targets || std::all_of(d.weights.begin(), d.weights.end(), [](float w) { return w == 0.0f; })) {
+    // A playable load deforms a mesh with targets at every moment, so that it has a mesh of its own to rewrite.
+    if (!targets ||
+        (!selection_.playable && std::all_of(d.weights.begin(), d.weights.end(), [](float w) { return w == 0.0f; }))) {
       d.weights.clear();
     }
     if (node.skin >= 0) d.joints = jointMatrices(node.skin, name + ".skin");
-    if (d.weights.empty() && d.joints.empty()) return std::nullopt;
+    if (d.weights.empty() && d.joints.empty() && !(selection_.playable && targets)) return std::nullopt;
     return d;
   }
 
@@ -534,11 +551,20 @@ class Loader {
     }
     const tinygltf::Mesh& mesh = file_.model.meshes[static_cast<size_t>(index)];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-      const int sceneMesh = primitiveMesh(index, static_cast<int>(p), deformation);
+      const int sceneMesh = pose_ && deformation ? deformedAgain(index, static_cast<int>(p), *deformation)
+                                                 : primitiveMesh(index, static_cast<int>(p), deformation);
       if (sceneMesh < 0) continue;
-      const std::string material =
-          gltfElement("meshes", index) + "." + gltfElement("primitives", static_cast<int>(p)) + ".material";
-      scene_.objects.push_back({Shape::Mesh, sceneMesh, world, materials_.get(mesh.primitives[p].material, material)});
+      // Scaled to nothing: the primitive's triangles collapse to a point, which rasterizes no fragment.
+      const glm::mat4 placed = hiddenNode_ ? glm::mat4(0.0f) : world;
+      if (pose_) {
+        scene_.objects.at(nextObject_++).transform = placed;
+      } else {
+        const std::string material =
+            gltfElement("meshes", index) + "." + gltfElement("primitives", static_cast<int>(p)) + ".material";
+        scene_.objects.push_back(
+            {Shape::Mesh, sceneMesh, placed, materials_.get(mesh.primitives[p].material, material)});
+      }
+      if (hiddenNode_) continue;
       for (const Vertex& v : scene_.meshes[static_cast<size_t>(sceneMesh)].vertices) {
         const glm::vec3 w = glm::vec3(world * glm::vec4(v.position, 1.0f));
         if (!(largestMagnitude(w) <= kMaxCoordinate)) {
@@ -550,6 +576,25 @@ class Loader {
         empty_ = false;
       }
     }
+  }
+
+  // Posing a playable load: the deformed primitive's mesh rewritten in place, the one its object at the cursor
+  // draws; -1 where the load drew none (the same primitives as then: what is drawn does not depend on the pose).
+  int deformedAgain(int meshIndex, int primitiveIndex, const Deformation& deformation) {
+    const tinygltf::Primitive& prim =
+        file_.model.meshes[static_cast<size_t>(meshIndex)].primitives[static_cast<size_t>(primitiveIndex)];
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      return -1;
+    }
+    const std::string field = gltfElement("meshes", meshIndex) + "." + gltfElement("primitives", primitiveIndex);
+    MeshData mesh = readPrimitive(prim, field, readsTexCoord1(materials_.get(prim.material, field + ".material")),
+                                  &deformation);
+    if (mesh.indices.empty()) return -1;
+    const int target = scene_.objects.at(nextObject_).mesh;
+    scene_.meshes.at(static_cast<size_t>(target)) = std::move(mesh);
+    changed_->push_back(target);
+    return target;
   }
 
   // Index into Scene::meshes of a primitive, converted once however many nodes and loads use it (a deformed one
@@ -724,7 +769,8 @@ class Loader {
     }
     if (!std::isfinite(l.intensity) || l.intensity < 0.0) file_.fail(name + ".intensity: must be a finite number >= 0");
     if (l.type == "directional") {
-      addDirectionalLight(world, color, l.intensity, name);
+      // Under a node scaled to nothing: no light, shining down.
+      addDirectionalLight(hiddenNode_ ? glm::mat4(1.0f) : world, color, hiddenNode_ ? 0.0 : l.intensity, name);
       return;
     }
     PointLight light;
@@ -752,8 +798,17 @@ class Loader {
       file_.fail(name + (bounded ? ".range" : ".intensity") + ": gives a light radius beyond the coordinate limit " +
                  number(kMaxCoordinate));
     }
-    if (l.type == "spot") light.spot = spotCone(l.spot, world, name);
-    scene_.lights.push_back(light);
+    if (l.type == "spot") light.spot = spotCone(l.spot, hiddenNode_ ? glm::mat4(1.0f) : world, name);
+    if (hiddenNode_) {  // under a node scaled to nothing: reaches nothing
+      light.luminousPower = 0.0f;
+      light.radius = 0.0f;
+      light.castsShadows = false;
+    }
+    if (pose_) {
+      scene_.lights.at(nextLight_++) = light;
+    } else {
+      scene_.lights.push_back(light);
+    }
   }
 
   // KHR_lights_punctual: a spot light shines along its node's local -Z; 0 <= inner < outer <= pi/2.
@@ -782,7 +837,12 @@ class Loader {
     if (!(length > 0.0f) || !std::isfinite(length)) file_.fail(name + ": its node's transform leaves no direction");
     const float illuminance = static_cast<float>(lux);
     if (!std::isfinite(illuminance)) file_.fail(name + ".intensity: too large (got " + number(lux) + ")");
-    scene_.directionalLights.push_back({direction / length, color, illuminance});
+    const DirectionalLight light{direction / length, color, illuminance};
+    if (pose_) {
+      scene_.directionalLights.at(nextDirectional_++) = light;
+    } else {
+      scene_.directionalLights.push_back(light);
+    }
   }
 
   const GltfFile& file_;
@@ -798,6 +858,11 @@ class Loader {
   std::vector<bool> hidden_;                     // by node: scaled to nothing by the animation, or under one
   Bounds bounds_;
   bool empty_ = true;
+  bool hiddenNode_ = false;  // the node placing what is added now is scaled to nothing (a playable load keeps it)
+  // Posing a playable load (pose): where its objects and lights are rewritten, and the meshes rewritten.
+  const GltfPlayback* pose_ = nullptr;
+  std::vector<int>* changed_ = nullptr;
+  size_t nextObject_ = 0, nextLight_ = 0, nextDirectional_ = 0;
 };
 
 // Two names of one file (relative, absolute, through a link) share one record.
@@ -812,7 +877,7 @@ std::string fileKey(const std::string& path) {
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, const UriPolicy& policy,
                   const GltfSelection& selection) {
   // Read and checked again on every load: the policy may differ, and the checks blame this load's fields.
-  const GltfFile file = readGltfFile(path, policy);
+  GltfFile file = readGltfFile(path, policy);
   const std::string key = fileKey(path);
   const auto known = scene.gltfFiles.find(key);
   // Worked on as a copy: a load that fails leaves the record as it was, with the rest of the scene.
@@ -822,6 +887,21 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
                cameras = scene.cameras.size();
   try {
     const Bounds bounds = Loader(file, scene, loaded, selection).load(transform);
+    if (selection.playable && selection.animated()) {
+      auto playback = std::make_shared<GltfPlayback>();
+      const int animation = findAnimation(file, selection);
+      playback->animationName = file.model.animations[static_cast<size_t>(animation)].name;
+      if (playback->animationName.empty()) playback->animationName = gltfElement("animations", animation);
+      playback->duration = animationDuration(file, animation);
+      playback->key = key;
+      playback->transform = transform;
+      playback->selection = selection;
+      playback->firstObject = objects;
+      playback->firstLight = lights;
+      playback->firstDirectionalLight = directionalLights;
+      playback->file = std::make_shared<const GltfFile>(std::move(file));
+      scene.gltfPlayback.push_back(std::move(playback));
+    }
     scene.gltfFiles[key] = std::move(loaded);
     return bounds;
   } catch (...) {
@@ -834,6 +914,16 @@ Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transf
     scene.cameras.resize(cameras);
     throw;
   }
+}
+
+std::vector<int> posePlayback(Scene& scene, double time) {
+  std::vector<int> changed;
+  for (const std::shared_ptr<const GltfPlayback>& playback : scene.gltfPlayback) {
+    GltfSelection selection = playback->selection;
+    selection.time = time;
+    Loader(*playback->file, scene, scene.gltfFiles.at(playback->key), selection).pose(*playback, changed);
+  }
+  return changed;
 }
 
 }  // namespace pbr

@@ -1,5 +1,7 @@
 #pragma once
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -35,5 +37,23 @@ constexpr float kGltfLightCutoffIlluminance = 0.01f;  // lux (lm/m^2)
 // its lights, but shares the meshes, materials and textures the first load appended (Scene::gltfFiles).
 Bounds appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
                   const UriPolicy& policy = {}, const GltfSelection& selection = {});
+
+// A playable load (GltfSelection::playable) of an animated file: what posePlayback needs to pose it again, and
+// where its objects and lights lie in the scene. A node the animation scales to nothing keeps its objects (a zero
+// transform) and lights (no power, radius 0), so that every moment has the same ones.
+struct GltfPlayback {
+  std::shared_ptr<const GltfFile> file;
+  std::string key;  // of Scene::gltfFiles
+  glm::mat4 transform{1.0f};
+  GltfSelection selection;
+  std::string animationName;  // the file's name for it, else "animations[N]"
+  double duration = 0.0;      // seconds: its last keyframe's time
+  size_t firstObject = 0, firstLight = 0, firstDirectionalLight = 0;
+};
+
+// Poses every playable glTF load of `scene` at `time` seconds of its animation, in place: objects' transforms,
+// the meshes skins and morph targets deform, and lights. Returns the indices of the Scene::meshes rewritten.
+// Throws SceneError as appendGltf does for a pose the file makes malformed (a translation beyond the limits).
+std::vector<int> posePlayback(Scene& scene, double time);
 
 }  // namespace pbr

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -155,6 +156,8 @@ struct LoadedGltf {
   std::map<std::pair<int, bool>, int> textures;  // (texture, sRGB) -> Scene::textures
 };
 
+struct GltfPlayback;  // core/gltf_loader.hpp
+
 struct Scene {
   std::string name;
   Camera camera;
@@ -173,6 +176,8 @@ struct Scene {
   bool gltfPlacedLights = false;        // a glTF file placed lights (KHR_lights_punctual) in the scene
   std::vector<std::string> notes;       // what a loader put in where the file was silent, for the commands to say
   std::map<std::string, LoadedGltf> gltfFiles;  // by canonical path
+  // The glTF loads asked to be playable (GltfSelection::playable), which posePlayback poses at other times.
+  std::vector<std::shared_ptr<const GltfPlayback>> gltfPlayback;
 
   // What the post pass multiplies radiance by: `exposure`, times exposureFromEv100(*ev100) when given.
   float displayExposure() const;

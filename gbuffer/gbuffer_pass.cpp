@@ -40,7 +40,9 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     const Material& m = o.material;
     ObjectBlock b{};
     b.model = o.transform;
-    b.normalMatrix = glm::transpose(glm::inverse(o.transform));
+    // A transform scaled to nothing (a hidden node of a playing glTF animation) draws no fragment: its normal
+    // matrix is never read, and left 0 rather than the inverse's infinities.
+    if (glm::determinant(glm::mat3(o.transform)) != 0.0f) b.normalMatrix = glm::transpose(glm::inverse(o.transform));
     b.baseColor = glm::vec4(m.baseColor, m.alpha);
     b.material = glm::vec4(m.roughness, m.metalness, m.normalScale, m.occlusionStrength);
     // A BLEND material casts a cut-out shadow at kBlendShadowCutoff (the depth permutation's ALPHA_MASK).
@@ -119,7 +121,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     : cache_(programs),
       blockStride_(alignedStride()),
       objectBlocks_("gbuffer.objectBlocks", static_cast<size_t>(blockStride_) * scene.objects.size(),
-                    packObjectBlocks(scene, blockStride_).data(), 0) {
+                    packObjectBlocks(scene, blockStride_).data()) {
   meshes_.reserve(scene.meshes.size());
   for (const MeshData& m : scene.meshes) meshes_.emplace_back(m, "mesh " + std::to_string(meshes_.size()));
   textures_.reserve(scene.textures.size());
@@ -188,6 +190,22 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   });
   unlit_ = hasUnlitSurface(scene);
   opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
+}
+
+void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changedMeshes) {
+  if (!scene.objects.empty()) {
+    objectBlocks_.upload(packObjectBlocks(scene, blockStride_).data(), objectBlocks_.size());
+  }
+  for (const int m : changedMeshes) {
+    meshes_.at(static_cast<size_t>(m)) = GpuMesh(scene.meshes.at(static_cast<size_t>(m)), "mesh " + std::to_string(m));
+  }
+  bounds_ = WorldBounds{};
+  for (Draw& d : draws_) {
+    const SceneObject& o = scene.objects.at(static_cast<size_t>(d.blockOffset / blockStride_));
+    d.mirrored = mirrors(o.transform);
+    d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
+    bounds_.add(d.bounds);
+  }
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {

@@ -22,6 +22,10 @@ class GBufferPass {
  public:
   GBufferPass(ProgramCache& programs, const Scene& scene);
   void render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const;
+  // The scene's objects moved and the meshes `changedMeshes` rewritten in place (a glTF animation posed again,
+  // core/gltf_loader.hpp posePlayback): their blocks, bounds and vertex buffers uploaded again. Built-in shapes
+  // (whose spheres the shadow views draw coarser) do not move.
+  void updatePose(const Scene& scene, const std::vector<int>& changedMeshes);
 
   // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z, both faces: a plane or
   // an open mesh casts from either side), once per view into its square, objects outside the view's frustum left

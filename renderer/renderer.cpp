@@ -27,6 +27,12 @@ void Renderer::setLights(const std::vector<PointLight>& lights) {
   shadowedCache_.reset();
 }
 
+void Renderer::scenePosed(const std::vector<int>& changedMeshes) {
+  scene_.geometry.updatePose(sceneData_, changedMeshes);
+  scene_.lights.uploadDirectional(sceneData_.directionalLights);
+  setLights(sceneData_.lights);
+}
+
 bool Renderer::shadowed(ShadowMode mode) {
   if (!shadowedCache_ || shadowedCache_->first != mode) {
     shadowedCache_ = {mode, anyShadowCaster(*lights_, sceneData_.directionalLights, mode)};

@@ -112,6 +112,9 @@ class Renderer {
   // changes); new point and spot lights replace those of the light buffer (the directional lights stay).
   void setCamera(const Camera& camera);
   void setLights(const std::vector<PointLight>& lights);
+  // The scene's objects, lights and the meshes `changedMeshes` changed in place (posePlayback): uploaded again,
+  // the point and spot lights replacing those of setLights.
+  void scenePosed(const std::vector<int>& changedMeshes);
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;

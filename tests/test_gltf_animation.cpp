@@ -230,3 +230,62 @@ TEST_CASE("gltf animation: chosen by name or index, refused by name when absent,
   const std::string still = pbr::test::quadModel().writeGltf(dir.path(), "still");
   CHECK(errorOf([&] { load(still, at(1.0)); }) == still + ": --time: the file has no animations");
 }
+
+TEST_CASE("gltf playback: a playable load poses again at any time as a load at that time, hidden nodes kept") {
+  const TempDir dir;
+  // A quad sliding 4 m along x over 2 s, scaled to nothing from 1 s to 2 s (STEP), carrying a point light 1 m above.
+  GltfBuilder b = pbr::test::quadModel();
+  animate(b, 0, "translation", "LINEAR", {0.0f, 2.0f}, {0, 0, 0, 4, 0, 0}, "VEC3", "slide");
+  const std::vector<float> scaleTimes = {0.0f, 1.0f, 2.0f}, scales = {1, 1, 1, 0, 0, 0, 1, 1, 1};
+  const int input = b.addView(scaleTimes.data(), scaleTimes.size() * sizeof(float));
+  b.doc["accessors"].push_back({{"bufferView", input}, {"componentType", 5126}, {"count", 3}, {"type", "SCALAR"},
+                                {"min", {0.0}}, {"max", {2.0}}});
+  const int output = b.addView(scales.data(), scales.size() * sizeof(float));
+  b.doc["accessors"].push_back({{"bufferView", output}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  const int n = static_cast<int>(b.doc["accessors"].size());
+  b.doc["animations"][0]["samplers"].push_back({{"input", n - 2}, {"output", n - 1}, {"interpolation", "STEP"}});
+  b.doc["animations"][0]["channels"].push_back({{"sampler", 1}, {"target", {{"node", 0}, {"path", "scale"}}}});
+  b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 10.0}, {"range", 5.0}}};
+  b.doc["nodes"][0]["children"] = {1};
+  b.doc["nodes"].push_back({{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  const std::string path = b.writeGltf(dir.path(), "slide");
+  const auto playable = [](double time) {
+    pbr::GltfSelection s = at(time, "slide");
+    s.playable = true;
+    return s;
+  };
+  const auto checkPosedAs = [&](const pbr::Scene& posed, double time) {
+    const pbr::Scene loaded = load(path, at(time, "slide"));
+    REQUIRE(loaded.objects.size() == 1);
+    CHECK(posed.objects[0].transform == loaded.objects[0].transform);
+    CHECK(posed.lights[0].position == loaded.lights[0].position);
+    CHECK(posed.lights[0].radius == loaded.lights[0].radius);
+    CHECK(posed.lights[0].luminousPower == loaded.lights[0].luminousPower);
+  };
+  const auto checkHidden = [](const pbr::Scene& posed) {
+    CHECK(posed.objects[0].transform == glm::mat4(0.0f));
+    CHECK(posed.lights[0].radius == 0.0f);
+    CHECK(posed.lights[0].luminousPower == 0.0f);
+  };
+  // A load at 1.5 s leaves the hidden quad and its light out; a playable one keeps both, as nothing.
+  CHECK(load(path, at(1.5, "slide")).objects.empty());
+  for (const double start : {0.0, 1.5}) {
+    CAPTURE(start);
+    pbr::Scene scene = load(path, playable(start));
+    REQUIRE(scene.gltfPlayback.size() == 1);
+    CHECK(scene.gltfPlayback[0]->duration == 2.0);
+    CHECK(scene.gltfPlayback[0]->animationName == "slide");
+    REQUIRE(scene.objects.size() == 1);
+    REQUIRE(scene.lights.size() == 1);
+    if (start > 1.0) checkHidden(scene);
+    CHECK(pbr::posePlayback(scene, 0.5).empty());  // nothing deformed: no mesh rewritten
+    checkPosedAs(scene, 0.5);
+    CHECK(scene.objects[0].transform[3].x == doctest::Approx(1.0f));
+    CHECK(scene.lights[0].position == glm::vec3(1.0f, 1.0f, 0.0f));
+    pbr::posePlayback(scene, 1.5);
+    checkHidden(scene);
+    pbr::posePlayback(scene, 2.5);
+    checkPosedAs(scene, 2.5);
+  }
+}

@@ -17,6 +17,8 @@
 #include "core/context.hpp"
 #include "core/exposure.hpp"
 #include "core/gl.hpp"
+#include "core/gltf_file.hpp"
+#include "core/gltf_loader.hpp"
 #include "core/shadow_maps.hpp"
 #include "shadows/shadow_plan.hpp"
 
@@ -133,6 +135,9 @@ void Overlay::draw(Viewer& viewer) {
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) controls(viewer);
     if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environment(viewer);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) camera(viewer);
+    if (viewer.playsAnimation() && ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen)) {
+      animation(viewer);
+    }
     if (ImGui::CollapsingHeader("Keys")) keys();
   }
   ImGui::End();
@@ -358,6 +363,20 @@ void Overlay::environment(Viewer& viewer) {
   }
   if (environmentFiles_.empty()) ImGui::TextDisabled("no .hdr files in that folder (--env-dir DIR)");
   if (!environmentMessage_.empty()) ImGui::TextWrapped("%s", environmentMessage_.c_str());
+}
+
+void Overlay::animation(Viewer& viewer) {
+  for (const std::shared_ptr<const GltfPlayback>& p : viewer.scene().gltfPlayback) {
+    ImGui::TextWrapped("%s: %s, %.2f s", std::filesystem::path(p->file->path).filename().string().c_str(),
+                       p->animationName.c_str(), p->duration);
+  }
+  float time = static_cast<float>(viewer.animationTime());
+  ImGui::SetNextItemWidth(-80.0f);
+  if (ImGui::SliderFloat("time (s)", &time, 0.0f, static_cast<float>(viewer.animationDuration()), "%.2f")) {
+    viewer.setAnimationTime(time);
+  }
+  bool paused = viewer.lightsPaused();
+  if (ImGui::Checkbox("paused (P)", &paused)) viewer.setPaused(paused);
 }
 
 void Overlay::camera(Viewer& viewer) {

@@ -35,6 +35,7 @@ class Overlay {
   void shadowControls(Viewer& viewer);  // which lights cast, the filter and the atlas size
   void environment(Viewer& viewer);
   void camera(Viewer& viewer);
+  void animation(Viewer& viewer);  // the glTF animation the scene plays: its time, a slider, pause
   void keys();
 
   ImGuiContext* context_ = nullptr;

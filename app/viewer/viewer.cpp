@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <optional>
 
 #include "app/viewer/overlay.hpp"
 #include "app/viewer/scene_snapshot.hpp"
+#include "core/gltf_loader.hpp"
 #include "core/readback.hpp"
 
 namespace pbr {
@@ -37,6 +39,26 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
   installCallbacks();
   if (options_.overlay) overlay_ = std::make_unique<Overlay>(window_.window());
   lastFrame_ = lastTitle_ = lastStats_ = Clock::now();
+  // The scene was posed at the chosen time (GltfSelection::time, 0 by default); playing goes on from there.
+  animationTime_ = options_.sceneParams.gltfSelection.time.value_or(0.0);
+}
+
+double Viewer::animationDuration() const {
+  double longest = 0.0;
+  for (const std::shared_ptr<const GltfPlayback>& p : scene_.gltfPlayback) longest = std::max(longest, p->duration);
+  return longest;
+}
+
+void Viewer::setAnimationTime(double seconds) {
+  if (!playsAnimation()) return;
+  const double length = animationDuration();
+  animationTime_ = length > 0.0 ? seconds - length * std::floor(seconds / length) : 0.0;
+  try {
+    renderer_->scenePosed(posePlayback(scene_, animationTime_));
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "pbr view: the animation stops at %.3f s: %s\n", animationTime_, e.what());
+    scene_.gltfPlayback.clear();
+  }
 }
 
 Viewer::~Viewer() = default;
@@ -78,7 +100,11 @@ void Viewer::frame() {
   lastFrame_ = now;
   const float step = std::min(static_cast<float>(frameMs / 1000.0), kMaxStepSeconds);
   flyFromHeldKeys(step);
-  if (!options_.paused) animateLights(step);
+  if (!options_.paused && playsAnimation()) {
+    setAnimationTime(animationTime_ + step);
+  } else if (!options_.paused) {
+    animateLights(step);
+  }
 
   renderer_->setCamera(camera_.camera());
   FrameOptions frameOptions = options_.frame;

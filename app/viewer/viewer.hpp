@@ -24,7 +24,7 @@ struct ViewerOptions {
   SceneParams sceneParams;
   glm::ivec2 size{1280, 720};  // window size
   FrameOptions frame;          // model, culling, exposure at start
-  bool paused = false;         // light animation
+  bool paused = false;         // light animation, or the glTF animation the scene plays
   std::string screenshot;      // F12 and the end of a --frames run write here; empty: F12 numbers its files
   bool screenshotOverlay = false;  // screenshots show the window, overlay included, rather than the frame alone
   std::string timing = "auto";
@@ -68,6 +68,9 @@ class Viewer {
   void setView(std::optional<DebugChannel> view) { view_ = view; }
   void setExposure(float exposure) { options_.frame.exposure = exposure; }
   void setPaused(bool paused) { options_.paused = paused; }
+  // Poses the glTF models that play an animation (a scene loaded with GltfSelection::playable) at `seconds`,
+  // wrapped into the animation's length; a pose the file makes malformed stops the animation with a line on stderr.
+  void setAnimationTime(double seconds);
   void setGpuCounters(bool on) { options_.frame.stats = on; }
   // New random lights of the scene's own generator, as `--lights count` would have made them; a scene that cannot
   // (a file without random_lights) keeps its lights and says why on stderr.
@@ -94,6 +97,10 @@ class Viewer {
   const ViewerOptions& options() const { return options_; }
   std::optional<DebugChannel> view() const { return view_; }
   bool lightsPaused() const { return options_.paused; }
+  // Whether glTF models play an animation (then P pauses it, and the lights move only as it moves them).
+  bool playsAnimation() const { return !scene_.gltfPlayback.empty(); }
+  double animationTime() const { return animationTime_; }
+  double animationDuration() const;  // the longest of the animations played, in seconds
   size_t lightCount() const { return scene_.lights.size(); }
   const Scene& scene() const { return scene_; }
   const OrbitCamera& camera() const { return camera_; }
@@ -132,6 +139,7 @@ class Viewer {
   std::unique_ptr<Overlay> overlay_;  // after the callbacks it chains to, before the context goes
   std::optional<DebugChannel> view_;  // the final frame when empty; V steps through kDebugChannels
   float lightTime_ = 0.0f;  // seconds of animation so far
+  double animationTime_ = 0.0;  // the glTF animation's time, when the scene plays one
   std::vector<PointLight> movedLights_;
   glm::ivec2 pendingSize_{0};
   bool dragging_ = false;

@@ -35,7 +35,7 @@ const std::vector<KeyHelp>& viewerKeys() {
       {"V", "debug view: final, then " + debugChannelNames(", ")},
       {"+ / -", "exposure by half a stop"},
       {"[ / ]", "halve / double the lights"},
-      {"P", "pause the lights"},
+      {"P", "pause the lights, or the glTF animation the scene plays"},
       {"F12", "screenshot"},
       {"Esc", "quit"},
   };
