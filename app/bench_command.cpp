@@ -11,16 +11,17 @@
 #include <optional>
 
 #include "app/accuracy/accuracy_variants.hpp"
+#include "app/accuracy/pair_cost_report.hpp"
 #include "app/args.hpp"
 #include "app/bench/bench_progress.hpp"
 #include "app/bench/bench_report.hpp"
 #include "app/bench/bench_run.hpp"
 #include "app/bench/bench_shard.hpp"
-#include "app/accuracy/pair_cost_report.hpp"
+#include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
-#include "app/bench/trace_writer.hpp"
 #include "core/context.hpp"
 #include "core/output_file.hpp"
 
@@ -205,6 +206,10 @@ int runBench(const std::vector<std::string>& argv) {
     return 0;
   }
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
+  std::vector<NamedFile> inputs;
+  if (!isBuiltinScene(args.get("--scene"))) inputs.push_back({"--scene", args.get("--scene")});
+  checkOutputsApart(inputs, {{"--csv", args.get("--csv")}, {"--json", args.get("--json")},
+                             {"--trace", args.get("--trace")}});
   if (args.has("--pair-cost")) {
     for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density", "--shard"}) {
       if (args.has(sweepOnly)) throw UsageError(std::string(sweepOnly) + " belongs to the sweep, not --pair-cost");

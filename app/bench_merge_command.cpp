@@ -7,6 +7,7 @@
 #include "app/bench/bench_merge.hpp"
 #include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
+#include "app/file_clash.hpp"
 #include "core/output_file.hpp"
 #include "core/provenance.hpp"
 
@@ -56,6 +57,10 @@ int runBenchMerge(const std::vector<std::string>& argv) {
   if (args.has("--csv")) requireExtension(args.get("--csv"), ".csv");
   if (args.has("--json")) requireExtension(args.get("--json"), ".json");
   if (args.has("--trace")) requireExtension(args.get("--trace"), ".json");
+  std::vector<NamedFile> inputs;
+  for (const std::string& path : args.operands()) inputs.push_back({"shard", path});
+  checkOutputsApart(inputs, {{"--csv", args.get("--csv")}, {"--json", args.get("--json")},
+                             {"--trace", args.get("--trace")}});
   std::vector<ShardFile> shards;
   for (const std::string& path : args.operands()) {
     shards.push_back(readShardFile(path));

@@ -7,6 +7,7 @@
 #include "app/commands.hpp"
 #include "core/context.hpp"
 #include "core/messages.hpp"
+#include "core/output_file.hpp"
 #include "core/provenance.hpp"
 
 namespace {
@@ -36,6 +37,7 @@ void printUsage(FILE* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  pbr::removeTemporariesOnSignals();
   const std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
     printUsage(all.empty() ? stderr : stdout);

@@ -5,11 +5,12 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
-#include "core/shadow_maps.hpp"
 #include "app/common_options.hpp"
+#include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
 #include "core/image.hpp"
 #include "core/messages.hpp"
+#include "core/shadow_maps.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
 
@@ -80,6 +81,7 @@ int runReference(const std::vector<std::string>& argv) {
   options.forms = reference::parseBrdfForms(args.get("--variant"));
   options.shadows = parseShadowMode(args.get("--shadows"));
   const Scene scene = resolveScene(args.get("--scene"), params);
+  checkOutputsApart(sceneInputs(args.get("--scene"), scene), {{"--hdr", out}});
 
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);

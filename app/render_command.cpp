@@ -7,14 +7,15 @@
 #include "app/bench/bench_run.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
-#include "lighting/lighting_pass.hpp"
-#include "renderer/renderer.hpp"
+#include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
-#include "core/messages.hpp"
 #include "core/frame_capture.hpp"
 #include "core/image.hpp"
+#include "core/messages.hpp"
 #include "core/output_file.hpp"
+#include "lighting/lighting_pass.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 
@@ -265,6 +266,7 @@ int runRender(const std::vector<std::string>& argv) {
   if (debug == DebugChannel::Transparency && !hasBlendMaterial(scene)) {
     throw UsageError("--debug transparency: the scene has no material with alphaMode BLEND");
   }
+  checkOutputsApart(sceneInputs(sceneName, scene), {{"--out", outPng}, {"--hdr", outHdr}, {"--json", outJson}});
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.
   std::optional<OutputFile> pngFile, hdrFile, jsonFile;

@@ -4,6 +4,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
 #include "app/viewer/viewer.hpp"
 #include "core/image.hpp"
@@ -107,6 +108,7 @@ int runView(const std::vector<std::string>& argv) {
 
   Scene scene = resolveScene(options.sceneName, options.sceneParams);
   applyEnvironmentOptions(args, scene);
+  checkOutputsApart(sceneInputs(options.sceneName, scene), {{"--screenshot", options.screenshot}});
   applyCameraOption(args, scene);
   options.frame.exposure = applyExposureOptions(args, scene);
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());

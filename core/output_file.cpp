@@ -4,8 +4,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -16,6 +18,62 @@
 namespace pbr {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The temporaries being written, for the signal handler to remove: fixed storage, so that the handler reads no
+// memory that may be freed under it. A slot is claimed before its path is copied in and marked live after.
+constexpr size_t kTemporarySlots = 64;
+constexpr size_t kTemporaryPathBytes = 4096;
+std::array<std::array<char, kTemporaryPathBytes>, kTemporarySlots> gTemporaryPaths{};
+std::array<std::atomic<int>, kTemporarySlots> gTemporaryState{};  // 0 free, 1 being written, 2 live
+
+// The slot holding `path`, or -1 when every slot is taken or the path is too long (the temporary is then not
+// removed on a signal: only on the normal paths).
+int registerTemporary(const std::string& path) {
+  if (path.size() >= kTemporaryPathBytes) return -1;
+  for (size_t i = 0; i < kTemporarySlots; ++i) {
+    int expected = 0;
+    if (!gTemporaryState[i].compare_exchange_strong(expected, 1)) continue;
+    std::memcpy(gTemporaryPaths[i].data(), path.c_str(), path.size() + 1);
+    gTemporaryState[i].store(2);
+    return int(i);
+  }
+  return -1;
+}
+
+void releaseTemporary(int slot) {
+  if (slot >= 0) gTemporaryState[size_t(slot)].store(0);
+}
+
+extern "C" void removeTemporariesAndStop(int signal) {
+  for (size_t i = 0; i < kTemporarySlots; ++i) {
+    if (gTemporaryState[i].load() == 2) ::unlink(gTemporaryPaths[i].data());
+  }
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+}  // namespace
+
+void removeTemporariesOnSignals() {
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, removeTemporariesAndStop);
+  // Past a file-size limit, write(2) then fails with EFBIG, which the writer reports naming the file.
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
+std::string followLinks(const std::string& path) {
+  fs::path p(path);
+  std::error_code ec;
+  // As the kernel does, at most 40 links in a chain.
+  for (int i = 0; i < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++i) {
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  const fs::path resolved = fs::weakly_canonical(p, ec);
+  return ec ? p.lexically_normal().string() : resolved.string();
+}
 
 // A stream buffer writing straight to a file descriptor, so that the errno of the first failed write(2) or
 // close(2) is kept for the message instead of a stream's bare failbit.
@@ -67,11 +125,9 @@ class OutputFile::Buffer : public std::streambuf {
 OutputFile::OutputFile(std::string path) : path_(std::move(path)), target_(path_) {
   if (path_.empty()) throw std::runtime_error("(empty path): cannot write: no file named");
   std::error_code ec;
-  // A symbolic link keeps pointing where it did: the temporary goes beside the file it names.
-  if (fs::is_symlink(fs::symlink_status(target_, ec))) {
-    const fs::path resolved = fs::canonical(target_, ec);
-    if (!ec) target_ = resolved.string();
-  }
+  // A symbolic link keeps pointing where it did: the temporary goes beside the file it names, which is made where
+  // it does not exist yet.
+  if (fs::is_symlink(fs::symlink_status(target_, ec))) target_ = followLinks(target_);
   int fd = -1;
   struct stat st {};
   if (::stat(target_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
@@ -99,6 +155,7 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)), target_(path_
       temporary_.clear();  // never created: nothing to remove
       fail(std::strerror(error));
     }
+    signalSlot_ = registerTemporary(temporary_);
   }
   buffer_ = std::make_unique<Buffer>(fd);
   stream_ = std::make_unique<std::ostream>(buffer_.get());
@@ -108,6 +165,7 @@ OutputFile::~OutputFile() {
   stream_.reset();
   buffer_.reset();
   if (!committed_ && !temporary_.empty()) ::unlink(temporary_.c_str());
+  releaseTemporary(signalSlot_);
 }
 
 std::ostream& OutputFile::stream() { return *stream_; }
@@ -118,11 +176,15 @@ void OutputFile::commit() {
   if (!*stream_) fail("the data could not be formatted");
   if (!temporary_.empty() && ::rename(temporary_.c_str(), target_.c_str()) != 0) fail(std::strerror(errno));
   committed_ = true;
+  releaseTemporary(signalSlot_);
+  signalSlot_ = -1;
 }
 
 void OutputFile::fail(const std::string& reason) {
   if (!temporary_.empty()) ::unlink(temporary_.c_str());
   temporary_.clear();
+  releaseTemporary(signalSlot_);
+  signalSlot_ = -1;
   throw std::runtime_error(path_ + ": cannot write: " + reason);
 }
 

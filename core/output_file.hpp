@@ -33,10 +33,20 @@ class OutputFile {
   std::string path_;       // as the user named it, for messages
   std::string target_;     // where the bytes end up (symbolic links resolved)
   std::string temporary_;  // empty when writing the target directly
+  int signalSlot_ = -1;    // where removeTemporariesOnSignals finds the temporary, -1 for none
   std::unique_ptr<Buffer> buffer_;
   std::unique_ptr<std::ostream> stream_;
   bool committed_ = false;
 };
+
+// Installs the handlers that remove every temporary being written when SIGINT, SIGTERM or SIGHUP ends the process
+// (then ended by the signal as before), and ignores SIGXFSZ so that a write past a file-size limit fails with
+// EFBIG, reported naming the file, instead of killing the process without a word.
+void removeTemporariesOnSignals();
+
+// Where `path`'s bytes go once every symbolic link on it is followed, a dangling one included (to the file it
+// would name), made absolute and normal.
+std::string followLinks(const std::string& path);
 
 // True for an existing device, FIFO or socket: written in place, its name says nothing of the format wanted.
 bool isStreamTarget(const std::string& path);

@@ -1,13 +1,17 @@
 // Outputs that cannot be written and frames too large to allocate: each fails with exit code 1 or 2, one short line
 // on stderr naming the file or option, and no file left behind.
 #include <doctest/doctest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/image.hpp"
 #include "renderer/frame_limits.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
@@ -62,9 +66,9 @@ TEST_CASE("hostile outputs: a file over the size limit (a full disk) leaves the 
   const std::string png = (folder / "f.png").string(), pfm = (folder / "f.pfm").string();
   const std::string previous = "the previous capture";
   dir.write("out/f.png", previous);
-  // RLIMIT_FSIZE makes write(2) fail with EFBIG past 16 blocks, as a full disk fails it with ENOSPC; SIGXFSZ is
-  // ignored so that the failure reaches the program instead of killing it.
-  const std::string limit = "trap '' XFSZ; ulimit -f 16; ";
+  // RLIMIT_FSIZE makes write(2) fail with EFBIG past 16 blocks, as a full disk fails it with ENOSPC; pbr ignores
+  // SIGXFSZ, which would otherwise kill it without a word, so that the failure reaches the writer.
+  const std::string limit = "ulimit -f 16; ";
   const Run run = runPbr(dir, {"render", "--size", "320x180", "--frames", "1", "--warmup", "0", "--out", png}, limit);
   CHECK(run.exitCode == 1);
   checkOneLineNaming(run, png + ": cannot write: File too large");
@@ -195,3 +199,64 @@ TEST_CASE("hostile outputs: a directory as an environment fails with exit 1 nami
   checkOneLineNaming(json, envs.string());
   checkNotRendered(json);
 }
+
+TEST_CASE("hostile outputs: an output naming an input or another output is refused before any work, inputs unchanged") {
+  const TempDir dir;
+  const std::string scene = dir.write("s.json", R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]},
+    "objects": [{"shape": "sphere"}], "lights": [{"position": [1, 2, 2], "radius": 5, "luminous_power": 100}]})");
+  const std::string text = readFile(scene);
+  fs::create_symlink(scene, dir.file("link.json"));
+  fs::create_hard_link(scene, dir.file("hard.json"));
+  fs::create_symlink(scene, dir.file("link.pfm"));
+  const auto refused = [&](const std::vector<std::string>& args, const std::string& line) {
+    CAPTURE(line);
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, line);
+    CHECK(readFile(scene) == text);
+  };
+  // The scene under its own name, through a symbolic link and through a hard link.
+  for (const char* json : {"s.json", "link.json", "hard.json"}) {
+    refused({"render", "--size", "8x8", "--frames", "1", "--scene", scene, "--json", dir.file(json)},
+            "--json " + dir.file(json) + ": the same file as --scene " + scene +
+                ", which the command reads: writing it would replace it");
+  }
+  refused({"reference", "--scene", scene, "--size", "8x8", "--hdr", dir.file("link.pfm")},
+          "--hdr " + dir.file("link.pfm") + ": the same file as --scene");
+  // Two outputs of one command, and a merged report over one of its shards.
+  refused({"bench", "--scene", "default", "--json", dir.file("a.json"), "--trace", dir.file("a.json")},
+          "--trace " + dir.file("a.json") + ": the same file as --json " + dir.file("a.json") +
+              ": one would replace the other");
+  refused({"bench-merge", scene, dir.file("link.json"), "--json", dir.file("hard.json")},
+          "--json " + dir.file("hard.json") + ": the same file as shard " + scene);
+  CHECK(entries(dir.path()).size() == 6);  // the scene, its three links, stdout.txt and stderr.txt: nothing written
+}
+
+TEST_CASE("hostile outputs: a dangling symbolic link is kept, the file it names made") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  fs::create_symlink("made/frame.png", dir.file("link.png"));
+  const Run run = runPbr(dir, tinyRender({"--out", dir.file("link.png")}));
+  CHECK(run.exitCode == 0);
+  CHECK(fs::is_symlink(fs::symlink_status(dir.file("link.png"))));
+  CHECK(fs::is_regular_file(dir.path() / "made" / "frame.png"));
+  CHECK(pbr::readPng(dir.file("link.png")).width == 32);
+}
+
+TEST_CASE("hostile outputs: a render ended by SIGTERM leaves no temporary behind") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const fs::path folder = dir.path() / "out";
+  fs::create_directories(folder);
+  // The outputs are opened (as temporaries) before the first frame; the shell waits for one, then ends the run.
+  std::string command = "cd " + dir.path().string() + "; " + std::string(PBR_BINARY) +
+                        " render --size 64x36 --warmup 0 --frames 100000 --hdr out/f.pfm >/dev/null 2>&1 & pid=$!; "
+                        "for i in $(seq 200); do ls out/.f.pfm.* >/dev/null 2>&1 && break; sleep 0.05; done; "
+                        "ls out/.f.pfm.* >/dev/null 2>&1 && echo seen > seen.txt; kill -TERM $pid; wait $pid";
+  const int status = std::system(command.c_str());
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 128 + SIGTERM);  // ended by the signal, as before
+  CHECK(fs::exists(dir.path() / "seen.txt"));
+  CHECK(entries(folder).empty());
+}
+

@@ -277,6 +277,20 @@ TEST_CASE("view: pbr view --frames runs unattended and writes a screenshot match
   }
 }
 
+TEST_CASE("view: an unattended run whose screenshot cannot be written exits 1 naming it") {
+  const TempDir dir;
+  // The frame alone, and the window with its overlay (written while the last frame presents).
+  for (const std::vector<std::string>& ui : {std::vector<std::string>{}, {"--screenshot-ui"}}) {
+    CAPTURE(ui.size());
+    std::vector<std::string> args = {"view", "--frames", "2", "--size", "64x36", "--screenshot", "/dev/full"};
+    args.insert(args.end(), ui.begin(), ui.end());
+    const pbr::test::PbrRun run = runPbr(dir, args);
+    if (run.exitCode == 3) return;  // no window: the other cases say so
+    CHECK(run.exitCode == 1);
+    CHECK(run.err == "pbr view: /dev/full: cannot write: No space left on device\n");
+  }
+}
+
 TEST_CASE("view: --screenshot-ui shows the overlay's panels at the top corners and the frame between them") {
   const TempDir dir;
   const glm::ivec2 size{960, 400};

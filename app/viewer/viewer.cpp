@@ -8,6 +8,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "app/viewer/overlay.hpp"
 #include "app/viewer/scene_snapshot.hpp"
@@ -80,11 +81,19 @@ void Viewer::run(int frames) {
   const bool shotAtEnd = frames > 0 && !options_.screenshot.empty();
   while (!window_.shouldClose() && (frames <= 0 || framesRendered_ < frames)) {
     // The window's picture is taken while the last frame presents; the frame alone is still there afterwards.
-    if (shotAtEnd && options_.screenshotOverlay && framesRendered_ == frames - 1) takeScreenshot(options_.screenshot);
+    if (shotAtEnd && options_.screenshotOverlay && framesRendered_ == frames - 1) {
+      pendingWindowShot_ = options_.screenshot;
+      unattendedShot_ = true;
+    }
     frame();
   }
   checkGlError("the viewer");
-  if (shotAtEnd && !options_.screenshotOverlay) takeScreenshot(options_.screenshot);
+  // An unattended run's screenshot is its result: a failed write ends the command with an error.
+  if (shotAtEnd && !options_.screenshotOverlay) {
+    saveScreenshot(options_.screenshot);
+    std::printf("wrote %s\n", options_.screenshot.c_str());
+  }
+  if (!windowShotError_.empty()) throw std::runtime_error(windowShotError_);
 }
 
 void Viewer::frame() {
@@ -166,7 +175,11 @@ void Viewer::present() {
       writeLdr(path, readWindow());
       std::printf("wrote %s\n", path.c_str());
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "pbr view: %s\n", e.what());
+      if (unattendedShot_) {
+        windowShotError_ = e.what();  // run() ends with it
+      } else {
+        std::fprintf(stderr, "pbr view: %s\n", e.what());
+      }
     }
   }
   window_.swapBuffers();

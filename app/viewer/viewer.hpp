@@ -147,6 +147,8 @@ class Viewer {
   int framesRendered_ = 0;
   int screenshotsSaved_ = 0;
   std::string pendingWindowShot_;  // saved from the back buffer once the next frame's overlay is drawn
+  bool unattendedShot_ = false;    // that shot ends a --frames run: a failure is the run's error
+  std::string windowShotError_;
   Clock::time_point lastFrame_, lastTitle_, lastStats_;
   PassHistory passHistory_;  // every frame's pass times, warm or not: the graph shows what a change costs
   LightStats lightStats_;
