@@ -69,10 +69,11 @@ bool isSupportedExtension(const std::string& name) {
 }
 
 // The document as tinygltf 2.7 can read it, or nothing where it can read it as written. Two things valid glTF it
-// refuses are rewritten: a primitive whose indices accessor has no bufferView, which is how
+// refuses are rewritten (and a mistake viewers tolerate): a primitive whose indices accessor has no bufferView, which is how
 // KHR_draco_mesh_compression files write it (the primitive loses "indices": they are in the Draco data), and a
 // buffer without a URI besides a GLB's first, which is how EXT_meshopt_compression writes a fallback buffer that
-// holds no data (it gets a 3-byte stand-in: its views are decoded from compressed ones, gltf_meshopt.hpp).
+// holds no data (it gets a 3-byte stand-in: its views are decoded from compressed ones, gltf_meshopt.hpp). A spot
+// light without a "spot" object, which tinygltf refuses, gets an empty one: the default cone.
 std::optional<nlohmann::json> readableByTinygltf(const nlohmann::json& doc) {
   std::optional<nlohmann::json> out;
   const auto meshes = doc.find("meshes");
@@ -88,6 +89,22 @@ std::optional<nlohmann::json> readableByTinygltf(const nlohmann::json& doc) {
       }
       if (!out) out = doc;
       (*out)["meshes"][m]["primitives"][p].erase("indices");
+    }
+  }
+  // A spot light without its cone (checkGltfJson warns): tinygltf refuses it, the default cone is drawn.
+  const auto extensions = doc.find("extensions");
+  if (extensions != doc.end() && extensions->is_object() && extensions->contains("KHR_lights_punctual") &&
+      (*extensions)["KHR_lights_punctual"].is_object() && (*extensions)["KHR_lights_punctual"].contains("lights") &&
+      (*extensions)["KHR_lights_punctual"]["lights"].is_array()) {
+    const nlohmann::json& lights = (*extensions)["KHR_lights_punctual"]["lights"];
+    for (size_t i = 0; i < lights.size(); ++i) {
+      const nlohmann::json& light = lights[i];
+      if (!light.is_object() || !light.contains("type") || light["type"] != "spot" ||
+          (light.contains("spot") && !light["spot"].is_null())) {
+        continue;
+      }
+      if (!out) out = doc;
+      (*out)["extensions"]["KHR_lights_punctual"]["lights"][i]["spot"] = nlohmann::json::object();
     }
   }
   const auto buffers = doc.find("buffers");
@@ -167,6 +184,14 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
     const GlbChunks chunks = readGlbChunks(bytes, path);
     jsonText = chunks.json;
     if (chunks.hasBin) context.binChunk = chunks.binLength;
+    // The specification pads the JSON chunk with spaces; NUL padding, which some writers use, is read as spaces.
+    const size_t end = jsonText.find_last_not_of('\0');
+    if (end + 1 < jsonText.size() && end != std::string::npos) {
+      if (policy.strict) throw SceneError(path + ": the JSON chunk is padded with NUL bytes, not spaces");
+      file.warn("the JSON chunk is padded with NUL bytes, read as the spaces the specification asks for (--strict "
+                "refuses it)");
+      jsonText.resize(end + 1);
+    }
   }
   std::vector<std::string> duplicates;
   const nlohmann::json doc = parseJsonText(glb ? jsonText : bytes, path, &duplicates);
@@ -197,6 +222,15 @@ GltfFile readGltfFile(const std::string& path, const UriPolicy& policy) {
                                        folder);
   if (!ok) file.fail(firstLine(!err.empty() ? err : !warn.empty() ? warn : "not a valid glTF 2.0 file"));
   file.encodedImages.resize(file.model.images.size());
+  file.imageMimeTypes.assign(file.model.images.size(), "");
+  if (const auto images = doc.find("images"); images != doc.end() && images->is_array()) {
+    for (size_t i = 0; i < images->size() && i < file.imageMimeTypes.size(); ++i) {
+      const nlohmann::json& image = (*images)[i];
+      if (image.is_object() && image.contains("mimeType") && image["mimeType"].is_string()) {
+        file.imageMimeTypes[i] = image["mimeType"].get<std::string>();
+      }
+    }
+  }
   decodeMeshoptViews(file);
 
   // The file is meant to look right without these, or it would require them; it may still look different.

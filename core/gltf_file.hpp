@@ -15,6 +15,7 @@ struct GltfFile {
   std::string path;  // as given; every message starts with it
   tinygltf::Model model;
   std::vector<std::vector<unsigned char>> encodedImages;  // by image index; empty for buffer-view images
+  std::vector<std::string> imageMimeTypes;  // by image index, as written ("" for none): tinygltf keeps only some
   UriPolicy policy;                                       // as read: where files may be, and --strict
 
   // Throws SceneError("<path>: <what>").

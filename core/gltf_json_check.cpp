@@ -304,6 +304,20 @@ class Checker {
         fail(field + ".type", "must be SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4 (got " +
                                   (type == accessor->end() ? std::string("nothing") : quoteJson(*type)) + ")");
       }
+      // min and max, as many numbers as the type has components: the loader measures its own bounds, so a pair of
+      // another form changes nothing drawn, but viewers that cull by it would.
+      for (const char* key : {"min", "max"}) {
+        const auto bound = accessor->find(key);
+        if (bound == accessor->end()) continue;
+        if (bound->is_array() && bound->size() == components &&
+            std::all_of(bound->begin(), bound->end(), [](const json& v) { return v.is_number(); })) {
+          continue;
+        }
+        const std::string expected = std::to_string(components) + " number" + (components == 1 ? "" : "s");
+        if (context_.policy.strict) fail(field + "." + key, "must be " + expected + " (got " + quoteJson(*bound) + ")");
+        warnOnce(context_.path + ": " + field + "." + key + ": " + quoteJson(*bound) + " is not " + expected +
+                 ", one per component; not used (--strict refuses it)");
+      }
       const std::optional<uint64_t> view = index(*accessor, "bufferView", field, "bufferViews");
       const std::optional<uint64_t> offset = integer(*accessor, "byteOffset", field, kMaxBytes);
       if (offset && *offset % size != 0) {
@@ -467,7 +481,14 @@ class Checker {
       extensionNumbers(light, "color", field, 3);
       extensionNumbers(light, "intensity", field);
       extensionNumbers(light, "range", field);
-      // Babylon's exporter writes "spot": null on point lights, read as absent, as tinygltf and the viewers do.
+      // Babylon's exporter writes "spot": null on point lights, read as absent, as tinygltf and the viewers do. A
+      // spot light without one, which the specification forbids, gets the default cone, as three.js reads it.
+      const bool isSpot = light.contains("type") && light["type"] == "spot";
+      if (isSpot && (!light.contains("spot") || light["spot"].is_null())) {
+        if (context_.policy.strict) fail(field + ".spot", "is required for a spot light");
+        warnOnce(context_.path + ": " + field + ".spot: missing for a spot light: the default cone (inner angle 0, "
+                 "outer pi/4) is used, as three.js reads it (--strict refuses it)");
+      }
       if (light.contains("spot") && !light["spot"].is_null()) {
         const json& spot = member(light, "spot", field);
         extensionNumbers(spot, "innerConeAngle", field + ".spot");
@@ -490,7 +511,12 @@ class Checker {
     const std::vector<const json*> cameras = objects(doc_, "cameras", "cameras");
     for (std::size_t i = 0; i < cameras.size(); ++i) {
       const std::string field = item("cameras", i);
+      if (!cameras[i]->contains("type")) fail(field + ".type", "is required (\"perspective\" or \"orthographic\")");
       typed(*cameras[i], "type", field, &json::is_string, "a string");
+      const std::string type = (*cameras[i])["type"].get<std::string>();
+      if ((type == "perspective" || type == "orthographic") && !cameras[i]->contains(type)) {
+        fail(field + "." + type, "is required for a camera of type \"" + type + "\"");
+      }
       if (cameras[i]->contains("orthographic")) {
         const json& orthographic = member(*cameras[i], "orthographic", field);
         const std::string owner = field + ".orthographic";

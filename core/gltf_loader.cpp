@@ -332,7 +332,11 @@ class Loader {
     bool infinite = false;
     if (c.type == "perspective") {
       const tinygltf::PerspectiveCamera& p = c.perspective;
-      if (!(p.yfov > 0.0 && p.yfov < glm::pi<double>())) file_.fail(name + ".perspective.yfov: must be in (0, pi)");
+      // The renderer draws vertical fields of view of 1 to 179 degrees.
+      if (!(p.yfov >= glm::radians(1.0) && p.yfov <= glm::radians(179.0))) {
+        file_.fail(name + ".perspective.yfov: must be in [" + number(glm::radians(1.0)) + ", " +
+                   number(glm::radians(179.0)) + "] radians, 1 to 179 degrees (got " + number(p.yfov) + ")");
+      }
       if (!(p.znear > 0.0 && p.znear <= kMaxCoordinate)) file_.fail(name + ".perspective.znear: must be > 0");
       if (p.zfar != 0.0 && !(p.zfar > p.znear && p.zfar <= kMaxCoordinate)) {
         file_.fail(name + ".perspective.zfar: must be greater than znear");
@@ -359,8 +363,10 @@ class Loader {
   // spaced by the logarithm of depth: the near plane then lies at 1e-4 of zfar, said in a note.
   void readOrthographic(const tinygltf::OrthographicCamera& o, const std::string& owner, Camera& camera) const {
     for (const auto& [key, mag] : {std::pair<const char*, double>{"xmag", o.xmag}, {"ymag", o.ymag}}) {
-      if (!(mag != 0.0 && std::fabs(mag) <= kMaxCoordinate)) {
-        file_.fail(owner + "." + key + ": must be a non-zero magnification (got " + number(mag) + ")");
+      // The renderer draws views of 1e-6 to 1e6 metres (validateScene's orthographic half height).
+      if (!(std::fabs(mag) >= 1e-6 && std::fabs(mag) <= 1e6)) {
+        file_.fail(owner + "." + key + ": must be a magnification of 1e-6 to 1e6 metres, not 0 (got " + number(mag) +
+                   ")");
       }
       if (mag < 0.0) {
         if (file_.policy.strict) file_.fail(owner + "." + key + ": must not be negative (got " + number(mag) + ")");
@@ -597,6 +603,40 @@ class Loader {
     return target;
   }
 
+  // A float POSITION accessor's min and max, which the specification requires, against the positions read: the
+  // renderer measures its own bounds, but viewers that cull by the declared ones leave such a mesh out, so a pair
+  // that does not hold the data (beyond a thousandth of its extent: Draco's quantization) is named in a warning.
+  void checkDeclaredBounds(int accessor, const std::vector<float>& positions, const std::string& field) const {
+    const tinygltf::Accessor& a = file_.model.accessors.at(static_cast<size_t>(accessor));
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.minValues.size() != 3 || a.maxValues.size() != 3 ||
+        positions.empty()) {
+      return;
+    }
+    glm::dvec3 lo(positions[0], positions[1], positions[2]), hi = lo;
+    for (size_t i = 0; i + 2 < positions.size(); i += 3) {
+      const glm::dvec3 p(positions[i], positions[i + 1], positions[i + 2]);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const glm::dvec3 declaredLo(a.minValues[0], a.minValues[1], a.minValues[2]);
+    const glm::dvec3 declaredHi(a.maxValues[0], a.maxValues[1], a.maxValues[2]);
+    const double tolerance = 1e-3 * std::max({glm::length(hi - lo), glm::length(hi), glm::length(lo)}) + 1e-6;
+    if (glm::all(glm::lessThanEqual(glm::abs(declaredLo - lo), glm::dvec3(tolerance))) &&
+        glm::all(glm::lessThanEqual(glm::abs(declaredHi - hi), glm::dvec3(tolerance)))) {
+      return;
+    }
+    const auto text = [](const glm::dvec3& v) {
+      return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+    };
+    if (file_.policy.strict) {
+      file_.fail(gltfElement("accessors", accessor) + ".min/max: " + text(declaredLo) + " to " + text(declaredHi) +
+                 " do not hold the data");
+    }
+    file_.warn(gltfElement("accessors", accessor) + ".min/max (" + field + "): " + text(declaredLo) + " to " +
+               text(declaredHi) + " do not hold the positions, " + text(lo) + " to " + text(hi) +
+               ", which are drawn (--strict refuses it)");
+  }
+
   // Index into Scene::meshes of a primitive, converted once however many nodes and loads use it (a deformed one
   // for each node that deforms it); -1 for what is not drawn.
   int primitiveMesh(int meshIndex, int primitiveIndex, const Deformation* deformation) {
@@ -667,6 +707,7 @@ class Loader {
                    number(kMaxCoordinate));
       }
     }
+    checkDeclaredBounds(attribute("POSITION"), positions, field + ".attributes.POSITION");
     const bool hasNormals = attribute("NORMAL") >= 0;
     // glTF: without normals, tangents from the file are ignored too.
     const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;

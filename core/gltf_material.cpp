@@ -233,6 +233,15 @@ bool GltfMaterials::readImage(int index, TextureData& data, std::string& problem
     }
     bytes = {encoded.data(), encoded.size()};
   }
+  // Decoded by what the bytes are, as browsers decode them; a mimeType that says otherwise is named.
+  const char* actual = imageMimeType(bytes.data, bytes.size);
+  const std::string& declared = file_.imageMimeTypes[static_cast<size_t>(index)];
+  if (actual && !declared.empty() && declared != actual) {
+    const std::string what = gltfElement("images", index) + ".mimeType: \"" + declared + "\", but the bytes are " +
+                             actual;
+    if (file_.policy.strict) file_.fail(what);
+    file_.warn(what + ", decoded as such (--strict refuses it)");
+  }
   ImageRgba8 pixels;
   try {
     pixels = pbr::decodeImage(bytes.data, bytes.size, label);

@@ -222,6 +222,11 @@ ImageRgba8 decodeWebp(const unsigned char* bytes, size_t size, const std::string
 
 }  // namespace
 
+const char* imageMimeType(const unsigned char* bytes, size_t size) {
+  return isPng(bytes, size) ? "image/png" : isJpeg(bytes, size) ? "image/jpeg" : isWebp(bytes, size) ? "image/webp"
+                                                                                                   : nullptr;
+}
+
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name) {
   if (size == 0) throw std::runtime_error(name + ": cannot decode image: no data");
   if (size > static_cast<size_t>(INT_MAX)) throw std::runtime_error(name + ": cannot decode image: over 2 GiB");

@@ -50,6 +50,9 @@ constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
 // std::runtime_error("NAME: cannot decode image: REASON"), or "NAME: cannot decode image" where the decoder gives
 // no reason (stb leaves none for some corrupt files).
 ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::string& name);
+// The MIME type of the format decodeImage would decode `bytes` as, by their signature: "image/png", "image/jpeg",
+// "image/webp", or null for none of them.
+const char* imageMimeType(const unsigned char* bytes, size_t size);
 // ": REASON" for the last stb decoder failure, or "" where stb gives none (it may give a null pointer).
 std::string decoderFailureReason();
 void writeHdr(const std::string& path, const ImageRgbaF& image);  // EXR or PFM by the extension

@@ -137,6 +137,10 @@ json readJsonFile(const std::string& path) {
 }
 
 json parseJsonText(const std::string& text, const std::string& path, std::vector<std::string>* duplicates) {
+  // nlohmann's reader ends the text at a NUL byte and ignores whatever follows: a file that is not what it seems.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    throw SceneError(path + ":" + lineColumn(text, nul) + ": a NUL byte, which JSON text cannot hold");
+  }
   checkJsonNesting(text, path);
 
   json root;

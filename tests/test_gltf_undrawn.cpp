@@ -200,3 +200,113 @@ TEST_CASE("gltf leniency: a camera aspectRatio of 0 or below is named and the fr
                        (text + ": cameras[0].perspective.aspectRatio: must be a number (got \"1.5\")").c_str(),
                        pbr::SceneError);
 }
+
+TEST_CASE("gltf leniency: camera and spot light objects, accessor bounds and image types, each named in one line") {
+  const TempDir dir;
+  const auto errorOf = [](const std::string& path, bool strict = false) -> std::string {
+    pbr::Scene scene;
+    try {
+      pbr::appendGltf(scene, path, glm::mat4(1.0f), pbr::UriPolicy{false, strict});
+    } catch (const pbr::SceneError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const auto warningOf = [](const std::string& path) {
+    CapturedStderr err;
+    pbr::Scene scene;
+    pbr::appendGltf(scene, path);
+    return err.text();
+  };
+  // A camera without its type, or without the object its type names; a field of view the renderer does not draw.
+  GltfBuilder b = pbr::test::quadModel();
+  b.doc["nodes"].push_back({{"translation", {0, 0, 5}}, {"camera", 0}});
+  b.doc["scenes"][0]["nodes"].push_back(1);
+  b.doc["cameras"] = {{{"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+  std::string path = b.writeGltf(dir.path(), "untyped");
+  CHECK(errorOf(path) == path + ": cameras[0].type: is required (\"perspective\" or \"orthographic\")");
+  b.doc["cameras"] = {{{"type", "orthographic"}}};
+  path = b.writeGltf(dir.path(), "bare");
+  CHECK(errorOf(path) == path + ": cameras[0].orthographic: is required for a camera of type \"orthographic\"");
+  b.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.001}, {"znear", 0.1}}}}};
+  path = b.writeGltf(dir.path(), "narrow");
+  CHECK(errorOf(path) ==
+        path + ": cameras[0].perspective.yfov: must be in [0.0174533, 3.12414] radians, 1 to 179 degrees (got 0.001)");
+
+  // A spot light without its cone: the default one, as three.js reads it.
+  GltfBuilder s = pbr::test::quadModel();
+  s.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  s.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "spot"}, {"intensity", 5.0}}};
+  s.doc["nodes"].push_back({{"translation", {0, 0, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  s.doc["scenes"][0]["nodes"].push_back(1);
+  path = s.writeGltf(dir.path(), "spot");
+  CHECK(warningOf(path) == path + ": extensions.KHR_lights_punctual.lights[0].spot: missing for a spot light: the "
+                                  "default cone (inner angle 0, outer pi/4) is used, as three.js reads it (--strict "
+                                  "refuses it)\n");
+  pbr::Scene lit;
+  pbr::appendGltf(lit, path);
+  REQUIRE(lit.lights.size() == 1);
+  REQUIRE(lit.lights[0].spot.has_value());
+  CHECK(lit.lights[0].spot->innerAngle == 0.0f);
+  CHECK(lit.lights[0].spot->outerAngle == doctest::Approx(0.25 * 3.14159265358979));
+  CHECK(errorOf(path, true) == path + ": extensions.KHR_lights_punctual.lights[0].spot: is required for a spot light");
+
+  // Accessor bounds of another form, and bounds that do not hold the positions (viewers that cull by them would
+  // leave the quad out).
+  GltfBuilder m = pbr::test::quadModel();
+  const int position = m.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+  m.doc["accessors"][position]["min"] = "junk";
+  m.doc["accessors"][position]["max"] = {1, 1, 0};
+  path = m.writeGltf(dir.path(), "junk");
+  CHECK(warningOf(path).find(path + ": accessors[" + std::to_string(position) +
+                             "].min: \"junk\" is not 3 numbers, one per component; not used (--strict refuses it)\n") !=
+        std::string::npos);
+  CHECK(errorOf(path, true) ==
+        path + ": accessors[" + std::to_string(position) + "].min: must be 3 numbers (got \"junk\")");
+  m.doc["accessors"][position]["min"] = {5, 5, 5};
+  m.doc["accessors"][position]["max"] = {6, 6, 6};
+  path = m.writeGltf(dir.path(), "off");
+  CHECK(warningOf(path) == path + ": accessors[" + std::to_string(position) +
+                               "].min/max (meshes[0].primitives[0].attributes.POSITION): [5, 5, 5] to [6, 6, 6] do not "
+                               "hold the positions, [-1, -1, 0] to [1, 1, 0], which are drawn (--strict refuses it)\n");
+
+  // An image whose mimeType names another format than its bytes: decoded as what the bytes are.
+  GltfBuilder t = pbr::test::quadModel();
+  const int texture = t.addPngTexture(dir.path(), "red.png", pbr::test::solidImage(2, 2, {255, 0, 0, 255}));
+  t.doc["images"][0]["mimeType"] = "image/jpeg";
+  t.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}}};
+  t.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  path = t.writeGltf(dir.path(), "mime");
+  CHECK(warningOf(path) == path + ": images[0].mimeType: \"image/jpeg\", but the bytes are image/png, decoded as such "
+                                  "(--strict refuses it)\n");
+  CHECK(errorOf(path, true) == path + ": images[0].mimeType: \"image/jpeg\", but the bytes are image/png");
+}
+
+TEST_CASE("json: a NUL byte in a scene or glTF file is refused, a GLB JSON chunk padded with NULs read as spaces") {
+  const TempDir dir;
+  const std::string scene = dir.write("nul.json", std::string(R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]}})") +
+                                                      std::string(1, '\0'));
+  CHECK_THROWS_WITH_AS(pbr::loadSceneFile(scene), (scene + ":1:57: a NUL byte, which JSON text cannot hold").c_str(),
+                       pbr::SceneError);
+  // The GLB's JSON chunk grows by four NUL bytes.
+  const std::string glb = pbr::test::quadModel().writeGlb(dir.path(), "padded");
+  std::string bytes = pbr::test::readFile(glb);
+  const auto word = [&](size_t at) {
+    return uint32_t(uint8_t(bytes[at])) | uint32_t(uint8_t(bytes[at + 1])) << 8 | uint32_t(uint8_t(bytes[at + 2])) << 16 |
+           uint32_t(uint8_t(bytes[at + 3])) << 24;
+  };
+  const auto setWord = [&](size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = char(v >> (8 * i));
+  };
+  const uint32_t jsonLength = word(12);
+  bytes.insert(20 + jsonLength, std::string(4, '\0'));
+  setWord(12, jsonLength + 4);
+  setWord(8, word(8) + 4);
+  const std::string padded = dir.write("padded.glb", bytes);
+  CapturedStderr err;
+  pbr::Scene loaded;
+  pbr::appendGltf(loaded, padded);
+  CHECK(loaded.objects.size() == 1);
+  CHECK(err.text() == padded + ": the JSON chunk is padded with NUL bytes, read as the spaces the specification asks "
+                               "for (--strict refuses it)\n");
+}
