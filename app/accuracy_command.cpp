@@ -211,7 +211,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const TimingMode mode = chooseTimingMode(timing, info.renderer);
   cost.timing = mode;
   std::printf("renderer: %s | timing: %s\n", info.renderer.c_str(), describe(mode));
-  std::filesystem::create_directories(dir);
+  makeOutputFolder("--out-dir", dir);
   const ShaderLibrary shaders;
 
   std::vector<PairCost> costs;

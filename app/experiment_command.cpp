@@ -1,5 +1,4 @@
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 
 #include "app/args.hpp"
@@ -8,6 +7,7 @@
 #include "app/common_options.hpp"
 #include "app/experiments/experiments.hpp"
 #include "core/context.hpp"
+#include "core/output_file.hpp"
 
 namespace pbr {
 
@@ -68,6 +68,7 @@ int runExperiment(const std::vector<std::string>& argv) {
   const int frames = args.getInt("--frames", 1, 1000);
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
 
+  makeOutputFolder("--out", outDir);  // before the experiment runs, so that a bad folder fails at once
   auto context = createHeadlessContext(platform);
   std::printf("renderer: %s | %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str(),
               context->info().platform.c_str());
@@ -75,7 +76,6 @@ int runExperiment(const std::vector<std::string>& argv) {
   const ExperimentResult result = name == "fresnel"      ? runFresnelExperiment(shaders, size)
                                   : name == "saturation" ? runSaturationExperiment(shaders, size)
                                                          : runTrianglesExperiment(shaders, size, frames);
-  std::filesystem::create_directories(outDir);
   for (const ExperimentImage& img : result.images) writePng(outDir + "/" + img.file, img.image);
   const std::string csv = outDir + "/" + name + ".csv", png = outDir + "/" + name + ".png";
   writeExperimentCsv(csv, result.table);

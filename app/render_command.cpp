@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -218,8 +219,23 @@ int runRender(const std::vector<std::string>& argv) {
   }
   const std::string sceneName = args.get("--scene");
   const ShadingModel model = parseShadingModel(args.get("--model"));
-  ShadingVariant variant = parseShadingVariant(args.get("--variant"));
-  if (args.has("--visibility")) variant.visibility = parseVisibility(args.get("--visibility"));
+  std::vector<std::string> variantKeys;
+  ShadingVariant variant = parseShadingVariant(args.get("--variant"), &variantKeys);
+  // A term of the other model, or one chosen twice, would be dropped without a word.
+  for (const std::string& key : variantKeys) {
+    if ((key == "lobe") != (model == ShadingModel::BlinnPhong)) {
+      throw UsageError("--variant " + args.get("--variant") + ": " + key + " is a term of the " +
+                       (key == "lobe" ? "blinn-phong" : "pbr") + " model, not of --model " + toString(model));
+    }
+  }
+  if (args.has("--visibility")) {
+    if (std::find(variantKeys.begin(), variantKeys.end(), "visibility") != variantKeys.end()) {
+      throw UsageError("--visibility and --variant " + args.get("--variant") + " both choose the visibility term");
+    }
+    if (model != ShadingModel::Pbr) throw UsageError("--visibility is a term of the pbr model, not of --model " +
+                                                     std::string(toString(model)));
+    variant.visibility = parseVisibility(args.get("--visibility"));
+  }
   RendererConfig rendererConfig;
   rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format"));
   rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer"));

@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "app/args.hpp"
@@ -103,6 +104,9 @@ int runView(const std::vector<std::string>& argv) {
     throw UsageError("--screenshot-ui shows the overlay, which --no-ui hides");
   }
   options.environmentFolder = args.get("--env-dir");
+  if (!options.environmentFolder.empty() && !std::filesystem::is_directory(options.environmentFolder)) {
+    throw UsageError("--env-dir " + options.environmentFolder + ": not a folder");
+  }
   options.timing = args.get("--timing");
   chooseTimingMode(options.timing, "");  // reject a bad mode before opening a window
 

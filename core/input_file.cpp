@@ -1,11 +1,11 @@
 #include "core/input_file.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 namespace pbr {
@@ -35,10 +35,28 @@ void requireRegularFile(const std::string& path, uint64_t maxBytes) {
 
 std::string readInputFile(const std::string& path, uint64_t maxBytes) {
   requireRegularFile(path, maxBytes);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw std::runtime_error(path + ": cannot read the file");
+  // read(2) itself, so that a failure is the system's reason (a stream throws its own text for /proc/self/mem), and
+  // bounded, since files of /proc report a size of 0 whatever they hold.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
+  std::string bytes;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n == 0) break;
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int error = errno;
+      ::close(fd);
+      throw std::runtime_error(path + ": cannot read: " + std::strerror(error));
+    }
+    bytes.append(buffer, static_cast<size_t>(n));
+    if (bytes.size() > maxBytes) {
+      ::close(fd);
+      throw std::runtime_error(path + ": over the input limit of " + std::to_string(maxBytes) + " bytes");
+    }
+  }
+  ::close(fd);
   return bytes;
 }
 

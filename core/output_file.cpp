@@ -202,6 +202,16 @@ bool isStreamTarget(const std::string& path) {
   return ::stat(path.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode));
 }
 
+void makeOutputFolder(const std::string& option, const std::string& dir) {
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    throw std::runtime_error(option + " " + dir + ": cannot make the folder: " +
+                             (ec ? ec.message() : std::string("a file is in the way")));
+  }
+}
+
 void writeOutputFile(const std::string& path, const std::function<void(std::ostream&)>& body) {
   OutputFile(path).write(body);
 }

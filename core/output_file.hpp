@@ -55,6 +55,10 @@ bool isStreamTarget(const std::string& path);
 // will hold, e.g. ".json"; a stream target is taken as it is.
 void requireExtension(const std::string& path, const std::string& extension);
 
+// Makes the folder an option names for a command's outputs (and its parents), before the work: throws
+// std::runtime_error "OPTION DIR: cannot make the folder: REASON" (a file in the way, no permission).
+void makeOutputFolder(const std::string& option, const std::string& dir);
+
 // Opens, writes through `body` and commits in one go.
 void writeOutputFile(const std::string& path, const std::function<void(std::ostream&)>& body);
 

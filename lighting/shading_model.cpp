@@ -82,9 +82,13 @@ Visibility parseVisibility(const std::string& name) { return parseTerm(kVisibili
 
 const char* toString(Visibility visibility) { return entry(kVisibilities, visibility).name; }
 
-ShadingVariant parseShadingVariant(const std::string& text) {
-  if (text == "study") return kStudy;
+ShadingVariant parseShadingVariant(const std::string& text, std::vector<std::string>* keys) {
+  if (text == "study") {
+    if (keys) *keys = {"visibility", "ndf", "fresnel", "diffuse"};
+    return kStudy;
+  }
   ShadingVariant v;
+  std::vector<std::string> given;
   size_t start = 0;
   while (start <= text.size() && !text.empty()) {
     const size_t end = std::min(text.find(',', start), text.size());
@@ -92,8 +96,12 @@ ShadingVariant parseShadingVariant(const std::string& text) {
     const size_t eq = item.find('=');
     if (item == "study") throw std::invalid_argument("the variant 'study' is a whole model and takes no other keys");
     if (eq == std::string::npos) throw std::invalid_argument("variant item '" + item + "' is not key=value");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    if (key == "visibility" || key == "vis") v.visibility = parseVisibility(value);
+    const std::string key = item.substr(0, eq) == "vis" ? "visibility" : item.substr(0, eq), value = item.substr(eq + 1);
+    if (std::find(given.begin(), given.end(), key) != given.end()) {
+      throw std::invalid_argument("variant key '" + key + "' given twice (in '" + text + "')");
+    }
+    given.push_back(key);
+    if (key == "visibility") v.visibility = parseVisibility(value);
     else if (key == "ndf") v.ndf = parseTerm(kNdfs, "NDF", value);
     else if (key == "fresnel") v.fresnel = parseTerm(kFresnels, "Fresnel term", value);
     else if (key == "diffuse") v.diffuse = parseTerm(kDiffuses, "diffuse term", value);
@@ -101,6 +109,7 @@ ShadingVariant parseShadingVariant(const std::string& text) {
     else throw std::invalid_argument("unknown variant key '" + key + "' (expected visibility, ndf, fresnel, diffuse, lobe)");
     start = end + 1;
   }
+  if (keys) *keys = given;
   return v;
 }
 

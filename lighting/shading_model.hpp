@@ -46,7 +46,9 @@ const char* toString(Visibility visibility);
 // "key=value,..." with keys visibility (or vis), ndf (ggx|beckmann), fresnel (schlick|exact|schlick-sg), diffuse
 // (lambert-1-f|lambert|burley|lambert-1-f-vh) and, for Blinn-Phong, lobe (pow|sg); keys left out keep the defaults. Or, alone, "study": the PBR
 // model of the Blinn-Phong-vs-PBR study, visibility=hammon,ndf=ggx,fresnel=schlick,diffuse=lambert-1-f-vh.
-ShadingVariant parseShadingVariant(const std::string& text);
+// `keys`, when given, receives the keys the text sets ("visibility" for "vis"; the four PBR keys for "study"); a key
+// given twice is refused.
+ShadingVariant parseShadingVariant(const std::string& text, std::vector<std::string>* keys = nullptr);
 std::string toString(const ShadingVariant& variant);  // every PBR key, in the form parseShadingVariant reads
 std::string toString(BlinnPhongLobe lobe);            // "lobe=pow" | "lobe=sg"
 // The terms `model` uses: the PBR keys, or the Blinn-Phong lobe.

@@ -42,6 +42,7 @@ const char* name(const Names<Form>& names, Form form) {
 BrdfForms parseBrdfForms(const std::string& text) {
   if (text == "study") return BrdfForms::study();
   BrdfForms forms;
+  std::vector<std::string> given;
   size_t start = 0;
   while (start <= text.size() && !text.empty()) {
     const size_t end = std::min(text.find(',', start), text.size());
@@ -49,8 +50,12 @@ BrdfForms parseBrdfForms(const std::string& text) {
     const size_t eq = item.find('=');
     if (item == "study") throw std::invalid_argument("'study' is a whole model and takes no other keys");
     if (eq == std::string::npos) throw std::invalid_argument("variant item '" + item + "' is not key=value");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    if (key == "visibility" || key == "vis") forms.visibility = parse(kVisibilities, "visibility", value);
+    const std::string key = item.substr(0, eq) == "vis" ? "visibility" : item.substr(0, eq), value = item.substr(eq + 1);
+    if (std::find(given.begin(), given.end(), key) != given.end()) {
+      throw std::invalid_argument("variant key '" + key + "' given twice (in '" + text + "')");
+    }
+    given.push_back(key);
+    if (key == "visibility") forms.visibility = parse(kVisibilities, "visibility", value);
     else if (key == "fresnel") forms.fresnel = parse(kFresnels, "fresnel", value);
     else if (key == "diffuse") forms.diffuse = parse(kDiffuses, "diffuse", value);
     else if (key != "ndf" || value != "ggx")

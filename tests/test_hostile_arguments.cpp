@@ -87,3 +87,52 @@ TEST_CASE("hostile outputs: the frame-size check names the option and the limit 
                     "available");
   CHECK_NOTHROW(pbr::checkFrameSize(3800, 3800, "--size", 68, limits));
 }
+
+TEST_CASE("hostile arguments: conflicting or malformed choices are refused naming what conflicts") {
+  const TempDir dir;
+  const std::string file = dir.write("f.json", "{}");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {tinyRender({"--variant", "visibility=exact,visibility=hammon"}),
+       "variant key 'visibility' given twice (in 'visibility=exact,visibility=hammon')"},
+      {tinyRender({"--variant", "vis=exact,visibility=hammon"}), "variant key 'visibility' given twice"},
+      {tinyRender({"--variant", "lobe=sg"}), "--variant lobe=sg: lobe is a term of the blinn-phong model, not of "
+                                             "--model pbr"},
+      {tinyRender({"--model", "blinn-phong", "--variant", "ndf=beckmann"}),
+       "ndf is a term of the pbr model, not of --model blinn-phong"},
+      {tinyRender({"--variant", "study", "--visibility", "hammon"}),
+       "--visibility and --variant study both choose the visibility term"},
+      {tinyRender({"--model", "blinn-phong", "--visibility", "hammon"}),
+       "--visibility is a term of the pbr model, not of --model blinn-phong"},
+      {{"reference", "--size", "8x8", "--hdr", dir.file("r.pfm"), "--variant", "fresnel=schlick,fresnel=exact"},
+       "variant key 'fresnel' given twice"},
+      {{"bench", "--pair-cost", "exact,exact"}, "variant 'exact' given twice (in 'exact,exact')"},
+      {{"accuracy", "--variants", "exact,exact"}, "variant 'exact' given twice"},
+      {{"accuracy", "--scenes", "fresnel-floor:abc"},
+       "--scenes fresnel-floor:abc: expected NAME or fresnel-floor:DEGREES, the view angle a number (got 'abc')"},
+      {{"accuracy", "--scenes", "fresnel-floor:40:2"}, "the view angle a number (got '40:2')"},
+      {{"accuracy", "--scenes", "sphere-grid:40"}, "--scenes sphere-grid:40: a view angle applies only to fresnel-floor"},
+      {{"view", "--frames", "1", "--env-dir", file}, "--env-dir " + file + ": not a folder"},
+  };
+  for (const auto& [args, line] : cases) {
+    CAPTURE(line);
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 2);
+    checkOneLineNaming(run, line);
+  }
+}
+
+TEST_CASE("hostile arguments: an unreadable scene and an output folder a file is in the way of are named") {
+  const TempDir dir;
+  const std::string file = dir.write("f.json", "{}");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {tinyRender({"--scene", "/proc/self/mem"}), "pbr render: /proc/self/mem: cannot read: Input/output error"},
+      {{"experiment", "fresnel", "--out", file}, "pbr experiment: --out " + file +
+                                                     ": cannot make the folder: Not a directory"},
+  };
+  for (const auto& [args, line] : cases) {
+    CAPTURE(line);
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 1);
+    CHECK(run.err == line + "\n");
+  }
+}

@@ -1,6 +1,9 @@
 #include "app/accuracy/accuracy_variants.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -58,6 +61,9 @@ std::vector<AccuracyVariant> selectVariants(const std::string& names) {
   std::stringstream list(names);
   std::string name;
   while (std::getline(list, name, ',')) {
+    if (std::any_of(out.begin(), out.end(), [&](const AccuracyVariant& v) { return v.name == name; })) {
+      throw std::invalid_argument("variant '" + name + "' given twice (in '" + names + "')");
+    }
     bool found = false;
     for (const AccuracyVariant& v : accuracyLadder()) {
       if (v.name == name) {
@@ -85,8 +91,18 @@ AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params) {
   const size_t colon = spec.find(':');
   if (colon != std::string::npos) {
     name = spec.substr(0, colon);
-    params.viewAngleDeg = std::stof(spec.substr(colon + 1));
-    label = name + "-" + spec.substr(colon + 1);
+    const std::string angle = spec.substr(colon + 1);
+    char* end = nullptr;
+    const float degrees = std::strtof(angle.c_str(), &end);
+    if (angle.empty() || end != angle.c_str() + angle.size() || !std::isfinite(degrees)) {
+      throw std::invalid_argument("--scenes " + spec + ": expected NAME or fresnel-floor:DEGREES, the view angle a "
+                                  "number (got '" + angle + "')");
+    }
+    if (name != "fresnel-floor") {
+      throw std::invalid_argument("--scenes " + spec + ": a view angle applies only to fresnel-floor");
+    }
+    params.viewAngleDeg = degrees;
+    label = name + "-" + angle;
   }
   for (char& c : label)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
