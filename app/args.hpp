@@ -10,6 +10,9 @@
 namespace pbr {
 
 // A malformed command line: reported as one line, exit code 2.
+// The largest side getSize accepts (GL_MAX_TEXTURE_SIZE on llvmpipe and most GPUs).
+constexpr int kMaxSizeSide = 16384;
+
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

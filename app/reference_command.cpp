@@ -1,6 +1,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <mutex>
 #include <thread>
 
 #include "app/args.hpp"
@@ -13,6 +14,7 @@
 #include "core/shadow_maps.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
+#include "renderer/frame_limits.hpp"
 
 namespace pbr {
 
@@ -82,6 +84,25 @@ int runReference(const std::vector<std::string>& argv) {
   options.shadows = parseShadowMode(args.get("--shadows"));
   const Scene scene = resolveScene(args.get("--scene"), params);
   checkOutputsApart(sceneInputs(args.get("--scene"), scene), {{"--hdr", out}});
+  // The frame in memory: radiance (16 bytes a pixel), object ids and shadow visibility (4 each), and the file's
+  // copy of the radiance as it is written (16).
+  checkFrameSize(size.x, size.y, "--size", 40, {kMaxSizeSide, availableMemoryBytes()});
+  // A long run says how far it is, on stderr, every few seconds.
+  const auto begun = std::chrono::steady_clock::now();
+  std::mutex progressMutex;
+  double lastReport = 0.0;
+  options.progress = [&](double done) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+    const std::lock_guard<std::mutex> lock(progressMutex);
+    if (seconds - lastReport < 5.0 || done >= 1.0) return;
+    lastReport = seconds;
+    if (done < 0.05) {
+      std::fprintf(stderr, "reference: %.1f%% of the rows after %.0f s\n", 100.0 * done, seconds);
+    } else {
+      std::fprintf(stderr, "reference: %.0f%% of the rows after %.0f s, about %.0f s left\n", 100.0 * done, seconds,
+                   seconds * (1.0 - done) / done);
+    }
+  };
 
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);

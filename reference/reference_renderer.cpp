@@ -215,7 +215,12 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
     }
   };
 
-  parallelFor(height, threads, shadeRow);
+  std::atomic<int> rowsDone{0};
+  parallelFor(height, threads, [&](int y) {
+    shadeRow(y);
+    const int done = ++rowsDone;
+    if (options.progress) options.progress(double(done) / double(height));
+  });
   frame.truncatedRays = truncatedRays;
   return frame;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,8 @@ struct ReferenceOptions {
   Geometry geometry = Geometry::Meshes;
   // Which lights cast shadows (core/scene.hpp's castsShadows); none by default, the frames measured before shadows.
   ShadowMode shadows = ShadowMode::None;
+  // Called from the worker threads (at once by several) as rows finish, with the share of the frame done.
+  std::function<void(double)> progress;
 };
 ReferenceFrame renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options = {});
 

@@ -153,6 +153,12 @@ TEST_CASE("hostile outputs: a frame larger than the limits fails before renderin
                               "ulimit -v 6000000; ");
   CHECK(pairCost.exitCode == 1);
   checkOneLineNaming(pairCost, "--pair-size 16384x16384");
+  // The CPU reference holds 40 bytes a pixel (10.7 GB at 16384x16384): checked as well before a ray is cast.
+  const Run reference =
+      runPbr(dir, {"reference", "--size", "16384x16384", "--hdr", dir.file("r.pfm")}, "ulimit -v 6000000; ");
+  CHECK(reference.exitCode == 1);
+  checkOneLineNaming(reference, "--size 16384x16384: the frame needs about 10.7 GB (40 bytes per pixel)");
+  CHECK_FALSE(fs::exists(dir.file("r.pfm")));
 #endif
 }
 
