@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -63,13 +64,24 @@ void readHeader(HdrReader& in, int& width, int& height) {
   }
   if (!rgbe) in.fail("Radiance header has no FORMAT=32-bit_rle_rgbe line");
   if (!in.line(text)) in.fail("truncated Radiance header (no resolution line)");
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "-Y %d +X %d %c", &height, &width, &extra) != 2) {
+  // Four words, each side in decimal digits: sscanf's %d wrapped 4294967300 to 4 without a word.
+  std::istringstream words(text);
+  std::string y, h, x, w, extra;
+  words >> y >> h >> x >> w;
+  const auto side = [](const std::string& digits) -> uint64_t {
+    if (digits.empty() || digits.size() > 12 || digits.find_first_not_of("0123456789") != std::string::npos) {
+      return 0;
+    }
+    return std::stoull(digits);
+  };
+  if (y != "-Y" || x != "+X" || side(h) == 0 || side(w) == 0 || (words >> extra)) {
     in.fail("unsupported Radiance resolution line \"" + text + "\" (expected \"-Y <height> +X <width>\")");
   }
-  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
-    in.fail("Radiance image size " + std::to_string(width) + "x" + std::to_string(height) + " out of range");
+  if (side(w) > uint64_t(kMaxSide) || side(h) > uint64_t(kMaxSide)) {
+    in.fail("Radiance image size " + w + "x" + h + " out of range (at most " + std::to_string(kMaxSide) + " a side)");
   }
+  width = static_cast<int>(side(w));
+  height = static_cast<int>(side(h));
 }
 
 // One RGBE pixel as linear RGB, alpha 1: mantissas times 2^(e - 128 - 8), zero for e = 0 (Ward 1991, "Real Pixels").
@@ -81,26 +93,41 @@ void storeRgbe(const unsigned char rgbe[4], float* out) {
   out[3] = 1.0f;
 }
 
-// Decodes the pixels after the header: flat RGBE quadruples, or (width 8 to 32767) run-length scanlines of four
-// channel runs each. Every length is checked against what is left of the scanline and of the file, so a short or
-// malformed file fails with the scanline named and no input can loop.
+// Decodes the pixels after the header: flat RGBE quadruples (with the original format's runs: a pixel (1, 1, 1, n)
+// repeats the one before it n times, n << 8 after another such pixel, and so on: Radiance's oldreadcolrs), or
+// (width 8 to 32767) run-length scanlines of four channel runs each. Every length is checked against what is left
+// of the scanline and of the file, so a short or malformed file fails with the scanline named and no input can
+// loop.
 ImageRgbaF decodePixels(HdrReader& in, int width, int height) {
   ImageRgbaF image{width, height, std::vector<float>(size_t{4} * width * height)};
-  const size_t flatBytes = size_t{4} * width * height;
   const auto truncated = [&](int row) {
     in.fail("truncated Radiance file (pixel data ends in scanline " + std::to_string(row) + " of " +
             std::to_string(height) + ")");
   };
-  const auto decodeFlat = [&](size_t firstPixel, const unsigned char* first) {
+  const auto decodeFlat = [&](const unsigned char* first) {
+    const size_t pixels = size_t(width) * height;
     unsigned char rgbe[4];
-    for (size_t p = firstPixel; p < size_t(width) * height; ++p) {
-      for (int c = 0; c < 4; ++c) rgbe[c] = first && p == firstPixel ? first[c] : in.next();
+    int shift = 0;
+    for (size_t p = 0; p < pixels;) {
+      if (!(first && p == 0) && in.left() < 4) truncated(static_cast<int>(p / size_t(width)));
+      for (int c = 0; c < 4; ++c) rgbe[c] = first && p == 0 ? first[c] : in.next();
+      if (rgbe[0] == 1 && rgbe[1] == 1 && rgbe[2] == 1) {
+        const uint64_t repeat = shift < 24 ? uint64_t(rgbe[3]) << shift : pixels;
+        if (p == 0 || repeat > pixels - p) {
+          in.fail("corrupt Radiance pixel data (a run of " + std::to_string(repeat) + " pixels where " +
+                  (p == 0 ? std::string("none precedes it") : std::to_string(pixels - p) + " are left") + ")");
+        }
+        for (uint64_t i = 0; i < repeat; ++i, ++p) std::copy_n(&image.pixels[(p - 1) * 4], 4, &image.pixels[p * 4]);
+        shift += 8;
+        continue;
+      }
       storeRgbe(rgbe, &image.pixels[p * 4]);
+      shift = 0;
+      ++p;
     }
   };
   if (width < 8) {
-    if (in.left() < flatBytes) truncated(static_cast<int>(in.left() / (size_t{4} * width)));
-    decodeFlat(0, nullptr);
+    decodeFlat(nullptr);
     return image;
   }
   std::vector<unsigned char> scanline(size_t{4} * width);  // channel-major: all reds, all greens, ...
@@ -110,8 +137,7 @@ ImageRgbaF decodePixels(HdrReader& in, int width, int height) {
     if (start[0] != 2 || start[1] != 2 || (start[2] & 0x80)) {
       // Not run-length encoded: the whole picture is flat pixels, from this scanline on.
       if (row > 0) in.fail("Radiance scanline " + std::to_string(row) + " is flat after run-length scanlines");
-      if (in.left() + 4 < flatBytes) truncated(static_cast<int>((in.left() + 4) / (size_t{4} * width)));
-      decodeFlat(0, start);
+      decodeFlat(start);
       return image;
     }
     if (((start[2] << 8) | start[3]) != width) {
