@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
+#include "app/frame_notes.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/frame_capture.hpp"
@@ -346,6 +347,9 @@ int runRender(const std::vector<std::string>& argv) {
   if (pngFile) {
     pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(outPng), ldr); });
     std::printf("wrote %s\n", outPng.c_str());
+  }
+  for (const std::string& note : frameNotes(scene, size, exposure, outPng.empty() ? nullptr : &ldr)) {
+    std::printf("note: %s\n", note.c_str());
   }
   if (hdrFile) {
     hdrFile->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(outHdr), hdr); });

@@ -123,6 +123,19 @@ glm::mat4 localTransform(const GltfFile& file, const tinygltf::Node& node, const
   return out;
 }
 
+// Whether any triangle of `mesh` spans an area: two edges whose angle has a sine above 1e-6, which float positions
+// in one line or point never give.
+bool coversArea(const MeshData& mesh) {
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    const glm::dvec3 a(mesh.vertices[mesh.indices[i]].position), b(mesh.vertices[mesh.indices[i + 1]].position),
+        c(mesh.vertices[mesh.indices[i + 2]].position);
+    const glm::dvec3 e1 = b - a, e2 = c - a;
+    const double cross = glm::length(glm::cross(e1, e2)), scale = glm::length(e1) * glm::length(e2);
+    if (cross > 1e-6 * scale && scale > 0.0) return true;
+  }
+  return false;
+}
+
 // Triangle lists from TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN index sequences, counter-clockwise.
 std::vector<uint32_t> triangleList(const GltfFile& file, int mode, std::vector<uint32_t> indices,
                                    const std::string& field) {
@@ -781,6 +794,12 @@ class Loader {
     }
     mesh.indices = triangleList(file_, prim.mode, std::move(indices),
                                 field + (prim.indices >= 0 ? ".indices" : ".attributes.POSITION"));
+    if (!mesh.indices.empty() && !coversArea(mesh)) {
+      const size_t triangles = mesh.indices.size() / 3;
+      file_.warn(field + (triangles == 1 ? ": its triangle has" : ": its " + std::to_string(triangles) +
+                                                                      " triangles all have") +
+                 " zero area (repeated indices, or positions in one point or line): it draws nothing");
+    }
     if (!hasNormals) {
       makeFlatNormals(mesh);
     } else {

@@ -310,3 +310,30 @@ TEST_CASE("json: a NUL byte in a scene or glTF file is refused, a GLB JSON chunk
   CHECK(err.text() == padded + ": the JSON chunk is padded with NUL bytes, read as the spaces the specification asks "
                                "for (--strict refuses it)\n");
 }
+
+TEST_CASE("gltf undrawn: a primitive whose triangles all have zero area is named: it draws nothing") {
+  const TempDir dir;
+  // The quad's four corners on one line (x = y, z = 0), then its indices all one vertex.
+  GltfBuilder line = pbr::test::quadModel();
+  const int position = line.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+  const std::vector<float> colinear = {-1, -1, 0, 0, 0, 0, 1, 1, 0, 2, 2, 0};
+  line.doc["accessors"][position]["bufferView"] = line.addView(colinear.data(), colinear.size() * sizeof(float));
+  line.doc["accessors"][position]["min"] = {-1, -1, 0};
+  line.doc["accessors"][position]["max"] = {2, 2, 0};
+  std::string path = line.writeGltf(dir.path(), "line");
+  {
+    CapturedStderr err;
+    pbr::Scene scene;
+    pbr::appendGltf(scene, path);
+    CHECK(err.text() == path + ": meshes[0].primitives[0]: its 2 triangles all have zero area (repeated indices, or "
+                               "positions in one point or line): it draws nothing\n");
+  }
+  GltfBuilder point = pbr::test::quadModel();
+  point.doc["meshes"][0]["primitives"][0]["indices"] = point.addIndices({2, 2, 2});
+  path = point.writeGltf(dir.path(), "point");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  CHECK(err.text() == path + ": meshes[0].primitives[0]: its triangle has zero area (repeated indices, or positions "
+                             "in one point or line): it draws nothing\n");
+}

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -266,3 +267,34 @@ TEST_CASE("hostile outputs: a render ended by SIGTERM leaves no temporary behind
   CHECK(entries(folder).empty());
 }
 
+
+TEST_CASE("render notes: a scene wholly out of view and a frame that clips to white are named") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  // A floor filling the view from above, lit by a sun; then the same floor 500 m behind the camera.
+  const auto scene = [&](const std::string& name, double floorY) {
+    return dir.write(name, R"({"camera": {"position": [0, 3, 0], "target": [0, 0, 0], "up": [0, 0, -1]},
+      "objects": [{"shape": "plane", "transform": {"translate": [0, )" + std::to_string(floorY) + R"(, 0], "scale": 40}}],
+      "lights": [{"type": "directional", "direction": [0, -1, 0], "illuminance_lux": 2}]})");
+  };
+  const auto notesOf = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"render", "--size", "32x18", "--frames", "1", "--warmup", "0"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Run run = runPbr(dir, args);
+    CHECK(run.exitCode == 0);
+    std::vector<std::string> notes;
+    std::istringstream lines(run.out);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("note: ", 0) == 0) notes.push_back(line);
+    }
+    return notes;
+  };
+  const std::string floor = scene("floor.json", 0.0);
+  CHECK(notesOf({"--scene", floor, "--out", dir.file("a.png")}).empty());
+  CHECK(notesOf({"--scene", floor, "--exposure", "1e6", "--out", dir.file("b.png")}) ==
+        std::vector<std::string>{"note: 100.0% of the frame clips to white: an exposure of 1e+06 is too high for this "
+                                 "scene (--exposure, --ev100)"});
+  CHECK(notesOf({"--scene", scene("behind.json", 500.0)}) ==
+        std::vector<std::string>{"note: no object of the scene lies in the camera's view (between its near and far "
+                                 "planes): the frame shows the background alone"});
+}
