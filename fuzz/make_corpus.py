@@ -198,8 +198,31 @@ def texture_seeds(project, assets, out):
                                    palette=bytes(range(48))))
     for webp in sorted(assets.rglob("*.webp")):
         write(out, webp.name, webp.read_bytes())
+    # Formats stb_image reads but textures may not be (decodeImage refuses them by their signature): the fuzzer
+    # mutates from each, so that a mutant still starting like one keeps testing the refusal.
+    for name, data in other_image_formats():
+        write(out, name, data)
     for jpeg in sorted(assets.rglob("*.jpg")):
         write(out, jpeg.stem + "-corner.jpg", jpeg_corner(jpeg.read_bytes()))
+
+
+def other_image_formats():
+    """Small images (2x2, the GIF 1x1) in Radiance RGBE, BMP, GIF, TGA, binary PPM and PSD, written by hand."""
+    rgb = bytes([255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255])
+    rows = [rgb[0:6], rgb[6:12]]
+    bmp_rows = b"".join(bytes(b for i in range(0, 6, 3) for b in r[i:i + 3][::-1]) + b"\0\0" for r in reversed(rows))
+    bmp = (b"BM" + struct.pack("<IHHI", 14 + 40 + len(bmp_rows), 0, 0, 54) +
+           struct.pack("<IiiHHIIiiII", 40, 2, 2, 1, 24, 0, len(bmp_rows), 2835, 2835, 0, 0) + bmp_rows)
+    gif = (b"GIF89a" + struct.pack("<HHBBB", 1, 1, 0x80, 0, 0) + bytes([0, 0, 0, 255, 255, 255]) +
+           b"," + struct.pack("<HHHHB", 0, 0, 1, 1, 0) + bytes([2, 2, 0x44, 0x01, 0]) + b";")
+    tga = struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, 2, 2, 24, 0x20) + b"".join(
+        bytes(r[i:i + 3][::-1]) for r in rows for i in range(0, 6, 3))
+    ppm = b"P6\n2 2\n255\n" + rgb
+    planes = b"".join(bytes(rgb[p::3]) for p in range(3))
+    psd = (b"8BPS" + struct.pack(">H6xHIIHH", 1, 3, 2, 2, 8, 3) + struct.pack(">III", 0, 0, 0) +
+           struct.pack(">H", 0) + planes)
+    hdr = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n" + bytes([128, 0, 0, 129] * 4)
+    return [("red.hdr", hdr), ("rgb.bmp", bmp), ("one.gif", gif), ("rgb.tga", tga), ("rgb.ppm", ppm), ("rgb.psd", psd)]
 
 
 def jpeg_corner(data, size=32, scan_bytes=4096):
