@@ -1,5 +1,10 @@
 #include "renderer/scene_resources.hpp"
 
+#include <stdexcept>
+#include <string>
+
+#include "core/gl.hpp"
+
 namespace pbr {
 
 namespace {
@@ -9,6 +14,17 @@ std::unique_ptr<IblMaps> makeIbl(const ShaderLibrary& shaders, const Scene& scen
   const EnvironmentDesc& e = *scene.environment;
   const Environment environment = e.file.empty() ? Environment::sky(e.sky, e.intensity, e.rotationDeg)
                                                  : Environment::fromHdrFile(e.file, e.intensity, e.rotationDeg);
+  // The picture is uploaded whole as one texture: a side past the context's limit is named before the upload.
+  if (!environment.isSky()) {
+    GLint limit = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limit);
+    const ImageRgbaF& image = environment.equirect();
+    if (image.width > limit || image.height > limit) {
+      throw std::runtime_error(e.file + ": " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                               " pixels, over the OpenGL limit of " + std::to_string(limit) +
+                               " pixels a side (GL_MAX_TEXTURE_SIZE)");
+    }
+  }
   return std::make_unique<IblMaps>(shaders, environment, IblSettings{}, profiler);
 }
 

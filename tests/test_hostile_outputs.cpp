@@ -188,6 +188,20 @@ TEST_CASE("hostile outputs: the driver is asked about each target's format befor
   }
 }
 
+TEST_CASE("hostile outputs: an environment wider than the context's textures fails naming the file and the limit") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  // 16385 flat pixels of one row: readable, but one pixel past llvmpipe's 16384 a side.
+  std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16385\n";
+  for (int i = 0; i < 16385; ++i) hdr += std::string("\x80\x80\x80\x81", 4);
+  const std::string wide = dir.write("wide.hdr", hdr);
+  const Run run = runPbr(dir, tinyRender({"--environment", wide}));
+  CHECK(run.exitCode == 1);
+  checkOneLineNaming(run, wide + ": 16385x1 pixels, over the OpenGL limit of");
+  CHECK(run.err.find("GL_MAX_TEXTURE_SIZE") != std::string::npos);
+  checkNotRendered(run);
+}
+
 TEST_CASE("hostile outputs: a directory as an environment fails with exit 1 naming it") {
   PBR_REQUIRE_GL();
   const TempDir dir;
