@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,11 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "pbr %s: %s (see 'pbr %s --help')\n", c.name, pbr::oneLine(e.what()).c_str(), c.name);
       return 2;
+    } catch (const std::filesystem::filesystem_error& e) {
+      // The library's text ("filesystem error: status: ... [path]") said as the other errors are: the file first.
+      std::fprintf(stderr, "pbr %s: %s: %s\n", c.name, pbr::oneLine(e.path1().string()).c_str(),
+                   e.code().message().c_str());
+      return 1;
     } catch (const pbr::ContextError& e) {
       std::fprintf(stderr, "pbr %s: no OpenGL 4.5 context: %s\n", c.name, pbr::oneLine(e.what()).c_str());
       return 3;

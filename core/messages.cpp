@@ -1,5 +1,6 @@
 #include "core/messages.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -8,9 +9,22 @@
 namespace pbr {
 
 std::string oneLine(const std::string& text) {
-  std::string line = text;
-  for (char& c : line) {
+  std::string joined = text;
+  for (char& c : joined) {
     if (c == '\n' || c == '\r') c = ' ';
+  }
+  // A word over 240 characters (a path of thousands) keeps its ends, so that the reason after it still shows.
+  constexpr size_t kMaxWord = 240, kKept = 100;
+  std::string line;
+  for (size_t start = 0; start < joined.size();) {
+    const size_t end = std::min(joined.find(' ', start), joined.size());
+    if (end - start > kMaxWord) {
+      line += joined.substr(start, kKept) + "..." + joined.substr(end - kKept, kKept);
+    } else {
+      line += joined.substr(start, end - start);
+    }
+    if (end < joined.size()) line += ' ';
+    start = end + 1;
   }
   constexpr size_t kMaxChars = 400;
   if (line.size() > kMaxChars) line = line.substr(0, kMaxChars - 3) + "...";

@@ -128,11 +128,15 @@ TEST_CASE("hostile arguments: an unreadable scene and an output folder a file is
       {tinyRender({"--scene", "/proc/self/mem"}), "pbr render: /proc/self/mem: cannot read: Input/output error"},
       {{"experiment", "fresnel", "--out", file}, "pbr experiment: --out " + file +
                                                      ": cannot make the folder: Not a directory"},
+      // A name of 5,000 characters: the system's reason, the name's ends kept and the line short.
+      {tinyRender({"--scene", std::string(5000, 'a')}),
+       "pbr render: " + std::string(100, 'a') + "..." + std::string(100, 'a') + ": File name too long"},
   };
   for (const auto& [args, line] : cases) {
     CAPTURE(line);
     const Run run = runPbr(dir, args);
     CHECK(run.exitCode == 1);
     CHECK(run.err == line + "\n");
+    CHECK(run.err.size() < 300);
   }
 }
