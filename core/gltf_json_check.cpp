@@ -66,6 +66,8 @@ class Checker {
 
   void run() {
     if (!doc_.is_object()) fail("top level", "must be a JSON object (got " + quoteJson(doc_) + ")");
+    // What the specification requires and tinygltf refuses in its own words, naming no path: named here first.
+    if (!doc_.contains("asset")) fail("asset", "is required (an object with the glTF version)");
     checkBuffers();
     checkBufferViews();
     checkAccessors();
@@ -84,6 +86,7 @@ class Checker {
     const std::vector<const json*> skins = objects(doc_, "skins", "skins");
     for (std::size_t i = 0; i < skins.size(); ++i) {
       const std::string field = item("skins", i);
+      if (!skins[i]->contains("joints")) fail(field + ".joints", "is required (the skin's joint nodes)");
       indexArray(*skins[i], "joints", field, "nodes");
       index(*skins[i], "skeleton", field, "nodes");
       index(*skins[i], "inverseBindMatrices", field, "accessors");
@@ -379,6 +382,7 @@ class Checker {
       const std::string field = item("images", i);
       index(*image, "bufferView", field, "bufferViews");
       const auto uri = image->find("uri");
+      if (uri == image->end() && !image->contains("bufferView")) fail(field, "needs a uri or a bufferView");
       if (uri == image->end()) continue;
       if (!uri->is_string()) fail(field + ".uri", "must be a string (got " + quoteJson(*uri) + ")");
       const std::string& text = uri->get_ref<const std::string&>();
@@ -477,6 +481,7 @@ class Checker {
     for (std::size_t i = 0; i < lights.size(); ++i) {
       const json& light = *lights[i];
       const std::string field = item("extensions.KHR_lights_punctual.lights", i);
+      if (!light.contains("type")) fail(field + ".type", "is required (\"point\", \"spot\" or \"directional\")");
       typed(light, "type", field, &json::is_string, "a string");
       extensionNumbers(light, "color", field, 3);
       extensionNumbers(light, "intensity", field);
@@ -552,9 +557,16 @@ class Checker {
       const json* mesh = meshs[i];
       const std::string field = item("meshes", i);
       const std::vector<const json*> primitives = objects(*mesh, "primitives", field + ".primitives");
+      // Empty, which the specification forbids, is what three.js draws as nothing: tolerated with a warning.
+      if (primitives.empty() && context_.policy.strict) fail(field + ".primitives", "is required (at least one)");
+      if (primitives.empty()) {
+        warnOnce(context_.path + ": " + field + ".primitives: none (the specification asks for at least one): the "
+                 "mesh draws nothing (--strict refuses it)");
+      }
       for (std::size_t p = 0; p < primitives.size(); ++p) {
         const json* primitive = primitives[p];
         const std::string name = field + "." + item("primitives", p);
+        if (!primitive->contains("attributes")) fail(name + ".attributes", "is required (at least POSITION)");
         attributes(*primitive, "attributes", name);
         index(*primitive, "indices", name, "accessors");
         index(*primitive, "material", name, "materials");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -336,4 +337,49 @@ TEST_CASE("gltf undrawn: a primitive whose triangles all have zero area is named
   pbr::appendGltf(scene, path);
   CHECK(err.text() == path + ": meshes[0].primitives[0]: its triangle has zero area (repeated indices, or positions "
                              "in one point or line): it draws nothing\n");
+}
+
+TEST_CASE("gltf errors: required objects tinygltf refused in its own words are named by their path") {
+  const TempDir dir;
+  const auto errorOf = [&](const std::function<void(GltfBuilder&)>& change, const std::string& name) -> std::string {
+    GltfBuilder b = pbr::test::quadModel();
+    change(b);
+    const std::string path = b.writeGltf(dir.path(), name);
+    try {
+      pbr::Scene scene;
+      pbr::appendGltf(scene, path);
+    } catch (const pbr::SceneError& e) {
+      const std::string message = e.what();
+      CHECK(message.rfind(path + ": ", 0) == 0);
+      return message.substr(path.size() + 2);
+    }
+    return "";
+  };
+  CHECK(errorOf([](GltfBuilder& b) { b.doc.erase("asset"); }, "asset") ==
+        "asset: is required (an object with the glTF version)");
+  CHECK(errorOf([](GltfBuilder& b) { b.doc["images"] = {json::object()}; }, "image") ==
+        "images[0]: needs a uri or a bufferView");
+  CHECK(errorOf([](GltfBuilder& b) { b.doc["skins"] = {json::object()}; }, "skin") ==
+        "skins[0].joints: is required (the skin's joint nodes)");
+  CHECK(errorOf([](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0].erase("attributes"); }, "attributes") ==
+        "meshes[0].primitives[0].attributes: is required (at least POSITION)");
+  CHECK(errorOf(
+            [](GltfBuilder& b) {
+              b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+              b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {json::object()};
+            },
+            "light") == "extensions.KHR_lights_punctual.lights[0].type: is required (\"point\", \"spot\" or "
+                        "\"directional\")");
+  // A mesh without primitives draws nothing, as three.js draws it, said in a warning; --strict refuses it.
+  GltfBuilder empty = pbr::test::quadModel();
+  empty.doc["meshes"].push_back({{"primitives", json::array()}});
+  empty.doc["nodes"].push_back({{"mesh", 1}});
+  empty.doc["scenes"][0]["nodes"].push_back(1);
+  const std::string path = empty.writeGltf(dir.path(), "empty");
+  CapturedStderr err;
+  pbr::Scene scene;
+  pbr::appendGltf(scene, path);
+  CHECK(scene.objects.size() == 1);
+  CHECK(err.text() == path + ": meshes[1].primitives: none (the specification asks for at least one): the mesh draws "
+                             "nothing (--strict refuses it)\n");
 }
