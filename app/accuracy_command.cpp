@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "renderer/display_image.hpp"
+#include "renderer/frame_limits.hpp"
 #include "app/accuracy/accuracy_metrics.hpp"
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/args.hpp"
@@ -183,6 +184,9 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::vector<std::string> sceneSpecs = splitList(args.get("--scenes"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
   const glm::ivec2 size = args.getSize("--size");
+  // The reference frames at --size (40 bytes a pixel, as pbr reference holds them) before any is traced; the GPU
+  // frames are checked by their renderer.
+  checkFrameSize(size.x, size.y, "--size", 40, {kMaxSizeSide, availableMemoryBytes()});
   PairCostSettings cost;
   cost.size = args.getSize("--pair-size");
   cost.sizeOption = "--pair-size";

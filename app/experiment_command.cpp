@@ -16,7 +16,8 @@ namespace {
 const std::vector<OptionSpec>& experimentOptions() {
   static const std::vector<OptionSpec> specs = {
       {"--out", "DIR", "folder for the images, NAME.csv and the chart NAME.png", "out/experiments", ""},
-      {"--size", "WxH", "frame size", sizeText({640, 360}), ""},
+      {"--size", "WxH", "frame size (fresnel: made odd, one pixel more or, at 16384, one less)", sizeText({640, 360}),
+       ""},
       {"--frames", "K", "triangles: timed frames per configuration after one warm-up", "5", ""},
       eglPlatformOption(),
   };

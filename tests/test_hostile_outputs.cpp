@@ -160,6 +160,12 @@ TEST_CASE("hostile outputs: a frame larger than the limits fails before renderin
   CHECK(reference.exitCode == 1);
   checkOneLineNaming(reference, "--size 16384x16384: the frame needs about 10.7 GB (40 bytes per pixel)");
   CHECK_FALSE(fs::exists(dir.file("r.pfm")));
+  // pbr accuracy traces its reference frames at --size too (it failed with std::bad_alloc).
+  const Run accuracy = runPbr(dir, {"accuracy", "--variants", "exact", "--scenes", "sphere-grid", "--size",
+                                    "16384x16384", "--no-cost", "--out-dir", dir.file("acc2")},
+                              "ulimit -v 6000000; ");
+  CHECK(accuracy.exitCode == 1);
+  checkOneLineNaming(accuracy, "--size 16384x16384: the frame needs about 10.7 GB (40 bytes per pixel)");
 #endif
 }
 

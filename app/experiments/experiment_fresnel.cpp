@@ -18,7 +18,10 @@ double centreRadiance(const ImageRgbaF& hdr) { return hdr.at(hdr.width / 2, hdr.
 }  // namespace
 
 ExperimentResult runFresnelExperiment(const ShaderLibrary& shaders, glm::ivec2 requested) {
-  const glm::ivec2 size(requested.x | 1, requested.y | 1);
+  // Odd sides: one pixel more, or one less where that would pass the largest side --size takes (16384), so that
+  // the frame stays within what was asked to be allowed.
+  const auto odd = [](int side) { return side % 2 == 1 ? side : side < 16384 ? side + 1 : side - 1; };
+  const glm::ivec2 size(odd(requested.x), odd(requested.y));
   ExperimentResult result;
   result.chartTitle = "Floor specular at the mirror direction: L / (I att) (PBR), L / att (Blinn-Phong)";
   result.yLabel = "reflected radiance per unit incident light";
