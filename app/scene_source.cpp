@@ -83,8 +83,9 @@ void applyCameraOption(const Args& args, Scene& scene) {
 }
 
 OptionSpec environmentOption() {
-  return {"--environment", "F.hdr|sky|none",
-          "image-based lighting (PBR) and background from a Radiance .hdr or the procedural sky, or none, replacing "
+  return {"--environment", "F.hdr|F.exr|sky|none",
+          "image-based lighting (PBR) and background from a Radiance .hdr or OpenEXR .exr picture or the procedural "
+          "sky, or none, replacing "
           "the scene's environment", "",
           "the scene file's; a glTF model, or a scene file that places models and has no \"environment\", gets the "
           "sky"};

@@ -173,6 +173,30 @@ def hdr_seeds(assets, out):
         write(out, picture.stem + "-rows.hdr", data[:header_end] + resolution + data[line_end:pos])
     header = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n"
     write(out, "flat.hdr", header + bytes(range(64)))
+    write(out, "half.exr", openexr(4, 4, 1))
+    write(out, "float.exr", openexr(4, 4, 2))
+
+
+def openexr(width, height, pixel_type):
+    """An uncompressed single-part scanline OpenEXR picture of B, G and R channels (1 half, 2 float), written by
+    hand: the magic number, version 2, the required attributes, the offset table and one block a scanline."""
+    def attribute(name, kind, value):
+        return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value)) + value
+    channels = b"".join(c + b"\0" + struct.pack("<iBxxxii", pixel_type, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    box = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    header = (struct.pack("<ii", 20000630, 2) + attribute(b"channels", b"chlist", channels) +
+              attribute(b"compression", b"compression", b"\0") + attribute(b"dataWindow", b"box2i", box) +
+              attribute(b"displayWindow", b"box2i", box) + attribute(b"lineOrder", b"lineOrder", b"\0") +
+              attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0)) +
+              attribute(b"screenWindowCenter", b"v2f", struct.pack("<ff", 0.0, 0.0)) +
+              attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0)) + b"\0")
+    size = 2 if pixel_type == 1 else 4
+    row_bytes = 3 * width * size
+    first = len(header) + 8 * height
+    offsets = b"".join(struct.pack("<Q", first + y * (8 + row_bytes)) for y in range(height))
+    value = struct.pack("<e", 0.5) if pixel_type == 1 else struct.pack("<f", 0.5)
+    blocks = b"".join(struct.pack("<ii", y, row_bytes) + value * (3 * width) for y in range(height))
+    return header + offsets + blocks
 
 
 def png(width, height, colour_type, depth, rows, palette=None):

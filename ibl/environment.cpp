@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "ibl/radiance_hdr.hpp"
+#include "ibl/openexr_image.hpp"
 
 namespace pbr {
 
@@ -43,7 +43,7 @@ Environment::Environment(std::optional<ImageRgbaF> equirect, const SkyParams& sk
 }
 
 Environment Environment::fromHdrFile(const std::string& path, float intensity, float rotationDeg) {
-  return fromEquirect(readRadianceHdr(path), intensity, rotationDeg);
+  return fromEquirect(readEnvironmentImage(path), intensity, rotationDeg);
 }
 
 Environment Environment::fromEquirect(ImageRgbaF image, float intensity, float rotationDeg) {

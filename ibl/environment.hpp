@@ -14,7 +14,8 @@ namespace pbr {
 // +Z lies towards +X).
 class Environment {
  public:
-  // A Radiance .hdr file (readRadianceHdr); throws std::runtime_error naming the file when it cannot be used.
+  // A Radiance .hdr or OpenEXR .exr file (readEnvironmentImage); throws std::runtime_error naming the file when it
+  // cannot be used.
   static Environment fromHdrFile(const std::string& path, float intensity = 1.0f, float rotationDeg = 0.0f);
   // Equirectangular radiance: rows from the top (+Y) to the bottom (-Y); the centre column looks along -Z, the
   // column at 3/4 of the width along +X.

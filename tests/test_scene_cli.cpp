@@ -65,7 +65,7 @@ TEST_CASE("cli: --environment none takes a model's default sky away, and the ref
   for (const std::string command : {"render", "view"}) {
     CAPTURE(command);
     const PbrRun help = runPbr(dir, {command, "--help"});
-    CHECK(help.out.find("--environment F.hdr|sky|none") != std::string::npos);
+    CHECK(help.out.find("--environment F.hdr|F.exr|sky|none") != std::string::npos);
     // Refused before a context or a window is made.
     const PbrRun run =
         runPbr(dir, {command, "--scene", box, "--environment", "none", "--environment-intensity", "2"});

@@ -24,7 +24,9 @@ std::vector<std::string> hdrFiles(const std::string& folder) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     std::error_code unreadable;  // a broken link is left out, and the listing goes on
-    if (extension == ".hdr" && it->is_regular_file(unreadable)) files.push_back(it->path().string());
+    if ((extension == ".hdr" || extension == ".exr") && it->is_regular_file(unreadable)) {
+      files.push_back(it->path().string());
+    }
   }
   std::sort(files.begin(), files.end());
   return files;

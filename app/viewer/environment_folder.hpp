@@ -11,7 +11,8 @@ namespace pbr {
 // scene's .hdr, else the shared asset folder's environments/.
 std::string environmentFolder(const std::string& chosen, const std::optional<EnvironmentDesc>& current);
 
-// The Radiance images (.hdr, any case) directly in `folder`, as paths, sorted; none when it cannot be read.
+// The environment pictures (Radiance .hdr and OpenEXR .exr, any case) directly in `folder`, as paths, sorted; none
+// when it cannot be read.
 std::vector<std::string> hdrFiles(const std::string& folder);
 
 }  // namespace pbr

@@ -1,0 +1,95 @@
+// OpenEXR environments (ibl/openexr_image.*): the same radiance as an .exr and as an .hdr lights a frame alike,
+// and a damaged, oversized or non-finite file is named in one line.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "core/assets.hpp"
+#include "core/builtin_scenes.hpp"
+#include "ibl/openexr_image.hpp"
+#include "ibl/radiance_hdr.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+#include "tests/render_util.hpp"
+
+using pbr::test::TempDir;
+
+namespace {
+
+std::string errorOf(const std::string& path) {
+  try {
+    pbr::readEnvironmentImage(path);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("ibl exr: an environment written as OpenEXR lights the frame as its Radiance file does") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string hdr = pbr::assetPath("environments/venice_sunset_1k.hdr");
+  const pbr::ImageRgbaF radiance = pbr::readRadianceHdr(hdr);
+  // Float32 planes: the same values, read back through tinyexr.
+  const std::string exr = dir.file("venice.exr");
+  pbr::writeHdr(exr, radiance);
+  const pbr::ImageRgbaF read = pbr::readEnvironmentImage(exr);
+  REQUIRE(read.width == radiance.width);
+  REQUIRE(read.height == radiance.height);
+  CHECK(read.pixels == radiance.pixels);
+  // Chosen by the magic number whatever the name: an OpenEXR file named .hdr is read as OpenEXR.
+  const std::string misnamed = dir.write("venice-exr.hdr", pbr::test::readFile(exr));
+  CHECK(pbr::readEnvironmentImage(misnamed).pixels == radiance.pixels);
+
+  pbr::Scene scene = pbr::makeBuiltinScene("helmet");
+  scene.environment = pbr::EnvironmentDesc{};
+  scene.environment->file = hdr;
+  const pbr::test::RenderedFrame fromHdr = pbr::test::renderScene(scene, {96, 54}, {});
+  scene.environment->file = exr;
+  const pbr::test::RenderedFrame fromExr = pbr::test::renderScene(scene, {96, 54}, {});
+  CHECK(fromExr.hdr.pixels == fromHdr.hdr.pixels);
+}
+
+TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in one line") {
+  const TempDir dir;
+  pbr::ImageRgbaF image{4, 2, std::vector<float>(32, 0.25f)};
+  image.pixels[0] = -1.0f;
+  image.pixels[5] = std::numeric_limits<float>::quiet_NaN();
+  image.pixels[10] = std::numeric_limits<float>::infinity();
+  const std::string path = dir.file("odd.exr");
+  pbr::writeHdr(path, image);
+  {
+    pbr::test::CapturedStderr err;
+    const pbr::ImageRgbaF read = pbr::readEnvironmentImage(path);
+    CHECK(read.pixels[0] == 0.0f);
+    CHECK(read.pixels[5] == 0.0f);
+    CHECK(read.pixels[10] == 0.0f);
+    CHECK(read.pixels[1] == 0.25f);
+    CHECK(err.text() == path + ": 3 channel values negative, NaN or infinite, read as 0 (an environment's radiance "
+                               "is finite and at least 0)\n");
+  }
+  const std::string bytes = pbr::test::readFile(path);
+  // Cut inside the pixel data, and inside the header.
+  const std::string cut = dir.write("cut.exr", bytes.substr(0, bytes.size() - 20));
+  const std::string message = errorOf(cut);
+  CHECK(message.rfind(cut + ": cannot decode the OpenEXR image: ", 0) == 0);
+  CHECK(message.find('\n') == std::string::npos);
+  const std::string header = dir.write("header.exr", bytes.substr(0, 40));
+  CHECK(errorOf(header).rfind(header + ": damaged OpenEXR header: ", 0) == 0);
+  // A data window of 40000 x 2 declared in an otherwise valid file: refused before tinyexr allocates.
+  std::string wide = bytes;
+  const size_t window = wide.find("dataWindow");
+  REQUIRE(window != std::string::npos);
+  const size_t maxX = window + std::string("dataWindow").size() + 1 + std::string("box2i").size() + 1 + 4 + 8;
+  const int32_t x = 39999;
+  wide.replace(maxX, 4, std::string(reinterpret_cast<const char*>(&x), 4));
+  const std::string widePath = dir.write("wide.exr", wide);
+  CHECK(errorOf(widePath) == widePath + ": OpenEXR image size 40000x2 out of range (at most 32767 a side)");
+  const std::string notExr = dir.write("plain.exr", "not an image");
+  CHECK(errorOf(notExr) == notExr + ": not an OpenEXR file (no EXR magic number)");
+}
