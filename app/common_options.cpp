@@ -62,6 +62,17 @@ OptionSpec transparencyOption() {
 
 Transparency readTransparency(const Args& args) { return parseTransparency(args.get("--transparency")); }
 
+OptionSpec toneMapOption() {
+  return {"--tonemap", "CURVE",
+          std::string("the PBR display transform's tone curve after exposure: ") + toneCurveNames() +
+              " (aces-hill: Hill's ACES fit, the study's curve; aces-narkowicz: Narkowicz's fit; khronos-neutral: "
+              "Khronos PBR Neutral, glTF-Sample-Viewer's default; reinhard: white point 4; exponential: 1 - e^-x, "
+              "the seeds'; linear: a clamp)",
+          toString(ToneCurve::AcesHill), ""};
+}
+
+ToneCurve readToneCurve(const Args& args) { return parseToneCurve(args.get("--tonemap")); }
+
 void applySceneShapeOptions(const Args& args, SceneParams& params) {
   if (args.has("--lights")) params.lights = args.getInt("--lights", 0, 1 << 20);
   if (args.has("--view-angle")) params.viewAngleDeg = args.getFloat("--view-angle", 0.0f, 89.0f);

@@ -5,6 +5,7 @@
 #include "core/blended_surfaces.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/shadow_maps.hpp"
+#include "post/tone_curve.hpp"
 
 namespace pbr {
 
@@ -22,6 +23,8 @@ ShadowSettings readShadowSettings(const Args& args);
 
 OptionSpec transparencyOption();  // --transparency sorted|oit
 Transparency readTransparency(const Args& args);
+OptionSpec toneMapOption();  // --tonemap aces-hill|...
+ToneCurve readToneCurve(const Args& args);
 
 // `--lights` and `--view-angle` into the scene parameters, where given.
 void applySceneShapeOptions(const Args& args, SceneParams& params);

@@ -51,6 +51,7 @@ const std::vector<OptionSpec>& renderOptions() {
       shadowModeOption(),
       shadowFilterOption(),
       transparencyOption(),
+      toneMapOption(),
       shadowAtlasOption(),
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
@@ -300,9 +301,15 @@ int runRender(const std::vector<std::string>& argv) {
   // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
   const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
                                                                   : std::string(toString(aa));
-  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s\n", scene.name.c_str(), size.x, size.y,
-              scene.lights.size(), directional.c_str(), toString(model),
-              (" (" + describeTerms(model, variant) + ")").c_str(), toString(culling), shownAa.c_str());
+  const ToneCurve curve = readToneCurve(args);
+  if (model != ShadingModel::Pbr && args.has("--tonemap")) {
+    throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
+  }
+  const std::string shownCurve = model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(curve)) : "";
+  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s%s\n", scene.name.c_str(), size.x,
+              size.y, scene.lights.size(), directional.c_str(), toString(model),
+              (" (" + describeTerms(model, variant) + ")").c_str(), toString(culling), shownAa.c_str(),
+              shownCurve.c_str());
 
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(timing, info.renderer));
@@ -320,7 +327,7 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows, readTransparency(args)};
+  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows, readTransparency(args), curve};
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));

@@ -29,6 +29,7 @@ const std::vector<OptionSpec>& viewOptions() {
       shadowModeOption(),
       shadowFilterOption(),
       transparencyOption(),
+      toneMapOption(),
       shadowAtlasOption(),
       {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
        toString(kDisplayAntiAliasing), ""},
@@ -93,6 +94,7 @@ int runView(const std::vector<std::string>& argv) {
   options.frame.aa = parseAntiAliasing(args.get("--aa"));
   options.frame.shadows = readShadowSettings(args);
   options.frame.transparency = readTransparency(args);
+  options.frame.toneCurve = readToneCurve(args);
   options.size = args.getSize("--size");
   options.paused = args.has("--paused");
   const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;

@@ -1,12 +1,20 @@
 #include "post/post_pass.hpp"
 
-
 namespace pbr {
+
+const Program& PostPass::program(ToneCurve curve) {
+  ShaderDefines defines = bindingDefines({kPostUbo});
+  for (const ToneCurve c : {ToneCurve::AcesHill, ToneCurve::AcesNarkowicz, ToneCurve::KhronosNeutral,
+                            ToneCurve::Reinhard, ToneCurve::Exponential, ToneCurve::Linear}) {
+    defines.push_back({toneCurveDefine(c), c == curve ? "1" : "0"});
+  }
+  return programs_.compute("post/post.comp", defines);
+}
 
 void PostPass::render(const Texture& hdr, const Texture& ldr, const PostSettings& settings) {
   block_.update({settings.exposure, settings.toneMap ? 1u : 0u,
                  glm::uvec2(static_cast<unsigned>(ldr.width()), static_cast<unsigned>(ldr.height()))});
-  program_.use();
+  program(settings.curve).use();
   block_.bind(kPostUbo.index);
   glBindTextureUnit(0, hdr.id());
   glBindImageTexture(0, ldr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);

@@ -4,6 +4,7 @@
 #include "core/binding_table.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
+#include "post/tone_curve.hpp"
 
 namespace pbr {
 
@@ -18,20 +19,23 @@ static_assert(sizeof(PostBlock) == 16, "PostBlock must match its std140 layout")
 struct PostSettings {
   float exposure = 1.0f;
   bool toneMap = true;  // false for LDR frames: clamp + sRGB only
+  ToneCurve curve = ToneCurve::AcesHill;
 };
 
 // The post pass's settings block, one binding point for C++ and GLSL.
 constexpr BindingPoint kPostUbo{"POST_UBO", BindingKind::UniformBuffer, 3};
 
 // HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
+// A permutation per tone curve, each compiled when a frame first asks for it.
 class PostPass {
  public:
-  explicit PostPass(ProgramCache& programs)
-      : program_(programs.compute("post/post.comp", bindingDefines({kPostUbo}))) {}
+  explicit PostPass(ProgramCache& programs) : programs_(programs) { program(ToneCurve::AcesHill); }
   void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
 
  private:
-  const Program& program_;
+  const Program& program(ToneCurve curve);
+
+  ProgramCache& programs_;
   UniformBuffer<PostBlock> block_{"post.block"};
 };
 

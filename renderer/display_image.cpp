@@ -10,7 +10,7 @@
 
 namespace pbr {
 
-ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure) {
+ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure, ToneCurve curve) {
   const int w = radiance.width, h = radiance.height;
   ProgramCache programs(shaders);
   PostPass post(programs);
@@ -29,7 +29,7 @@ ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance
          glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
          glTextureSubImage2D(hdr.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, flipped.data());
        }},
-      {"post", {R::Radiance}, {R::Display}, [&] { post.render(hdr, ldr, {exposure, true}); }},
+      {"post", {R::Radiance}, {R::Display}, [&] { post.render(hdr, ldr, {exposure, true, curve}); }},
       {"readback", {R::Display}, {R::Capture}, [&] { out = readbackRgba8(ldr); }},
   };
   checkPassList(passes);

@@ -1,12 +1,14 @@
 #pragma once
 #include "core/image.hpp"
 #include "core/shader_library.hpp"
+#include "post/tone_curve.hpp"
 
 namespace pbr {
 
 // A radiance image made elsewhere (the CPU reference) through the frame's own display passes: upload -> post
-// (exposure, ACES, sRGB) -> read-back, so that it and a rendered frame reach 8 bits by the same transform.
-// Needs a current GL context.
-ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure);
+// (exposure, the tone curve, sRGB) -> read-back, so that it and a rendered frame reach 8 bits by the same
+// transform. Needs a current GL context.
+ImageRgba8 displayImage(const ShaderLibrary& shaders, const ImageRgbaF& radiance, float exposure,
+                        ToneCurve curve = ToneCurve::AcesHill);
 
 }  // namespace pbr

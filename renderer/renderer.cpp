@@ -195,7 +195,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (!replacesDisplay) {
     passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
                         const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
-                        scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr});
+                        scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr, options.toneCurve});
                       }});
   }
   if (antiAliased) {

@@ -12,6 +12,7 @@
 #include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/debug_channel.hpp"
+#include "post/tone_curve.hpp"
 #include "renderer/culling_choice.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
@@ -35,6 +36,7 @@ struct FrameOptions {
   AntiAliasing aa = AntiAliasing::None;  // of the display image, before any debug view
   ShadowSettings shadows;                // a frame none of whose lights casts runs no shadow pass
   Transparency transparency = Transparency::Sorted;  // of BLEND surfaces; a frame without any runs no such pass
+  ToneCurve toneCurve = ToneCurve::AcesHill;         // of PBR frames' display transform
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair

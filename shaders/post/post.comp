@@ -1,15 +1,16 @@
 #version 450 core
-// HDR radiance -> display: exposure and ACES for PBR frames, a plain clamp for LDR (Blinn-Phong) frames,
+// HDR radiance -> display: exposure and a tone curve for PBR frames, a plain clamp for LDR (Blinn-Phong) frames,
 // then exact sRGB encoding into RGBA8.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "aces.glsl"
 #include "srgb.glsl"
+#include "tone_curves.glsl"
 
 // Mirrors pbr::PostBlock (post/post_block.hpp).
 layout(std140, binding = POST_UBO) uniform PostBlock {
   float exposure;
-  uint toneMap;  // 1: exposure + ACES, 0: clamp
+  uint toneMap;  // 1: exposure + the tone curve (a TONE_CURVE_* define), 0: clamp
   uvec2 size;
 } post;
 
@@ -20,6 +21,23 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(uvec2(p), post.size))) return;
   vec3 c = texelFetch(hdrIn, p, 0).rgb;
-  c = post.toneMap != 0u ? acesFitted(c * post.exposure) : clamp(c, 0.0, 1.0);
+  if (post.toneMap == 0u) {
+    c = clamp(c, 0.0, 1.0);
+  } else {
+    c *= post.exposure;
+#if TONE_CURVE_ACES_NARKOWICZ
+    c = acesNarkowicz(c);
+#elif TONE_CURVE_KHRONOS_NEUTRAL
+    c = khronosNeutral(c);
+#elif TONE_CURVE_REINHARD
+    c = reinhard(c);
+#elif TONE_CURVE_EXPONENTIAL
+    c = exponentialCurve(c);
+#elif TONE_CURVE_LINEAR
+    c = clamp(c, 0.0, 1.0);
+#else
+    c = acesFitted(c);
+#endif
+  }
   imageStore(ldrOut, p, vec4(srgbEncode(c), 1.0));
 }

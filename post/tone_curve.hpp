@@ -1,0 +1,15 @@
+#pragma once
+#include <string>
+
+namespace pbr {
+
+// The display transform's tone curve for PBR frames (shaders/post/tone_curves.glsl), after exposure and before
+// sRGB encoding. Blinn-Phong frames keep their clamp.
+enum class ToneCurve { AcesHill, AcesNarkowicz, KhronosNeutral, Reinhard, Exponential, Linear };
+
+ToneCurve parseToneCurve(const std::string& name);  // "aces-hill", ...; std::invalid_argument listing the names
+const char* toString(ToneCurve curve);
+const char* toneCurveNames();  // "aces-hill, aces-narkowicz, ...", for help texts
+const char* toneCurveDefine(ToneCurve curve);  // TONE_CURVE_ACES_HILL, ..., the post pass's permutation
+
+}  // namespace pbr
