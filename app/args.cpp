@@ -104,7 +104,8 @@ glm::ivec2 Args::getSize(const std::string& name) const {
   int w = 0, h = 0;
   char x = 0, extra = 0;
   std::istringstream in(s);
-  if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > kMaxSizeSide || h > kMaxSizeSide) {
+  if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > kMaxSizeSide ||
+      h > kMaxSizeSide) {
     throw UsageError(name + " expects WIDTHxHEIGHT with each side in [1, " + std::to_string(kMaxSizeSide) + "], got '" +
                      s + "'");
   }

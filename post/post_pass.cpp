@@ -4,8 +4,7 @@ namespace pbr {
 
 const Program& PostPass::program(ToneCurve curve) {
   ShaderDefines defines = bindingDefines({kPostUbo});
-  for (const ToneCurve c : {ToneCurve::AcesHill, ToneCurve::AcesNarkowicz, ToneCurve::KhronosNeutral,
-                            ToneCurve::Reinhard, ToneCurve::Exponential, ToneCurve::Linear}) {
+  for (const ToneCurve c : kToneCurves) {
     defines.push_back({toneCurveDefine(c), c == curve ? "1" : "0"});
   }
   return programs_.compute("post/post.comp", defines);

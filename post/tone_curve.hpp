@@ -6,6 +6,8 @@ namespace pbr {
 // The display transform's tone curve for PBR frames (shaders/post/tone_curves.glsl), after exposure and before
 // sRGB encoding. Blinn-Phong frames keep their clamp.
 enum class ToneCurve { AcesHill, AcesNarkowicz, KhronosNeutral, Reinhard, Exponential, Linear };
+constexpr ToneCurve kToneCurves[] = {ToneCurve::AcesHill,    ToneCurve::AcesNarkowicz, ToneCurve::KhronosNeutral,
+                                     ToneCurve::Reinhard,    ToneCurve::Exponential,   ToneCurve::Linear};
 
 ToneCurve parseToneCurve(const std::string& name);  // "aces-hill", ...; std::invalid_argument listing the names
 const char* toString(ToneCurve curve);

@@ -285,16 +285,17 @@ TEST_CASE("gltf leniency: camera and spot light objects, accessor bounds and ima
 
 TEST_CASE("json: a NUL byte in a scene or glTF file is refused, a GLB JSON chunk padded with NULs read as spaces") {
   const TempDir dir;
-  const std::string scene = dir.write("nul.json", std::string(R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]}})") +
-                                                      std::string(1, '\0'));
+  const std::string text = R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]}})";
+  const std::string scene = dir.write("nul.json", text + std::string(1, '\0'));
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(scene), (scene + ":1:57: a NUL byte, which JSON text cannot hold").c_str(),
                        pbr::SceneError);
   // The GLB's JSON chunk grows by four NUL bytes.
   const std::string glb = pbr::test::quadModel().writeGlb(dir.path(), "padded");
   std::string bytes = pbr::test::readFile(glb);
   const auto word = [&](size_t at) {
-    return uint32_t(uint8_t(bytes[at])) | uint32_t(uint8_t(bytes[at + 1])) << 8 | uint32_t(uint8_t(bytes[at + 2])) << 16 |
-           uint32_t(uint8_t(bytes[at + 3])) << 24;
+    uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = v << 8 | uint32_t(uint8_t(bytes[at + size_t(i)]));
+    return v;
   };
   const auto setWord = [&](size_t at, uint32_t v) {
     for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = char(v >> (8 * i));

@@ -110,7 +110,8 @@ TEST_CASE("hostile arguments: conflicting or malformed choices are refused namin
       {{"accuracy", "--scenes", "fresnel-floor:abc"},
        "--scenes fresnel-floor:abc: expected NAME or fresnel-floor:DEGREES, the view angle a number (got 'abc')"},
       {{"accuracy", "--scenes", "fresnel-floor:40:2"}, "the view angle a number (got '40:2')"},
-      {{"accuracy", "--scenes", "sphere-grid:40"}, "--scenes sphere-grid:40: a view angle applies only to fresnel-floor"},
+      {{"accuracy", "--scenes", "sphere-grid:40"},
+       "--scenes sphere-grid:40: a view angle applies only to fresnel-floor"},
       {{"view", "--frames", "1", "--env-dir", file}, "--env-dir " + file + ": not a folder"},
   };
   for (const auto& [args, line] : cases) {

@@ -167,9 +167,8 @@ TEST_CASE("ibl hdr: the original format's runs repeat the pixel before them, and
   const TempDir dir;
   // 12x1 flat with runs: (128, 64, 32, 129), then (1, 1, 1, 3): three copies, then (1, 1, 1, 0) after it: 0 << 8
   // more, then one pixel, then (1, 1, 1, 7): seven copies of it. 12 pixels from 4 + 4 + 4 + 4 + 4 bytes.
-  const std::string legacy = writeBytes(
-      dir, "legacy.hdr",
-      hdrFile(12, 1, std::string("\x80\x40\x20\x81\x01\x01\x01\x03\x01\x01\x01\x00\x40\x40\x40\x81\x01\x01\x01\x07", 20)));
+  const std::string pixels("\x80\x40\x20\x81\x01\x01\x01\x03\x01\x01\x01\x00\x40\x40\x40\x81\x01\x01\x01\x07", 20);
+  const std::string legacy = writeBytes(dir, "legacy.hdr", hdrFile(12, 1, pixels));
   const pbr::ImageRgbaF a = pbr::readRadianceHdr(legacy);
   REQUIRE(a.width == 12);
   for (int x = 0; x < 12; ++x) {
@@ -178,11 +177,13 @@ TEST_CASE("ibl hdr: the original format's runs repeat the pixel before them, and
     CHECK(a.pixels[4 * x + 2] == (x < 4 ? 0.25f : 0.5f));
   }
   // A run with no pixel before it, or longer than what is left, is named; so is a side that does not fit.
-  const std::string first = writeBytes(dir, "first.hdr", hdrFile(2, 1, std::string("\x01\x01\x01\x02\x80\x40\x20\x81", 8)));
+  const std::string first =
+      writeBytes(dir, "first.hdr", hdrFile(2, 1, std::string("\x01\x01\x01\x02\x80\x40\x20\x81", 8)));
   checkOneLineNaming(errorOf(first), first, "corrupt Radiance pixel data (a run of 2 pixels where none precedes it)");
   const std::string longRun =
       writeBytes(dir, "long.hdr", hdrFile(3, 1, std::string("\x80\x40\x20\x81\x01\x01\x01\x05", 8)));
   checkOneLineNaming(errorOf(longRun), longRun, "corrupt Radiance pixel data (a run of 5 pixels where 2 are left)");
-  const std::string wrapped = writeBytes(dir, "wrapped.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4294967300 +X 1\nabcd");
+  const std::string wrapped =
+      writeBytes(dir, "wrapped.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4294967300 +X 1\nabcd");
   checkOneLineNaming(errorOf(wrapped), wrapped, "Radiance image size 1x4294967300 out of range (at most 32767 a side)");
 }

@@ -25,11 +25,15 @@ glm::dvec3 clamp01(glm::dvec3 c) { return glm::clamp(c, 0.0, 1.0); }
 // Hill's fit: the sRGB-to-RRT input matrix, the rational fit of the RRT + ODT, the ODT-to-sRGB output matrix
 // (rows as Hill publishes them).
 glm::dvec3 acesHill(glm::dvec3 c) {
-  const double in[3][3] = {{0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
-  const double out[3][3] = {{1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}};
+  const double in[3][3] = {
+      {0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
+  const double out[3][3] = {
+      {1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}};
   glm::dvec3 v;
   for (int r = 0; r < 3; ++r) v[r] = in[r][0] * c.x + in[r][1] * c.y + in[r][2] * c.z;
-  for (int i = 0; i < 3; ++i) v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) / (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
+  for (int i = 0; i < 3; ++i) {
+    v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) / (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
+  }
   glm::dvec3 o;
   for (int r = 0; r < 3; ++r) o[r] = out[r][0] * v.x + out[r][1] * v.y + out[r][2] * v.z;
   return clamp01(o);

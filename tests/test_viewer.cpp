@@ -547,3 +547,19 @@ TEST_CASE("view: --animation plays the glTF animation, each moment the frame the
     CHECK(moved.pixels != previous.pixels);
   }
 }
+
+TEST_CASE("view: T steps through the tone curves, each frame the one pbr render --tonemap gives") {
+  const TempDir dir;
+  const auto viewer = openViewer();
+  if (!viewer) return;
+  const ImageRgba8 hill = show(*viewer);
+  viewer->handleKey(GLFW_KEY_T);
+  CHECK((viewer->frameOptions().toneCurve == pbr::ToneCurve::AcesNarkowicz));
+  viewer->handleKey(GLFW_KEY_T);
+  CHECK((viewer->frameOptions().toneCurve == pbr::ToneCurve::KhronosNeutral));
+  const ImageRgba8 neutral = show(*viewer);
+  CHECK(neutral.pixels != hill.pixels);
+  checkMatches(neutral, headless(dir, kSize, {"--tonemap", "khronos-neutral"}));
+  for (int i = 0; i < 4; ++i) viewer->handleKey(GLFW_KEY_T);
+  CHECK((viewer->frameOptions().toneCurve == pbr::ToneCurve::AcesHill));  // round again
+}

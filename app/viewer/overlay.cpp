@@ -284,6 +284,13 @@ void Overlay::controls(Viewer& viewer) {
     }
   }
 
+  if (f.model == ShadingModel::Pbr && ImGui::BeginCombo("tone curve (T)", toString(f.toneCurve))) {
+    for (const ToneCurve curve : kToneCurves) {
+      if (ImGui::Selectable(toString(curve), f.toneCurve == curve)) viewer.setToneCurve(curve);
+    }
+    ImGui::EndCombo();
+  }
+
   if (ImGui::BeginCombo("debug view", viewName(viewer.view()))) {
     if (ImGui::Selectable("final", !viewer.view())) viewer.setView(std::nullopt);
     for (const DebugChannel channel : kDebugChannels) {

@@ -141,7 +141,7 @@ void Viewer::recordTimings(double frameMs) {
                                     viewName(view_) + std::to_string(lightCount()) + "@" + std::to_string(size.x) +
                                     "x" + std::to_string(size.y) + (f.stats ? " counters " : " ") +
                                     (scene_.environment ? scene_.environment->file + "|" : "none") + " shadows " +
-                                    toString(f.shadows.mode) + toString(f.shadows.filter) +
+                                    toString(f.shadows.mode) + toString(f.shadows.filter) + toString(f.toneCurve) +
                                     std::to_string(f.shadows.atlasSize);
   const int thisFrame = framesRendered_ - 1;
   if (configuration != lastConfiguration_) {

@@ -65,6 +65,7 @@ class Viewer {
   void setCulling(Culling culling) { options_.frame.culling = culling; }
   void setShadows(const ShadowSettings& shadows) { options_.frame.shadows = shadows; }
   void setTransparency(Transparency transparency) { options_.frame.transparency = transparency; }
+  void setToneCurve(ToneCurve curve) { options_.frame.toneCurve = curve; }
   void setView(std::optional<DebugChannel> view) { view_ = view; }
   void setExposure(float exposure) { options_.frame.exposure = exposure; }
   void setPaused(bool paused) { options_.paused = paused; }

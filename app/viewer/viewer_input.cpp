@@ -34,6 +34,7 @@ const std::vector<KeyHelp>& viewerKeys() {
       {"C", "culling: auto / clustered / brute force"},
       {"V", "debug view: final, then " + debugChannelNames(", ")},
       {"+ / -", "exposure by half a stop"},
+      {"T", "tone curve: the next of aces-hill, aces-narkowicz, khronos-neutral, reinhard, exponential, linear"},
       {"[ / ]", "halve / double the lights"},
       {"P", "pause the lights, or the glTF animation the scene plays"},
       {"F12", "screenshot"},
@@ -90,6 +91,11 @@ void Viewer::handleKey(int key) {
     case GLFW_KEY_M:
       setModel(f.model == ShadingModel::Pbr ? ShadingModel::BlinnPhong : ShadingModel::Pbr);
       break;
+    case GLFW_KEY_T: {
+      const auto* next = std::find(std::begin(kToneCurves), std::end(kToneCurves), f.toneCurve) + 1;
+      setToneCurve(next == std::end(kToneCurves) ? kToneCurves[0] : *next);
+      break;
+    }
     case GLFW_KEY_C:
       setCulling(f.culling == Culling::Auto ? Culling::Clustered
                  : f.culling == Culling::Clustered ? Culling::None : Culling::Auto);
