@@ -14,6 +14,16 @@ RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOption
   return renderOffscreen(shaders, scene, size, options, frames, RendererConfig{clusters});
 }
 
+double relativeRmse(const ImageRgbaF& a, const ImageRgbaF& ref) {
+  double error2 = 0.0, norm2 = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    error2 += std::pow(double(a.pixels[i]) - double(ref.pixels[i]), 2.0);
+    norm2 += std::pow(double(ref.pixels[i]), 2.0);
+  }
+  return std::sqrt(error2 / norm2);
+}
+
 double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor) {
   double worst = 0.0;
   for (size_t i = 0; i < a.pixels.size(); ++i) {

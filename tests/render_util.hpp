@@ -12,6 +12,8 @@ using RenderedFrame = RenderedFrames;
 RenderedFrame renderScene(const Scene& scene, glm::ivec2 size, const FrameOptions& options, int frames = 2,
                           const ClusterConfig& clusters = {});
 
+// Relative RMSE of `a`'s colour channels against `ref`'s: sqrt(sum (a - ref)^2 / sum ref^2), alpha left out.
+double relativeRmse(const ImageRgbaF& a, const ImageRgbaF& ref);
 // Largest |a - b| / max(|b|, floor) over all colour channels.
 double maxRelativeDifference(const ImageRgbaF& a, const ImageRgbaF& b, double floor = 1e-3);
 int countDifferentBytes(const ImageRgba8& a, const ImageRgba8& b);

@@ -44,17 +44,6 @@ glm::vec3 rgb(const pbr::ImageRgbaF& image, int x, int y) {
   return {v[0], v[1], v[2]};
 }
 
-// Relative RMSE of `a`'s colour channels against `ref`'s.
-double relativeRmse(const pbr::ImageRgbaF& a, const pbr::ImageRgbaF& ref) {
-  double error2 = 0.0, norm2 = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    error2 += std::pow(double(a.pixels[i]) - double(ref.pixels[i]), 2.0);
-    norm2 += std::pow(double(ref.pixels[i]), 2.0);
-  }
-  return std::sqrt(error2 / norm2);
-}
-
 pbr::Material material(const glm::vec3& base, float roughness, float metalness = 0.0f) {
   pbr::Material m;
   m.baseColor = base;
@@ -168,7 +157,7 @@ TEST_CASE("orthographic: a lit scene seen along parallel rays matches the refere
   const glm::ivec2 size{160, 96};
   const pbr::test::RenderedFrame gpu = renderFloat(scene, size, o);
   const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, size.x, size.y, {});
-  const double error = relativeRmse(gpu.hdr, ref.radiance);
+  const double error = pbr::test::relativeRmse(gpu.hdr, ref.radiance);
   MESSAGE("relative RMSE against the reference: " << error);
   CHECK(error < 0.01);
   // The same camera in perspective, framing the target the same height, sees another image.
@@ -176,7 +165,7 @@ TEST_CASE("orthographic: a lit scene seen along parallel rays matches the refere
   perspective.camera.orthographic = false;
   const float distance = glm::distance(scene.camera.position, scene.camera.target);
   perspective.camera.fovYDeg = 2.0f * glm::degrees(std::atan(scene.camera.orthoHalfHeight / distance));
-  CHECK(relativeRmse(renderFloat(perspective, size, o).hdr, ref.radiance) > 0.1);
+  CHECK(pbr::test::relativeRmse(renderFloat(perspective, size, o).hdr, ref.radiance) > 0.1);
 }
 
 TEST_CASE("orthographic: clustered frames equal brute force, and the clusters still cull") {

@@ -81,17 +81,6 @@ pbr::Scene floorScene(const glm::vec3& eye, const glm::vec3& target) {
   return scene;
 }
 
-// Relative RMSE of `a`'s colour channels against `ref`'s.
-double relativeRmse(const pbr::ImageRgbaF& a, const pbr::ImageRgbaF& ref) {
-  double error2 = 0.0, norm2 = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    error2 += std::pow(double(a.pixels[i]) - double(ref.pixels[i]), 2.0);
-    norm2 += std::pow(double(ref.pixels[i]), 2.0);
-  }
-  return std::sqrt(error2 / norm2);
-}
-
 // Three quads in a row (x = -2.5, 0, 2.5) with the glTF alpha modes `modes`, baseColorFactor alpha 0.3, written as
 // a glTF file and seen head-on in front of a grey wall; quads left out where `modes` is empty.
 pbr::Scene alphaModeScene(const TempDir& dir, const std::vector<std::string>& modes) {
@@ -144,7 +133,7 @@ TEST_CASE("transparency: a 0.3-alpha pane over a lit sphere matches the referenc
   o.variant = exact->shading;
   const pbr::test::RenderedFrame gpu = renderExact(scene, o);
   const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, {});
-  const double error = relativeRmse(gpu.hdr, ref.radiance);
+  const double error = pbr::test::relativeRmse(gpu.hdr, ref.radiance);
   MESSAGE("relative RMSE against the reference: " << error);
   CHECK(error < 0.01);
   // The sphere shows through the pane: without it, the pixels the pane covers over the sphere change.
@@ -358,8 +347,8 @@ TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, o
   CHECK(wrongElsewhere <= 8);
   o.transparency = pbr::Transparency::Exact;
   const pbr::test::RenderedFrame exactLists = renderExact(scene, o);
-  const double sortedError = relativeRmse(sorted.hdr, ref.radiance), oitError = relativeRmse(oit.hdr, ref.radiance);
-  const double exactError = relativeRmse(exactLists.hdr, ref.radiance);
+  const double sortedError = pbr::test::relativeRmse(sorted.hdr, ref.radiance), oitError = pbr::test::relativeRmse(oit.hdr, ref.radiance);
+  const double exactError = pbr::test::relativeRmse(exactLists.hdr, ref.radiance);
   MESSAGE("relative RMSE against the reference: sorted " << sortedError << ", oit " << oitError << ", exact "
                                                          << exactError);
   CHECK(oitError < 0.05);
