@@ -25,6 +25,7 @@ python3 fuzz/make_corpus.py . "$assets" "$build/corpus" || exit 1
 python3 fuzz/make_regressions.py "$build/regressions" || exit 1
 
 export UBSAN_OPTIONS=print_stacktrace=1
+export LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp
 # Each target process writes its inputs in a folder of its own under PBR_FUZZ_TMP (fuzz/temp_input.cpp); one that
 # crashes or times out cannot remove it, so the whole tree goes at the end of the run.
 PBR_FUZZ_TMP=$(mktemp -d /dev/shm/pbr-fuzz.XXXXXX 2>/dev/null || mktemp -d) || exit 1
