@@ -720,7 +720,8 @@ class Loader {
                    number(kMaxCoordinate));
       }
     }
-    checkDeclaredBounds(attribute("POSITION"), positions, field + ".attributes.POSITION");
+    // The file's own checks, made once at load: posing it again at other times reads the same accessors.
+    if (!pose_) checkDeclaredBounds(attribute("POSITION"), positions, field + ".attributes.POSITION");
     const bool hasNormals = attribute("NORMAL") >= 0;
     // glTF: without normals, tangents from the file are ignored too.
     const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
@@ -794,7 +795,7 @@ class Loader {
     }
     mesh.indices = triangleList(file_, prim.mode, std::move(indices),
                                 field + (prim.indices >= 0 ? ".indices" : ".attributes.POSITION"));
-    if (!mesh.indices.empty() && !coversArea(mesh)) {
+    if (!pose_ && !mesh.indices.empty() && !coversArea(mesh)) {
       const size_t triangles = mesh.indices.size() / 3;
       file_.warn(field + (triangles == 1 ? ": its triangle has" : ": its " + std::to_string(triangles) +
                                                                       " triangles all have") +

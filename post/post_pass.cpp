@@ -2,12 +2,16 @@
 
 namespace pbr {
 
+ShaderDefines PostPass::permutation(ToneCurve curve) {
+  ShaderDefines defines;
+  for (const ToneCurve c : kToneCurves) defines.push_back({toneCurveDefine(c), c == curve ? "1" : "0"});
+  return defines;
+}
+
 const Program& PostPass::program(ToneCurve curve) {
-  ShaderDefines defines = bindingDefines({kPostUbo});
-  for (const ToneCurve c : kToneCurves) {
-    defines.push_back({toneCurveDefine(c), c == curve ? "1" : "0"});
-  }
-  return programs_.compute("post/post.comp", defines);
+  const Program*& program = byCurve_.at(static_cast<size_t>(curve));
+  if (!program) program = &programs_.compute("post/post.comp", concat(permutation(curve), bindingDefines({kPostUbo})));
+  return *program;
 }
 
 void PostPass::render(const Texture& hdr, const Texture& ldr, const PostSettings& settings) {

@@ -1,4 +1,7 @@
 #pragma once
+#include <array>
+#include <iterator>
+
 #include <glm/vec2.hpp>
 
 #include "core/binding_table.hpp"
@@ -31,11 +34,14 @@ class PostPass {
  public:
   explicit PostPass(ProgramCache& programs) : programs_(programs) { program(ToneCurve::AcesHill); }
   void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
+  // The defines of a curve's permutation: its TONE_CURVE_* define 1, the others 0.
+  static ShaderDefines permutation(ToneCurve curve);
 
  private:
   const Program& program(ToneCurve curve);
 
   ProgramCache& programs_;
+  std::array<const Program*, std::size(kToneCurves)> byCurve_{};  // by ToneCurve, once compiled
   UniformBuffer<PostBlock> block_{"post.block"};
 };
 

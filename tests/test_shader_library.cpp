@@ -233,7 +233,9 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
     if (!pbr::isGBufferChannel(channel)) continue;
     checkComputeCompiles("lighting/gbuffer_debug.comp", DefineSets{pbr::GBufferDebugPass::permutation(channel)});
   }
-  checkComputeCompiles("post/post.comp", DefineSets{ShaderDefines{}}, pbr::bindingDefines({pbr::kPostUbo}));
+  DefineSets curves;
+  for (const pbr::ToneCurve curve : pbr::kToneCurves) curves.push_back(pbr::PostPass::permutation(curve));
+  checkComputeCompiles("post/post.comp", curves, pbr::bindingDefines({pbr::kPostUbo}));
   const ShaderLibrary shaders;
   const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
                                                  "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK", "UNLIT"};

@@ -25,7 +25,9 @@ void main() {
     c = clamp(c, 0.0, 1.0);
   } else {
     c *= post.exposure;
-#if TONE_CURVE_ACES_NARKOWICZ
+#if TONE_CURVE_ACES_HILL
+    c = acesFitted(c);
+#elif TONE_CURVE_ACES_NARKOWICZ
     c = acesNarkowicz(c);
 #elif TONE_CURVE_KHRONOS_NEUTRAL
     c = khronosNeutral(c);
@@ -36,7 +38,7 @@ void main() {
 #elif TONE_CURVE_LINEAR
     c = clamp(c, 0.0, 1.0);
 #else
-    c = acesFitted(c);
+#error "post.comp: no TONE_CURVE_* define chose a curve"
 #endif
   }
   imageStore(ldrOut, p, vec4(srgbEncode(c), 1.0));
