@@ -64,6 +64,7 @@ const std::vector<OptionSpec>& accuracyOptions() {
        "orderings of BLEND surfaces measured on --transparency-scene with the exact variant and no shadows: sorted, "
        "oit, exact, or none",
        kDefaultTransparencyRows, ""},
+      toneMapOption(),
       {"--transparency-scene", "NAME", "the transparency rows' scene, built-in or a file, with BLEND materials",
        "transparency", ""},
       {"--transparency-cost-size", "WxH", "frame size at which the transparency rows' transparency pass and frame "
@@ -184,6 +185,9 @@ int runAccuracy(const std::vector<std::string>& argv) {
   const std::vector<std::string> sceneSpecs = splitList(args.get("--scenes"));
   if (sceneSpecs.empty()) throw UsageError("--scenes lists no scene");
   const glm::ivec2 size = args.getSize("--size");
+  // The display transform of every compared 8-bit frame, the reference's and the variants' alike: the error in
+  // levels is the error a viewer with this curve would see.
+  const ToneCurve curve = readToneCurve(args);
   // The reference frames at --size (40 bytes a pixel, as pbr reference holds them) before any is traced; the GPU
   // frames are checked by their renderer.
   checkFrameSize(size.x, size.y, "--size", 40, {kMaxSizeSide, availableMemoryBytes()});
@@ -266,6 +270,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
          "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
          "shadow_pixels,transparency,transparency_ms_median,transparency_ms_p10,transparency_ms_p90,frame_ms_median,"
          "frame_ms_p10,frame_ms_p90\n";
+  std::printf("levels: 8-bit sRGB after exposure and the %s tone curve (--tonemap)\n", toString(curve));
   std::printf("%-16s %-18s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
               "mean lv", "max", ">2 lv");
   // The geometry, shadow and transparency rows have no cost per pair, and each row kind no columns of the others:
@@ -296,12 +301,12 @@ int runAccuracy(const std::vector<std::string>& argv) {
   for (const AccuracyScene& s : scenes) {
     reference::ReferenceOptions refOptions = referenceOptions;  // meshes; the geometry row switches a copy
     const reference::ReferenceFrame ref = reference::renderReference(s.scene, size.x, size.y, refOptions);
-    const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.displayExposure());
+    const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.displayExposure(), curve);
     // The tessellation's own error: the same reference shading on the exact shapes the meshes approximate.
     if (hasOnlyAnalyticShapes(s.scene)) {
       refOptions.geometry = reference::Geometry::Analytic;
       const reference::ReferenceFrame exact = reference::renderReference(s.scene, size.x, size.y, refOptions);
-      const ImageRgba8 exactLdr = displayImage(shaders, exact.radiance, s.scene.displayExposure());
+      const ImageRgba8 exactLdr = displayImage(shaders, exact.radiance, s.scene.displayExposure(), curve);
       writeRow("geometry", s.label, "reference", "triangle meshes against the exact shapes", "-", "-", nullptr,
                measureError(ref.radiance, refLdr, exact, exactLdr));
     }
@@ -311,6 +316,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
       options.model = v.model;
       options.variant = v.shading;
       options.exposure = s.scene.displayExposure();
+      options.toneCurve = curve;
       RendererConfig config;
       config.hdrFormat = v.hdr;
       config.gbuffer = v.gbuffer;
@@ -325,7 +331,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   if (!shadowRows.empty()) {
     std::printf("\n%-20s %-12s %11s %12s %17s %10s %13s %8s\n", "shadow row", "scene", "shadow ms", "lighting ms",
                 "both (p10-p90)", "rel RMSE", "misclassified", "pixels");
-    const ShadowComparison comparison(shaders, shadowScene.scene, size, referenceOptions, mode);
+    const ShadowComparison comparison(shaders, shadowScene.scene, size, referenceOptions, mode, curve);
     const AccuracyVariant& exact = exactVariant();
     for (size_t i = 0; i < shadowRows.size(); ++i) {
       const ShadowRow& row = shadowRows[i];
@@ -347,7 +353,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
   if (!transparencyRows.empty()) {
     std::printf("\n%-20s %-12s %25s %22s %10s %8s %6s %8s\n", "transparency row", "scene",
                 "transparency ms (p10-p90)", "frame ms (p10-p90)", "rel RMSE", "mean lv", "max", ">2 lv");
-    const TransparencyComparison comparison(shaders, transparencyScene.scene, size, referenceOptions, mode);
+    const TransparencyComparison comparison(shaders, transparencyScene.scene, size, referenceOptions, mode, curve);
     const AccuracyVariant& exact = exactVariant();
     for (size_t i = 0; i < transparencyRows.size(); ++i) {
       const TransparencyRow& row = transparencyRows[i];

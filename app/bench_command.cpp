@@ -61,6 +61,7 @@ const std::vector<OptionSpec>& benchOptions() {
        "density) constant"},
       spotShareOption(),
       shadowModeOption(),
+      toneMapOption(),
       shadowFilterOption(),
       shadowAtlasOption(),
       {"--pair-cost", "LIST",
@@ -139,6 +140,7 @@ BenchSettings parseSettings(const Args& args) {
   s.constantDensity = args.has("--constant-density");
   s.spotShare = sceneFileParams(args).spotShare;
   s.shadows = readShadowSettings(args);
+  s.toneCurve = readToneCurve(args);
   s.timing = args.get("--timing");
   chooseTimingMode(s.timing, "");  // rejects a bad mode before a context is made
   return s;

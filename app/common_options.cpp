@@ -66,8 +66,8 @@ OptionSpec toneMapOption() {
   return {"--tonemap", "CURVE",
           std::string("the PBR display transform's tone curve after exposure: ") + toneCurveNames() +
               " (aces-hill: Hill's ACES fit, the study's curve; aces-narkowicz: Narkowicz's fit; khronos-neutral: "
-              "Khronos PBR Neutral, glTF-Sample-Viewer's default; reinhard: white point 4; exponential: 1 - e^-x, "
-              "the seeds'; linear: a clamp)",
+              "Khronos PBR Neutral, glTF-Sample-Viewer's default; agx: Blender's AgX Base; reinhard: white point "
+              "4; exponential: 1 - e^-x, the seeds'; linear: a clamp)",
           toString(ToneCurve::AcesHill), ""};
 }
 

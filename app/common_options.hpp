@@ -5,7 +5,7 @@
 #include "core/blended_surfaces.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/shadow_maps.hpp"
-#include "post/tone_curve.hpp"
+#include "core/tone_curve.hpp"
 
 namespace pbr {
 

@@ -1,6 +1,7 @@
 #include "app/frame_notes.hpp"
 
 #include <cstdio>
+#include <string>
 
 #include "core/bounds.hpp"
 
@@ -8,18 +9,29 @@ namespace pbr {
 
 namespace {
 
-// The share of a display image's pixels at full white in every channel.
-double whiteShare(const ImageRgba8& image) {
-  size_t white = 0;
+// The shares of a display image's pixels at full white in every channel, and within 2% of white in at least one:
+// the tone curves approach white without reaching it, so a highlight compressed that far has lost its detail.
+constexpr int kNearWhite = 250;
+
+struct Clipping {
+  double white = 0.0, clipped = 0.0;
+};
+
+Clipping clipping(const ImageRgba8& image) {
+  size_t white = 0, clipped = 0;
   for (size_t i = 0; i + 3 < image.pixels.size(); i += 4) {
-    white += image.pixels[i] == 255 && image.pixels[i + 1] == 255 && image.pixels[i + 2] == 255;
+    const uint8_t* p = &image.pixels[i];
+    white += p[0] == 255 && p[1] == 255 && p[2] == 255;
+    clipped += p[0] >= kNearWhite || p[1] >= kNearWhite || p[2] >= kNearWhite;
   }
-  return image.pixels.empty() ? 0.0 : double(white) / double(image.pixels.size() / 4);
+  const double pixels = double(image.pixels.size() / 4);
+  return image.pixels.empty() ? Clipping{} : Clipping{double(white) / pixels, double(clipped) / pixels};
 }
 
 }  // namespace
 
-std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, float exposure, const ImageRgba8* ldr) {
+std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, float exposure, bool autoExposure,
+                                    const ImageRgba8* ldr) {
   std::vector<std::string> notes;
   if (!scene.objects.empty()) {
     const Camera& camera = scene.camera;
@@ -34,14 +46,19 @@ std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, float e
                       "frame shows the background alone");
     }
   }
-  // Over 99 % clipped: nothing of the scene can be told apart.
+  // Over 99 % white: nothing of the scene can be told apart. Over kClippedShareNoted clipped: the highlights are
+  // lost.
   if (ldr) {
-    const double white = whiteShare(*ldr);
-    if (white > 0.99) {
-      char text[200];
-      std::snprintf(text, sizeof text,
-                    "%.1f%% of the frame clips to white: an exposure of %g is too high for this scene (--exposure, "
-                    "--ev100)", 100.0 * white, double(exposure));
+    const Clipping c = clipping(*ldr);
+    const std::string hint = autoExposure ? "" : "; --exposure auto meters it from the frame";
+    char text[240];
+    if (c.white > 0.99) {
+      std::snprintf(text, sizeof text, "%.1f%% of the frame clips to white: an exposure of %g is too high for this "
+                    "scene (--exposure, --ev100)%s", 100.0 * c.white, double(exposure), hint.c_str());
+      notes.push_back(text);
+    } else if (c.clipped > kClippedShareNoted) {
+      std::snprintf(text, sizeof text, "%.1f%% of the frame's pixels clip (a channel at 250 or more) at exposure %g%s",
+                    100.0 * c.clipped, double(exposure), hint.c_str());
       notes.push_back(text);
     }
   }

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "app/args.hpp"
@@ -11,8 +12,10 @@
 #include "app/scene_source.hpp"
 #include "core/image.hpp"
 #include "core/messages.hpp"
+#include "core/output_file.hpp"
 #include "core/shadow_maps.hpp"
 #include "reference/brdf_form_names.hpp"
+#include "reference/display_transform.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/frame_limits.hpp"
 
@@ -31,7 +34,13 @@ const std::vector<OptionSpec>& referenceOptions() {
       viewAngleOption(),
       spotShareOption(),
       {"--size", "WxH", "frame size in pixels", sizeText({640, 360}), ""},
-      {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (required)"},
+      {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (this or --out is required)"},
+      {"--out", "F.png|F.jpg",
+       "where to write the display image, made on the CPU in double precision: exposure, the tone curve, exact sRGB "
+       "encoding, 8 bits (reference/display_transform.hpp)"},
+      toneMapOption(),
+      {"--exposure", "X", "exposure multiplier before the tone curve", "", "the scene's, 1"},
+      ev100Option(),
       {"--threads", "N", "worker threads, 0 for every hardware thread", std::to_string(referenceDefaults.threads), ""},
       {"--geometry", "G", "meshes (the triangles the GPU rasterizes) or analytic (the exact shapes)",
        toString(referenceDefaults.geometry), ""},
@@ -58,7 +67,7 @@ int runReference(const std::vector<std::string>& argv) {
   const auto& specs = referenceOptions();
   Args args(specs, argv);
   if (args.helpRequested()) {
-    std::cout << Args::helpText("pbr reference --hdr F.exr [options]",
+    std::cout << Args::helpText("pbr reference --hdr F.exr|--out F.png [options]",
                                 "Ray-casts each pixel centre in double precision and evaluates the reference PBR "
                                 "model (GGX, exact height-correlated Smith, exact dielectric Fresnel, Schlick for "
                                 "metals, Lambert (1 - F(n.v))), or with --variant the approximations of a renderer "
@@ -70,9 +79,11 @@ int runReference(const std::vector<std::string>& argv) {
                                 specs);
     return 0;
   }
-  const std::string out = args.get("--hdr");
-  if (out.empty()) throw UsageError("--hdr F.exr|F.pfm is required");
-  hdrFileFormat(out);  // an unknown extension fails before the frame is traced
+  const std::string out = args.get("--hdr"), outLdr = args.get("--out");
+  if (out.empty() && outLdr.empty()) throw UsageError("--hdr F.exr|F.pfm or --out F.png|F.jpg is required");
+  // An unknown extension fails before the frame is traced.
+  if (!out.empty()) hdrFileFormat(out);
+  if (!outLdr.empty()) ldrFileFormat(outLdr);
   SceneParams params = sceneFileParams(args);
   params.defaultEnvironment = DefaultEnvironment::None;  // the reference has no image-based lighting
   applySceneShapeOptions(args, params);
@@ -82,8 +93,15 @@ int runReference(const std::vector<std::string>& argv) {
   options.geometry = reference::parseGeometry(args.get("--geometry"));
   options.forms = reference::parseBrdfForms(args.get("--variant"));
   options.shadows = parseShadowMode(args.get("--shadows"));
-  const Scene scene = resolveScene(args.get("--scene"), params);
-  checkOutputsApart(sceneInputs(args.get("--scene"), scene), {{"--hdr", out}});
+  Scene scene = resolveScene(args.get("--scene"), params);
+  const ExposureChoice exposure = applyExposureOptions(args, scene);
+  if (exposure.autoExposure) throw UsageError("--exposure auto is metered on the GPU: give the reference a number");
+  const ToneCurve curve = readToneCurve(args);
+  checkOutputsApart(sceneInputs(args.get("--scene"), scene), {{"--hdr", out}, {"--out", outLdr}});
+  // Opened before tracing, so that an unwritable path fails at once; renamed into place once written.
+  std::optional<OutputFile> hdrFile, ldrFile;
+  if (!out.empty()) hdrFile.emplace(out);
+  if (!outLdr.empty()) ldrFile.emplace(outLdr);
   // The frame in memory: radiance (16 bytes a pixel), object ids and shadow visibility (4 each), and the file's
   // copy of the radiance as it is written (16).
   checkFrameSize(size.x, size.y, "--size", 40, {kMaxSizeSide, availableMemoryBytes()});
@@ -107,16 +125,30 @@ int runReference(const std::vector<std::string>& argv) {
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceFrame frame = reference::renderReference(scene, size.x, size.y, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeHdr(out, frame.radiance);
+  if (hdrFile) hdrFile->write([&](std::ostream& o) { writeHdr(o, hdrFileFormat(out), frame.radiance); });
+  if (ldrFile) {
+    ImageRgba8 ldr{frame.radiance.width, frame.radiance.height, {}};
+    ldr.pixels.reserve(frame.radiance.pixels.size());
+    for (size_t i = 0; i + 3 < frame.radiance.pixels.size(); i += 4) {
+      const float* p = &frame.radiance.pixels[i];
+      const glm::ivec3 code = reference::displayCode(glm::dvec3(p[0], p[1], p[2]), exposure.exposure, true, curve);
+      ldr.pixels.insert(ldr.pixels.end(), {uint8_t(code.x), uint8_t(code.y), uint8_t(code.z), 255});
+    }
+    ldrFile->write([&](std::ostream& o) { writeLdr(o, ldrFileFormat(outLdr), ldr); });
+  }
   if (frame.truncatedRays > 0) {
     warnOnce("reference: " + std::to_string(frame.truncatedRays) + " pixels' rays met more than " +
          std::to_string(reference::kMaxBlendLayers) + " BLEND layers: the surfaces beyond them are left out");
   }
   std::printf("reference: %s (%s geometry), %dx%d, %zu lights, shadows %s, %s, %.2f s on %u threads (CPU, double "
-              "precision)\nwrote %s\n",
+              "precision)\n",
               scene.name.c_str(), options.geometry == reference::Geometry::Meshes ? "mesh" : "analytic", size.x,
               size.y, scene.lights.size(), toString(options.shadows), toString(options.forms).c_str(), seconds,
-              options.threads > 0 ? unsigned(options.threads) : std::thread::hardware_concurrency(), out.c_str());
+              options.threads > 0 ? unsigned(options.threads) : std::thread::hardware_concurrency());
+  if (!out.empty()) std::printf("wrote %s\n", out.c_str());
+  if (!outLdr.empty()) {
+    std::printf("wrote %s (exposure %g, tone curve %s)\n", outLdr.c_str(), double(exposure.exposure), toString(curve));
+  }
   return 0;
 }
 

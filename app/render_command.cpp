@@ -14,6 +14,7 @@
 #include "core/context.hpp"
 #include "core/frame_capture.hpp"
 #include "core/image.hpp"
+#include "core/exposure.hpp"
 #include "core/messages.hpp"
 #include "core/output_file.hpp"
 #include "lighting/lighting_pass.hpp"
@@ -72,7 +73,10 @@ const std::vector<OptionSpec>& renderOptions() {
        "", "none, the frame itself"},
       {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
-      {"--exposure", "X", "exposure multiplier before ACES", "", "the scene's, 1"},
+      {"--exposure", "X|auto",
+       "exposure multiplier before the tone curve, or auto: metered from the frame itself on the GPU (the mean log2 "
+       "luminance between its 10th and 90th percentiles shown as 0.18), reported as EV100; a scene camera's "
+       "exposure keeps priority", "", "the scene's, 1"},
       ev100Option(),
       cameraOption(),
       environmentOption(),
@@ -276,7 +280,7 @@ int runRender(const std::vector<std::string>& argv) {
   Scene scene = resolveScene(sceneName, sceneParams);
   applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
-  const float exposure = applyExposureOptions(args, scene);
+  const ExposureChoice exposure = applyExposureOptions(args, scene);
   if (debug == DebugChannel::Shadows && !anyShadowCaster(scene.lights, scene.directionalLights, shadows.mode)) {
     throw UsageError("--debug shadows: no light of the scene casts shadows under --shadows " +
                      std::string(toString(shadows.mode)) + " (--shadows on makes every light cast)");
@@ -298,6 +302,7 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string directional =
       scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
+  if (!exposure.note.empty()) std::printf("note: %s\n", exposure.note.c_str());
   // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
   const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
                                                                   : std::string(toString(aa));
@@ -327,7 +332,9 @@ int runRender(const std::vector<std::string>& argv) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure, false, debug, aa, shadows, readTransparency(args), curve};
+  FrameOptions options{model, variant, culling, exposure.exposure, false, debug, aa, shadows, readTransparency(args),
+                       curve};
+  options.autoExposure = exposure.autoExposure;
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));
@@ -349,13 +356,21 @@ int runRender(const std::vector<std::string>& argv) {
   renderer.renderFrame(options, untimed, {outPng.empty() ? nullptr : &ldr, outHdr.empty() ? nullptr : &hdr});
   result.stats = renderer.lightStats();
   printLightStats(result.stats, renderer, options);
+  const std::optional<MeteredExposure> metered = renderer.meteredExposure();
+  if (metered) {
+    std::printf("exposure: auto, EV100 %.2f metered from the frame (exposure %.4g, as --ev100 %.2f --exposure 1 "
+                "sets it)\n", double(metered->ev100), exposureFromEv100(metered->ev100), double(metered->ev100));
+  }
   checkGlError("rendering");
 
   if (pngFile) {
     pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(outPng), ldr); });
     std::printf("wrote %s\n", outPng.c_str());
   }
-  for (const std::string& note : frameNotes(scene, size, exposure, outPng.empty() ? nullptr : &ldr)) {
+  const float shownExposure =
+      metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
+  for (const std::string& note :
+       frameNotes(scene, size, shownExposure, exposure.autoExposure, outPng.empty() ? nullptr : &ldr)) {
     std::printf("note: %s\n", note.c_str());
   }
   if (hdrFile) {
@@ -366,6 +381,9 @@ int runRender(const std::vector<std::string>& argv) {
     BenchReport report;
     report.provenance = collectProvenance(info, profiler.mode());
     report.provenance.set("shading_variant", describeTerms(model, variant));
+    report.provenance.set("tone_curve", model == ShadingModel::Pbr ? toString(curve) : "none (clamped)");
+    report.provenance.set("exposure", metered ? "auto" : fixedDecimals(shownExposure, 6));
+    if (metered) report.provenance.set("ev100_metered", fixedDecimals(metered->ev100, 3));
     report.settings.scene = scene.name;
     report.settings.size = size;
     report.settings.lights = {result.config.lights};

@@ -4,6 +4,7 @@
 
 #include "app/args.hpp"
 #include "core/exposure.hpp"
+#include "core/messages.hpp"
 #include "core/scene_json.hpp"
 
 namespace pbr {
@@ -119,10 +120,26 @@ void applyEnvironmentOptions(const Args& args, Scene& scene) {
   }
 }
 
-float applyExposureOptions(const Args& args, Scene& scene) {
-  if (args.has("--ev100")) scene.ev100 = args.getFloat("--ev100", -kMaxEv100, kMaxEv100);
-  if (args.has("--exposure")) scene.exposure = args.getFloat("--exposure", 0.0f, kMaxExposure);
-  return scene.displayExposure();
+ExposureChoice applyExposureOptions(const Args& args, Scene& scene) {
+  ExposureChoice choice;
+  choice.autoExposure = args.get("--exposure") == "auto";
+  if (choice.autoExposure && args.has("--ev100")) {
+    throw UsageError("--exposure auto meters the frame's exposure and --ev100 sets it: give one of them");
+  }
+  if (args.has("--ev100")) {
+    scene.ev100 = args.getFloat("--ev100", -kMaxEv100, kMaxEv100);
+    scene.ev100Metered = false;
+  }
+  if (args.has("--exposure") && !choice.autoExposure) {
+    scene.exposure = args.getFloat("--exposure", 0.0f, kMaxExposure);
+  }
+  if (choice.autoExposure && scene.ev100 && !scene.ev100Metered) {
+    choice.autoExposure = false;
+    choice.note = "the scene's camera sets EV100 " + fixedDecimals(*scene.ev100, 2) +
+                  ", which keeps priority over --exposure auto (--ev100 sets another)";
+  }
+  choice.exposure = scene.displayExposure();
+  return choice;
 }
 
 std::string builtinSceneList() {

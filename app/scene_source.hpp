@@ -12,10 +12,17 @@ namespace pbr {
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 std::string builtinSceneList();  // "default, sphere-grid, ...", for help texts and messages
 
-// --ev100, taken with --exposure by the commands that show frames, and the exposure the post pass applies once
-// both replace the scene's (Scene::displayExposure).
+// --ev100, taken with --exposure X|auto by the commands that show frames.
 OptionSpec ev100Option();
-float applyExposureOptions(const Args& args, Scene& scene);
+// The exposure a command's frames get once --exposure and --ev100 replace the scene's (Scene::displayExposure).
+// --exposure auto meters each PBR frame (post/exposure_meter.hpp) unless the scene's camera states its exposure,
+// which keeps priority (said in `note`); UsageError with --ev100, which sets what auto would meter.
+struct ExposureChoice {
+  float exposure = 1.0f;  // with autoExposure, what frames start from until one is metered
+  bool autoExposure = false;
+  std::string note;  // why --exposure auto does not apply; empty when it does or was not asked for
+};
+ExposureChoice applyExposureOptions(const Args& args, Scene& scene);
 
 // --camera N|auto: one of the glTF cameras of the scene, or the framing of a model given alone.
 OptionSpec cameraOption();

@@ -33,7 +33,9 @@ const std::vector<OptionSpec>& viewOptions() {
       shadowAtlasOption(),
       {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
        toString(kDisplayAntiAliasing), ""},
-      {"--exposure", "X", "exposure multiplier at start (keys + and -)", "", "the scene's, 1"},
+      {"--exposure", "X|auto",
+       "exposure multiplier at start (keys + and -), or auto: metered from each frame and adapting to it (key X; "
+       "3 EV per second brighter, 1 darker); a scene camera's exposure keeps priority", "", "the scene's, 1"},
       ev100Option(),
       cameraOption(),
       environmentOption(),
@@ -116,8 +118,11 @@ int runView(const std::vector<std::string>& argv) {
   applyEnvironmentOptions(args, scene);
   checkOutputsApart(sceneInputs(options.sceneName, scene), {{"--screenshot", options.screenshot}});
   applyCameraOption(args, scene);
-  options.frame.exposure = applyExposureOptions(args, scene);
+  const ExposureChoice exposure = applyExposureOptions(args, scene);
+  options.frame.exposure = exposure.exposure;
+  options.frame.autoExposure = exposure.autoExposure;
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
+  if (!exposure.note.empty()) std::printf("note: %s\n", exposure.note.c_str());
   Viewer viewer(options, std::move(scene));
   std::printf("renderer: %s | %s | %s\n", viewer.window().info().renderer.c_str(),
               viewer.window().info().version.c_str(), viewer.window().info().platform.c_str());

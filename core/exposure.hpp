@@ -16,5 +16,7 @@ double ev100FromCamera(double aperture, double shutterSeconds, double iso);
 // Same section: the saturation-based sensor's largest luminance, Lmax = 78 / (0.65 S) N^2 / t = 1.2 * 2^EV100
 // cd/m^2, maps to 1, so the image is scaled by 1 / Lmax.
 double exposureFromEv100(double ev100);
+// Its inverse: the EV100 whose exposure is `exposure` (> 0).
+double ev100FromExposure(double exposure);
 
 }  // namespace pbr

@@ -30,6 +30,7 @@ void meterExposure(Scene& scene, const Bounds& bounds) {
   if (!(lux > 0.0)) return;
   const double ev = std::clamp(ev100FromIlluminance(lux), double(-kMaxEv100), double(kMaxEv100));
   scene.ev100 = static_cast<float>(ev);
+  scene.ev100Metered = true;
   const float level = static_cast<float>(1.0 / exposureFromEv100(ev));
   scene.ambient *= level;
   if (scene.environment) scene.environment->intensity *= 0.25f * level;

@@ -163,6 +163,7 @@ struct Scene {
   Camera camera;
   float exposure = 1.0f;        // a plain multiplier of the HDR image before tone mapping
   std::optional<float> ev100;   // the camera's exposure value at ISO 100; with it, exposure multiplies 1 / Lmax
+  bool ev100Metered = false;    // ev100 is what the loader's light meter read (model_scene.hpp), not a camera's
 
   glm::vec3 ambient{0.0f};  // uniform ambient radiance for the PBR model; an environment replaces it
   std::optional<EnvironmentDesc> environment;

@@ -33,6 +33,10 @@ export PBR_FUZZ_TMP
 trap 'rm -rf "$PBR_FUZZ_TMP"' EXIT
 
 failed=0
+# One line per failure and its log, repeated at the end with the log's report: a CI log's tail is what its reader
+# sees first.
+crashes=()
+crash_logs=()
 for t in "${targets[@]}"; do
   mkdir -p "$build/crashes/$t"
   dict=()
@@ -42,8 +46,10 @@ for t in "${targets[@]}"; do
   # as a hang at 10 s ran in 0.4 s alone) while a real endless loop is still caught.
   if ! "$build/fuzz/$t" "$build/corpus/$t" "${dict[@]}" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
       -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$build/crashes/$t/" >"$build/logs/$t.log" 2>&1; then
-    echo "fuzz: $t CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after|out-of-memory' \
-      "$build/logs/$t.log")"
+    crashes+=("fuzz: $t CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after|out-of-memory' \
+      "$build/logs/$t.log") (input: $(ls "$build/crashes/$t" | head -1))")
+    crash_logs+=("$build/logs/$t.log")
+    echo "${crashes[-1]}"
     failed=1
   fi
   grep -E '^#[0-9]+[[:space:]]+DONE|^stat::number_of_executed_units' "$build/logs/$t.log" | sed "s/^/fuzz: $t /"
@@ -56,9 +62,16 @@ for t in "${targets[@]}"; do
     if "$build/fuzz/$t" -timeout=10 "$input" >"$log" 2>&1; then
       echo "regression: $t $input: ok"
     else
-      echo "regression: $t $input: CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after' "$log")"
+      crashes+=("regression: $t $input: CRASHED: $(grep -m1 -E 'ERROR: |runtime error|deadly signal|timeout after' \
+        "$log")")
+      crash_logs+=("$log")
+      echo "${crashes[-1]}"
       failed=1
     fi
   done
+done
+for i in "${!crashes[@]}"; do
+  echo "${crashes[$i]}"
+  grep -m1 -A40 -E '==[0-9]+==ERROR|runtime error|deadly signal|timeout after|out-of-memory' "${crash_logs[$i]}"
 done
 exit $failed

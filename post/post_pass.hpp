@@ -7,7 +7,8 @@
 #include "core/binding_table.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
-#include "post/tone_curve.hpp"
+#include "core/tone_curve.hpp"
+#include "post/exposure_meter.hpp"
 
 namespace pbr {
 
@@ -23,25 +24,28 @@ struct PostSettings {
   float exposure = 1.0f;
   bool toneMap = true;  // false for LDR frames: clamp + sRGB only
   ToneCurve curve = ToneCurve::AcesHill;
+  const ExposureMeter* meter = nullptr;  // automatic exposure: the meter's exposure replaces `exposure`
 };
 
 // The post pass's settings block, one binding point for C++ and GLSL.
 constexpr BindingPoint kPostUbo{"POST_UBO", BindingKind::UniformBuffer, 3};
 
 // HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
-// A permutation per tone curve, each compiled when a frame first asks for it.
+// A permutation per tone curve and exposure source, each compiled when a frame first asks for it.
 class PostPass {
  public:
-  explicit PostPass(ProgramCache& programs) : programs_(programs) { program(ToneCurve::AcesHill); }
+  explicit PostPass(ProgramCache& programs) : programs_(programs) { program(ToneCurve::AcesHill, false); }
   void render(const Texture& hdr, const Texture& ldr, const PostSettings& settings);
-  // The defines of a curve's permutation: its TONE_CURVE_* define 1, the others 0.
-  static ShaderDefines permutation(ToneCurve curve);
+  // The defines of a permutation: the curve's TONE_CURVE_* define 1, the others 0; AUTO_EXPOSURE 1 when the
+  // exposure comes from the meter.
+  static ShaderDefines permutation(ToneCurve curve, bool autoExposure);
 
  private:
-  const Program& program(ToneCurve curve);
+  const Program& program(ToneCurve curve, bool autoExposure);
 
   ProgramCache& programs_;
-  std::array<const Program*, std::size(kToneCurves)> byCurve_{};  // by ToneCurve, once compiled
+  // By ToneCurve and automatic exposure, once compiled.
+  std::array<std::array<const Program*, 2>, std::size(kToneCurves)> programsByCurve_{};
   UniformBuffer<PostBlock> block_{"post.block"};
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "core/image.hpp"
 #include "core/shader_library.hpp"
-#include "post/tone_curve.hpp"
+#include "core/tone_curve.hpp"
 
 namespace pbr {
 

@@ -33,6 +33,7 @@ const char* toString(FrameResource resource) {
     case FrameResource::ClusterLists: return "cluster lists";
     case FrameResource::PairCounts: return "pair counts";
     case FrameResource::ShadowLight: return "shadow light";
+    case FrameResource::Exposure: return "exposure";
     case FrameResource::Display: return "display";
     case FrameResource::Capture: return "capture";
   }

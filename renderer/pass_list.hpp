@@ -11,7 +11,8 @@ namespace pbr {
 // and materials, its lights, its image-based lighting maps, the camera's frame block); the others are targets a
 // pass must write before another may read them.
 enum class FrameResource {
-  Geometry, Lights, Environment, Camera, GBuffer, ShadowMaps, Radiance, ClusterLists, PairCounts, ShadowLight, Display, Capture
+  Geometry, Lights, Environment, Camera, GBuffer, ShadowMaps, Radiance, ClusterLists, PairCounts, ShadowLight, Exposure,
+  Display, Capture
 };
 const char* toString(FrameResource resource);
 

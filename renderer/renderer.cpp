@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/exposure.hpp"
 #include "core/gpu_mesh.hpp"
 #include "core/gpu_texture.hpp"
 #include "core/readback.hpp"
@@ -192,10 +193,22 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster
   // views are painted after anti-aliasing, so that their legend is never filtered.
   const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || needsClusterGrid(*options.debug));
+  const bool metered = options.autoExposure && options.model == ShadingModel::Pbr && !replacesDisplay;
+  if (metered) {
+    if (!scene_.exposureMeter) scene_.exposureMeter = std::make_unique<ExposureMeter>(scene_.programs);
+    passes.push_back({"exposure", {R::Radiance}, {R::Exposure}, [this, &t, options] {
+                        const float initialEv100 = float(ev100FromExposure(options.exposure));
+                        scene_.exposureMeter->meter(t.hdr, options.adaptSeconds, initialEv100);
+                      }});
+  }
   if (!replacesDisplay) {
-    passes.push_back({"post", {R::Radiance}, {R::Display}, [this, &t, options, antiAliased] {
+    std::vector<R> reads = {R::Radiance};
+    if (metered) reads.push_back(R::Exposure);
+    passes.push_back({"post", reads, {R::Display}, [this, &t, options, antiAliased, metered] {
                         const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
-                        scene_.post.render(t.hdr, display, {options.exposure, options.model == ShadingModel::Pbr, options.toneCurve});
+                        scene_.post.render(t.hdr, display,
+                                           {options.exposure, options.model == ShadingModel::Pbr, options.toneCurve,
+                                            metered ? scene_.exposureMeter.get() : nullptr});
                       }});
   }
   if (antiAliased) {
@@ -294,6 +307,17 @@ void Renderer::renderFrame(const FrameOptions& requested, Profiler& profiler, co
   cullingTimed_ = false;
   lastOptions_ = options;
   lastShadowed_ = std::any_of(passes.begin(), passes.end(), [](const FramePass& p) { return p.name == "shadow"; });
+  lastMetered_ = std::any_of(passes.begin(), passes.end(), [](const FramePass& p) { return p.name == "exposure"; });
+}
+
+void Renderer::restartExposure(float exposure) {
+  if (!scene_.exposureMeter) scene_.exposureMeter = std::make_unique<ExposureMeter>(scene_.programs);
+  scene_.exposureMeter->reset(float(ev100FromExposure(exposure)));
+}
+
+std::optional<MeteredExposure> Renderer::meteredExposure() const {
+  if (!lastMetered_) return std::nullopt;
+  return scene_.exposureMeter->read();
 }
 
 RendererCounters Renderer::counters() const {

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,7 +13,7 @@
 #include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
 #include "lighting/debug_channel.hpp"
-#include "post/tone_curve.hpp"
+#include "core/tone_curve.hpp"
 #include "renderer/culling_choice.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
@@ -37,6 +38,11 @@ struct FrameOptions {
   ShadowSettings shadows;                // a frame none of whose lights casts runs no shadow pass
   Transparency transparency = Transparency::Sorted;  // of BLEND surfaces; a frame without any runs no such pass
   ToneCurve toneCurve = ToneCurve::AcesHill;         // of PBR frames' display transform
+  // PBR frames: the exposure metered from the frame itself (post/exposure_meter.hpp) in place of `exposure`, which
+  // sets it only before anything is metered. It moves toward each frame's metering over `adaptSeconds` (the time
+  // since the last frame); infinite, the headless default, applies each frame's own metering.
+  bool autoExposure = false;
+  float adaptSeconds = std::numeric_limits<float>::infinity();
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
@@ -120,6 +126,10 @@ class Renderer {
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
+  // What the automatic exposure applied to the last frame; waits for the GPU. None unless it ran that frame.
+  std::optional<MeteredExposure> meteredExposure() const;
+  // The automatic exposure adapts from `exposure` on the next frames, as after a switch from a fixed exposure.
+  void restartExposure(float exposure);
   const LightClusters& clusters() const { return targets_->clusters; }
   const LightBuffer& lights() const { return scene_.lights; }
   const GBuffer& gbuffer() const { return targets_->gbuffer; }
@@ -157,6 +167,7 @@ class Renderer {
   const std::vector<PointLight>* lights_;  // the frame's point and spot lights: the scene's or lightsSet_
   std::optional<std::pair<ShadowMode, bool>> shadowedCache_;
   bool lastShadowed_ = false;
+  bool lastMetered_ = false;  // the last frame ran the automatic exposure's meter
   FrameOptions lastOptions_;  // as the last frame ran them: culling Auto resolved
   CullingChoice cullingChoice_;
   std::optional<CullingDecision> lastDecision_;

@@ -35,6 +35,7 @@ struct SceneResources {
   LightingPass lighting;
   ShadowPass shadows;  // allocates its atlas on the first shadowed frame
   PostPass post;
+  std::unique_ptr<ExposureMeter> exposureMeter;  // made by the first frame with automatic exposure
   FxaaPass fxaa;
   ClusterDebugPass clusterDebug;
   GBufferDebugPass gbufferDebug;

@@ -313,7 +313,7 @@ TEST_CASE("render notes: a scene wholly out of view and a frame that clips to wh
   CHECK(notesOf({"--scene", floor, "--out", dir.file("a.png")}).empty());
   CHECK(notesOf({"--scene", floor, "--exposure", "1e6", "--out", dir.file("b.png")}) ==
         std::vector<std::string>{"note: 100.0% of the frame clips to white: an exposure of 1e+06 is too high for this "
-                                 "scene (--exposure, --ev100)"});
+                                 "scene (--exposure, --ev100); --exposure auto meters it from the frame"});
   CHECK(notesOf({"--scene", scene("behind.json", 500.0)}) ==
         std::vector<std::string>{"note: no object of the scene lies in the camera's view (between its near and far "
                                  "planes): the frame shows the background alone"});

@@ -234,8 +234,12 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
     checkComputeCompiles("lighting/gbuffer_debug.comp", DefineSets{pbr::GBufferDebugPass::permutation(channel)});
   }
   DefineSets curves;
-  for (const pbr::ToneCurve curve : pbr::kToneCurves) curves.push_back(pbr::PostPass::permutation(curve));
-  checkComputeCompiles("post/post.comp", curves, pbr::bindingDefines({pbr::kPostUbo}));
+  for (const pbr::ToneCurve curve : pbr::kToneCurves) {
+    for (const bool autoExposure : {false, true}) curves.push_back(pbr::PostPass::permutation(curve, autoExposure));
+  }
+  checkComputeCompiles("post/post.comp", curves, pbr::bindingDefines({pbr::kPostUbo, pbr::kExposureSsbo}));
+  checkComputeCompiles("post/exposure_histogram.comp", DefineSets{pbr::ExposureMeter::defines()});
+  checkComputeCompiles("post/exposure_adapt.comp", DefineSets{pbr::ExposureMeter::defines()});
   const ShaderLibrary shaders;
   const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
                                                  "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK", "UNLIT"};

@@ -1,7 +1,8 @@
 // The display transform's tone curves (--tonemap; shaders/post/tone_curves.glsl) against their published formulas,
 // evaluated here: the post pass's 8-bit output within one level of the formula's, sRGB-encoded, at black, mid-grey,
-// 1, 16, 1e4 and a saturated colour; every curve monotone per channel along a ramp; PBR Neutral's pass-through below
-// its compression start; and the grey ramp staying grey through the per-channel curves.
+// 1, 16, 1e4 and a saturated colour; the CPU reference's display transform (reference/display_transform.*) equal to
+// the same formulas; every curve monotone per channel along a ramp; PBR Neutral's pass-through below its
+// compression start; the grey ramp staying grey; AgX's sigmoid through its stated points.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <glm/exponential.hpp>
 #include <glm/vec3.hpp>
 
+#include "reference/display_transform.hpp"
 #include "renderer/display_image.hpp"
 #include "tests/gl_test_context.hpp"
 
@@ -59,6 +61,59 @@ glm::dvec3 khronosNeutral(glm::dvec3 c) {
 glm::dvec3 reinhard(glm::dvec3 x) { return clamp01(x * (1.0 + x / 16.0) / (1.0 + x)); }
 glm::dvec3 exponential(glm::dvec3 x) { return clamp01(1.0 - glm::exp(-x)); }
 
+// Sobotka's calculate_sigmoid (github.com/EaryChow/AgX_LUT_Gen, sigmoid.py) step by step, with Blender's AgX Base
+// arguments: pivots (10 / 16.5, 0.18^(1/2.4)), slope 2.4, transition lengths 0, powers 1.5, limits (0,0) and (1,1).
+double agxSigmoid(double x) {
+  const double px = 10.0 / 16.5, py = std::pow(0.18, 1.0 / 2.4), slope = 2.4, power = 1.5;
+  // With transition lengths 0 both transitions sit at the pivot, and the linear section is the pivot alone.
+  const auto scale = [&](double limitX, double limitY, double transitionX, double transitionY) {
+    const double a = std::pow(slope * (limitX - transitionX), -power);
+    const double b = std::pow(slope * (limitX - transitionX) / (limitY - transitionY), power) - 1.0;
+    return std::pow(a * b, -1.0 / power);
+  };
+  const auto exponentialCurve = [&](double in, double s) {
+    const double t = slope * (in - px) / s;
+    return s * t / std::pow(1.0 + std::pow(t, power), 1.0 / power) + py;
+  };
+  const double toe = -scale(1.0, 1.0, 1.0 - px, 1.0 - py);  // the toe's limits, mirrored as sigmoid.py does
+  const double shoulder = scale(1.0, 1.0, px, py);
+  if (x < px) return exponentialCurve(x, toe);
+  if (x <= px) return py;
+  return exponentialCurve(x, shoulder);
+}
+
+// Blender's AgX Base without its hue mix: linear sRGB to Rec.2020 (ITU-R BT.2087), the inset, log2 over
+// [-10, +6.5] stops around 0.18, the sigmoid, the power 2.4, the outset, Rec.2020 to sRGB; the code value is the
+// power 1/2.4 of that, returned as the linear value the sRGB encoding turns into it.
+glm::dvec3 agx(glm::dvec3 c) {
+  const double toRec2020[3][3] = {
+      {0.6274039, 0.3292830, 0.0433131}, {0.0690973, 0.9195404, 0.0113623}, {0.0163914, 0.0880133, 0.8955953}};
+  const double inset[3][3] = {{0.856627153315983, 0.0951212405381588, 0.0482516061458583},
+                              {0.137318972929847, 0.761241990602591, 0.101439036467562},
+                              {0.11189821299995, 0.0767994186031903, 0.811302368396859}};
+  const double outset[3][3] = {{1.1271005818144368, -0.11060664309660323, -0.016493938717834573},
+                               {-0.1413297634984383, 1.157823702216272, -0.016493938717834257},
+                               {-0.14132976349843826, -0.11060664309660294, 1.2519364065950405}};
+  const double toSrgb[3][3] = {
+      {1.6604910, -0.5876411, -0.0728499}, {-0.1245505, 1.1328999, -0.0083494}, {-0.0181508, -0.1005789, 1.1187297}};
+  const auto times = [](const double (&m)[3][3], glm::dvec3 v) {
+    glm::dvec3 o;
+    for (int r = 0; r < 3; ++r) o[r] = m[r][0] * v.x + m[r][1] * v.y + m[r][2] * v.z;
+    return o;
+  };
+  glm::dvec3 v = times(inset, times(toRec2020, c));
+  const double low = std::log2(0.18) - 10.0, high = std::log2(0.18) + 6.5;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = std::pow(agxSigmoid(std::clamp((std::log2(std::max(v[i], 1e-10)) - low) / (high - low), 0.0, 1.0)), 2.4);
+  }
+  v = clamp01(times(toSrgb, times(outset, v)));
+  for (int i = 0; i < 3; ++i) {
+    const double code = std::pow(v[i], 1.0 / 2.4);
+    v[i] = code <= 0.04045 ? code / 12.92 : std::pow((code + 0.055) / 1.055, 2.4);
+  }
+  return v;
+}
+
 // IEC 61966-2-1 sRGB encoding, to 8 bits.
 int srgb8(double v) {
   const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
@@ -78,7 +133,7 @@ TEST_CASE("tone curves: each curve's display values follow its published formula
   PBR_REQUIRE_GL();
   const std::vector<std::pair<pbr::ToneCurve, Curve>> curves = {
       {pbr::ToneCurve::AcesHill, acesHill},     {pbr::ToneCurve::AcesNarkowicz, acesNarkowicz},
-      {pbr::ToneCurve::KhronosNeutral, khronosNeutral}, {pbr::ToneCurve::Reinhard, reinhard},
+      {pbr::ToneCurve::KhronosNeutral, khronosNeutral}, {pbr::ToneCurve::AgX, agx}, {pbr::ToneCurve::Reinhard, reinhard},
       {pbr::ToneCurve::Exponential, exponential}, {pbr::ToneCurve::Linear, clamp01}};
   const std::vector<glm::vec3> inputs = {{0, 0, 0},  {0.18f, 0.18f, 0.18f}, {1, 1, 1},
                                          {16, 16, 16}, {1e4f, 1e4f, 1e4f},  {4.0f, 0.5f, 0.1f}};
@@ -91,6 +146,8 @@ TEST_CASE("tone curves: each curve's display values follow its published formula
       CAPTURE(i);
       const glm::dvec3 expected = formula(glm::dvec3(inputs[i]));
       for (int c = 0; c < 3; ++c) CHECK(std::abs(int(shown.pixels[i * 4 + size_t(c)]) - srgb8(expected[c])) <= 1);
+      const glm::dvec3 cpu = pbr::reference::toneMap(curve, glm::dvec3(inputs[i]));
+      for (int c = 0; c < 3; ++c) CHECK(cpu[c] == doctest::Approx(expected[c]).epsilon(1e-9));
     }
     // Monotone per channel, and a grey ramp stays grey.
     const pbr::ImageRgba8 rising = display(ramp, curve);
@@ -103,4 +160,18 @@ TEST_CASE("tone curves: each curve's display values follow its published formula
   // 0.46.
   const pbr::ImageRgba8 neutral = display({{0.5f, 0.5f, 0.5f}}, pbr::ToneCurve::KhronosNeutral);
   CHECK(int(neutral.pixels[0]) == srgb8(0.46));
+}
+
+TEST_CASE("tone curves: AgX's sigmoid runs from (0, 0) through its fulcrum with slope 2.4 to (1, 1)") {
+  const double px = 10.0 / 16.5, py = std::pow(0.18, 1.0 / 2.4), h = 1e-6;
+  for (const auto& sigmoid : {agxSigmoid, pbr::reference::agxSigmoid}) {
+    CHECK(sigmoid(0.0) == doctest::Approx(0.0).epsilon(1e-12));
+    CHECK(sigmoid(px) == doctest::Approx(py).epsilon(1e-12));
+    CHECK(sigmoid(1.0) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK((sigmoid(px + h) - sigmoid(px - h)) / (2.0 * h) == doctest::Approx(2.4).epsilon(1e-4));
+  }
+  // The two evaluations agree everywhere between.
+  for (int i = 0; i <= 100; ++i) {
+    CHECK(pbr::reference::agxSigmoid(i / 100.0) == doctest::Approx(agxSigmoid(i / 100.0)).epsilon(1e-12));
+  }
 }

@@ -17,6 +17,7 @@
 #include "app/scene_source.hpp"
 #include "app/viewer/environment_folder.hpp"
 #include "core/assets.hpp"
+#include "core/exposure.hpp"
 #include "core/json_file.hpp"
 #include "core/scene_json.hpp"
 #include "tests/cli_util.hpp"
@@ -560,6 +561,23 @@ TEST_CASE("view: T steps through the tone curves, each frame the one pbr render 
   const ImageRgba8 neutral = show(*viewer);
   CHECK(neutral.pixels != hill.pixels);
   checkMatches(neutral, headless(dir, kSize, {"--tonemap", "khronos-neutral"}));
-  for (int i = 0; i < 4; ++i) viewer->handleKey(GLFW_KEY_T);
+  for (size_t i = 2; i < std::size(pbr::kToneCurves); ++i) viewer->handleKey(GLFW_KEY_T);
   CHECK((viewer->frameOptions().toneCurve == pbr::ToneCurve::AcesHill));  // round again
+}
+
+TEST_CASE("view: X meters the exposure as pbr render --exposure auto does, and + or - fixes it again") {
+  const TempDir dir;
+  const auto viewer = openViewer();
+  if (!viewer) return;
+  viewer->handleKey(GLFW_KEY_X);
+  CHECK(viewer->frameOptions().autoExposure);
+  // The first frame converges at once; the same view then meters the same, so the frames after it hold.
+  const ImageRgba8 metered = show(*viewer, 8);
+  checkMatches(metered, headless(dir, kSize, {"--exposure", "auto"}));
+  REQUIRE(viewer->meteredExposure());
+  const float shown = viewer->frameOptions().exposure;
+  CHECK(shown == doctest::Approx(pbr::exposureFromEv100(viewer->meteredExposure()->ev100)));
+  viewer->handleKey(GLFW_KEY_EQUAL);
+  CHECK_FALSE(viewer->frameOptions().autoExposure);
+  CHECK(viewer->frameOptions().exposure > shown);
 }

@@ -52,12 +52,13 @@ FrameOptions shadowRowOptions(const ShadowRow& row, const Scene& scene) {
 }
 
 ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
-                                   const reference::ReferenceOptions& referenceOptions, TimingMode timing)
-    : shaders_(shaders), scene_(scene), size_(size), timing_(timing) {
+                                   const reference::ReferenceOptions& referenceOptions, TimingMode timing,
+                                   ToneCurve curve)
+    : shaders_(shaders), scene_(scene), size_(size), curve_(curve), timing_(timing) {
   reference::ReferenceOptions options = referenceOptions;
   options.shadows = ShadowMode::Auto;
   reference_ = reference::renderReference(scene, size.x, size.y, options);
-  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure());
+  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure(), curve);
   Scene dark = scene;
   dark.ambient = glm::vec3(0.0f);
   dark.lights.clear();
@@ -86,7 +87,9 @@ ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& sc
 ShadowRowResult ShadowComparison::measure(const ShadowRow& row) const {
   const RendererConfig config = exactVariantConfig();
   ShadowRowResult r;
-  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, shadowRowOptions(row, scene_), 3, config, timing_);
+  FrameOptions options = shadowRowOptions(row, scene_);
+  options.toneCurve = curve_;
+  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, options, 3, config, timing_);
   r.error = measureError(f.hdr, f.ldr, reference_, referenceLdr_);
   r.relativeError = relativeErrorPerPixel(f.hdr, reference_);
   for (const LightAlone& l : lights_) {

@@ -45,7 +45,8 @@ struct ShadowRowResult {
 class ShadowComparison {
  public:
   ShadowComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
-                   const reference::ReferenceOptions& referenceOptions, TimingMode timing);
+                   const reference::ReferenceOptions& referenceOptions, TimingMode timing,
+                   ToneCurve curve = ToneCurve::AcesHill);
   ShadowRowResult measure(const ShadowRow& row) const;
   size_t castingLights() const { return lights_.size(); }
 
@@ -58,6 +59,7 @@ class ShadowComparison {
   const ShaderLibrary& shaders_;
   Scene scene_;
   glm::ivec2 size_;
+  ToneCurve curve_;  // of the display images the error in 8-bit levels is measured on
   TimingMode timing_;
   reference::ReferenceFrame reference_;
   ImageRgba8 referenceLdr_;

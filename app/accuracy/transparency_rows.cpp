@@ -33,17 +33,18 @@ FrameOptions transparencyRowOptions(const TransparencyRow& row, const Scene& sce
 
 TransparencyComparison::TransparencyComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
                                                const reference::ReferenceOptions& referenceOptions,
-                                               TimingMode timing)
-    : shaders_(shaders), scene_(scene), size_(size), timing_(timing) {
+                                               TimingMode timing, ToneCurve curve)
+    : shaders_(shaders), scene_(scene), size_(size), curve_(curve), timing_(timing) {
   reference::ReferenceOptions options = referenceOptions;
   options.shadows = ShadowMode::None;
   reference_ = reference::renderReference(scene, size.x, size.y, options);
-  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure());
+  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure(), curve);
 }
 
 TransparencyRowResult TransparencyComparison::measure(const TransparencyRow& row) const {
-  const RenderedFrames f =
-      renderOffscreen(shaders_, scene_, size_, transparencyRowOptions(row, scene_), 3, exactVariantConfig(), timing_);
+  FrameOptions options = transparencyRowOptions(row, scene_);
+  options.toneCurve = curve_;
+  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, options, 3, exactVariantConfig(), timing_);
   return {measureError(f.hdr, f.ldr, reference_, referenceLdr_), relativeErrorPerPixel(f.hdr, reference_)};
 }
 

@@ -37,13 +37,15 @@ struct TransparencyRowResult {
 class TransparencyComparison {
  public:
   TransparencyComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
-                         const reference::ReferenceOptions& referenceOptions, TimingMode timing);
+                         const reference::ReferenceOptions& referenceOptions, TimingMode timing,
+                         ToneCurve curve = ToneCurve::AcesHill);
   TransparencyRowResult measure(const TransparencyRow& row) const;
 
  private:
   const ShaderLibrary& shaders_;
   Scene scene_;
   glm::ivec2 size_;
+  ToneCurve curve_;  // of the display images the error in 8-bit levels is measured on
   TimingMode timing_;
   reference::ReferenceFrame reference_;
   ImageRgba8 referenceLdr_;

@@ -80,6 +80,7 @@ Record settingsRecord(const BenchReport& report) {
                    {"shadows", toString(s.shadows.mode)},
                    {"shadow_filter", toString(s.shadows.filter)},
                    {"shadow_atlas", std::to_string(s.shadows.atlasSize)},
+                   {"tone_curve", toString(s.toneCurve)},
                    {"timing_requested", s.timing},
                    {"sweep_configurations", std::to_string(sweepConfigs(s).size())},
                    {"sweep_fingerprint", sweepFingerprint(s)}};
@@ -103,6 +104,7 @@ Json settingsJson(const BenchSettings& s) {
                    {"shadows", toString(s.shadows.mode)},
                    {"shadow_filter", toString(s.shadows.filter)},
                    {"shadow_atlas", s.shadows.atlasSize},
+                   {"tone_curve", toString(s.toneCurve)},
                    {"timing_requested", s.timing}};
   for (Culling c : s.culling) settings["culling"].push_back(toString(c));
   for (ShadingModel m : s.models) settings["models"].push_back(toString(m));

@@ -55,6 +55,8 @@ BenchSettings readSettings(const JsonField& f) {
   s.shadows.mode = keyword(f["shadows"], parseShadowMode);
   s.shadows.filter = keyword(f["shadow_filter"], parseShadowFilter);
   s.shadows.atlasSize = integer(f["shadow_atlas"], kMaxShadowAtlas);
+  // Reports from before --tonemap ran ACES Hill.
+  if (f["tone_curve"].present()) s.toneCurve = keyword(f["tone_curve"], parseToneCurve);
   s.timing = f["timing_requested"].string();
   return s;
 }
@@ -152,6 +154,7 @@ BenchReportFile readBenchReport(const std::string& path) {
   for (const JsonField& c : configurations.items()) {
     file.report.results.push_back(readResult(c, file.traceLayout));
     file.report.results.back().config.shadows = file.report.settings.shadows;  // every configuration's, as measured
+    file.report.results.back().config.toneCurve = file.report.settings.toneCurve;
   }
   return file;
 }

@@ -49,6 +49,7 @@ BenchRun::BenchRun(const ShaderLibrary& shaders, const Scene& scene, const Bench
   options_.model = config.model;
   options_.culling = config.culling;
   options_.shadows = config.shadows;
+  options_.toneCurve = config.toneCurve;
   options_.exposure = scene.displayExposure();
 }
 

@@ -40,7 +40,8 @@ std::vector<BenchConfig> sweepConfigs(const BenchSettings& settings) {
         settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
     for (Culling culling : settings.culling) {
       for (ShadingModel model : settings.models) {
-        configs.push_back({settings.scene, settings.size, lights, culling, model, scale, settings.shadows});
+        configs.push_back(
+            {settings.scene, settings.size, lights, culling, model, scale, settings.shadows, settings.toneCurve});
       }
     }
   }

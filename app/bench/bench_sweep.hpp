@@ -24,6 +24,7 @@ struct BenchSettings {
   bool constantDensity = false;
   std::optional<float> spotShare;  // --spot-share: the share of random lights that are spots (else the scene's)
   ShadowSettings shadows;          // --shadows, --shadow-filter, --shadow-atlas: every configuration's
+  ToneCurve toneCurve = ToneCurve::AcesHill;  // --tonemap: every PBR configuration's
   std::string timing = "auto";  // as requested; the mode used is in the provenance
 };
 
@@ -44,6 +45,7 @@ struct BenchConfig {
   ShadingModel model = ShadingModel::Pbr;
   float radiusScale = 1.0f;  // applied to every light's radius
   ShadowSettings shadows;
+  ToneCurve toneCurve = ToneCurve::AcesHill;
   std::string label() const;  // "1024 lights, clustered, pbr"
 };
 

@@ -308,8 +308,18 @@ void Overlay::controls(Viewer& viewer) {
     ImGui::TextDisabled("(no material of the scene blends)");
   }
 
+  bool autoExposure = f.autoExposure;
+  if (f.model == ShadingModel::Pbr && ImGui::Checkbox("auto exposure (X)", &autoExposure)) {
+    viewer.setAutoExposure(autoExposure);
+  }
+  if (f.autoExposure && viewer.meteredExposure()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("metered EV100 %.2f, adapting 3 EV/s brighter, 1 darker",
+                        double(viewer.meteredExposure()->targetEv100));
+  }
   // Exposure in stops of the display multiplier, and the camera's EV100 that gives it with the scene's
-  // multiplier (the scene file's exposure, EV100 = log2(exposure / (1.2 multiplier))).
+  // multiplier (the scene file's exposure, EV100 = log2(exposure / (1.2 multiplier))). Either turns the automatic
+  // exposure off.
   float stops = std::log2(std::max(f.exposure, 1e-30f));
   if (ImGui::DragFloat("exposure", &stops, 0.02f, -40.0f, 40.0f, "%+.2f stops")) viewer.setExposure(std::exp2(stops));
   ImGui::SameLine();

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 
 #include "app/viewer/overlay.hpp"
 #include "app/viewer/scene_snapshot.hpp"
+#include "core/exposure.hpp"
 #include "core/gltf_loader.hpp"
 #include "core/readback.hpp"
 
@@ -118,10 +120,12 @@ void Viewer::frame() {
   renderer_->setCamera(camera_.camera());
   FrameOptions frameOptions = options_.frame;
   frameOptions.debug = view_;
+  // The first frame meters at once; later ones adapt over the time they show.
+  frameOptions.adaptSeconds = framesRendered_ == 0 ? std::numeric_limits<float>::infinity() : step;
   renderer_->renderFrame(frameOptions, profiler_);
   ++framesRendered_;
   recordTimings(frameMs);
-  if (overlay_) sampleLightStats();
+  if (overlay_ || options_.frame.autoExposure) sampleLightStats();
   present();
   updateTitle();
 }
@@ -130,7 +134,16 @@ void Viewer::sampleLightStats() {
   const Clock::time_point now = Clock::now();
   if (std::chrono::duration<double, std::milli>(now - lastStats_).count() < kStatsIntervalMs) return;
   lastStats_ = now;
-  lightStats_ = renderer_->lightStats();
+  if (overlay_) lightStats_ = renderer_->lightStats();
+  // The exposure shown follows the meter, so that switching it off, saving the scene or a screenshot keeps it.
+  metered_ = options_.frame.autoExposure ? renderer_->meteredExposure() : std::nullopt;
+  if (metered_) options_.frame.exposure = float(exposureFromEv100(metered_->ev100));
+}
+
+void Viewer::setAutoExposure(bool on) {
+  if (on && !options_.frame.autoExposure && framesRendered_ > 0) renderer_->restartExposure(options_.frame.exposure);
+  options_.frame.autoExposure = on;
+  if (!on) metered_.reset();
 }
 
 void Viewer::recordTimings(double frameMs) {

@@ -67,7 +67,15 @@ class Viewer {
   void setTransparency(Transparency transparency) { options_.frame.transparency = transparency; }
   void setToneCurve(ToneCurve curve) { options_.frame.toneCurve = curve; }
   void setView(std::optional<DebugChannel> view) { view_ = view; }
-  void setExposure(float exposure) { options_.frame.exposure = exposure; }
+  // A fixed exposure, which turns the automatic one off.
+  void setExposure(float exposure) {
+    options_.frame.exposure = exposure;
+    options_.frame.autoExposure = false;
+  }
+  // The automatic exposure: switched on, it adapts from the exposure shown (kAdapt*EvPerSecond).
+  void setAutoExposure(bool on);
+  // What the automatic exposure metered, sampled with the light statistics; none while it is off.
+  const std::optional<MeteredExposure>& meteredExposure() const { return metered_; }
   void setPaused(bool paused) { options_.paused = paused; }
   // Poses the glTF models that play an animation (a scene loaded with GltfSelection::playable) at `seconds`,
   // wrapped into the animation's length; a pose the file makes malformed stops the animation with a line on stderr.
@@ -153,6 +161,7 @@ class Viewer {
   Clock::time_point lastFrame_, lastTitle_, lastStats_;
   PassHistory passHistory_;  // every frame's pass times, warm or not: the graph shows what a change costs
   LightStats lightStats_;
+  std::optional<MeteredExposure> metered_;
   // Warm frames only: a frame after a change of model, variant, culling, view, light count, environment, shadow
   // settings or size
   // compiles shaders and resizes lists, so timings restart two frames after any change.

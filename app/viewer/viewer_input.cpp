@@ -33,8 +33,10 @@ const std::vector<KeyHelp>& viewerKeys() {
       {"M", "Blinn-Phong / PBR"},
       {"C", "culling: auto / clustered / brute force"},
       {"V", "debug view: final, then " + debugChannelNames(", ")},
-      {"+ / -", "exposure by half a stop"},
-      {"T", "tone curve: the next of aces-hill, aces-narkowicz, khronos-neutral, reinhard, exponential, linear"},
+      {"+ / -", "exposure by half a stop (turns the automatic exposure off)"},
+      {"X", "automatic exposure on / off (metered from the frame, adapting 3 EV/s brighter, 1 EV/s darker)"},
+      {"T", "tone curve: the next of aces-hill, aces-narkowicz, khronos-neutral, agx, reinhard, exponential, "
+            "linear"},
       {"[ / ]", "halve / double the lights"},
       {"P", "pause the lights, or the glTF animation the scene plays"},
       {"F12", "screenshot"},
@@ -106,6 +108,9 @@ void Viewer::handleKey(int key) {
       setView(next == kDebugChannels.end() ? std::nullopt : std::optional<DebugChannel>(*next));
       break;
     }
+    case GLFW_KEY_X:
+      setAutoExposure(!f.autoExposure);
+      break;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
       setExposure(f.exposure * kExposureStep);

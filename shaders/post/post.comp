@@ -6,10 +6,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "aces.glsl"
 #include "srgb.glsl"
 #include "tone_curves.glsl"
+#if AUTO_EXPOSURE
+#include "exposure_state.glsl"
+#endif
 
 // Mirrors pbr::PostBlock (post/post_block.hpp).
 layout(std140, binding = POST_UBO) uniform PostBlock {
-  float exposure;
+  float exposure;  // with AUTO_EXPOSURE, the meter's exposure replaces it
   uint toneMap;  // 1: exposure + the tone curve (a TONE_CURVE_* define), 0: clamp
   uvec2 size;
 } post;
@@ -24,13 +27,19 @@ void main() {
   if (post.toneMap == 0u) {
     c = clamp(c, 0.0, 1.0);
   } else {
+#if AUTO_EXPOSURE
+    c *= meter.exposure;
+#else
     c *= post.exposure;
+#endif
 #if TONE_CURVE_ACES_HILL
     c = acesFitted(c);
 #elif TONE_CURVE_ACES_NARKOWICZ
     c = acesNarkowicz(c);
 #elif TONE_CURVE_KHRONOS_NEUTRAL
     c = khronosNeutral(c);
+#elif TONE_CURVE_AGX
+    c = agx(c);
 #elif TONE_CURVE_REINHARD
     c = reinhard(c);
 #elif TONE_CURVE_EXPONENTIAL

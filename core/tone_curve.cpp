@@ -1,4 +1,4 @@
-#include "post/tone_curve.hpp"
+#include "core/tone_curve.hpp"
 
 #include <stdexcept>
 
@@ -16,6 +16,7 @@ constexpr CurveName kCurves[] = {
     {ToneCurve::AcesHill, "aces-hill", "TONE_CURVE_ACES_HILL"},
     {ToneCurve::AcesNarkowicz, "aces-narkowicz", "TONE_CURVE_ACES_NARKOWICZ"},
     {ToneCurve::KhronosNeutral, "khronos-neutral", "TONE_CURVE_KHRONOS_NEUTRAL"},
+    {ToneCurve::AgX, "agx", "TONE_CURVE_AGX"},
     {ToneCurve::Reinhard, "reinhard", "TONE_CURVE_REINHARD"},
     {ToneCurve::Exponential, "exponential", "TONE_CURVE_EXPONENTIAL"},
     {ToneCurve::Linear, "linear", "TONE_CURVE_LINEAR"},
@@ -40,7 +41,7 @@ ToneCurve parseToneCurve(const std::string& name) {
 const char* toString(ToneCurve curve) { return entry(curve).name; }
 
 const char* toneCurveNames() {
-  return "aces-hill, aces-narkowicz, khronos-neutral, reinhard, exponential or linear";
+  return "aces-hill, aces-narkowicz, khronos-neutral, agx, reinhard, exponential or linear";
 }
 
 const char* toneCurveDefine(ToneCurve curve) { return entry(curve).define; }

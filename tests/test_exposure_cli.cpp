@@ -1,0 +1,80 @@
+// The display transform's options on the command line: `pbr reference --out` encodes on the CPU what the post pass
+// encodes on the GPU, for every tone curve; `--exposure auto` reports the metered EV100 (and in --json), gives way
+// to a scene camera's exposure with a note, and is refused with --ev100; a fixed exposure that clips says so with
+// the hint.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/image.hpp"
+#include "core/shader_library.hpp"
+#include "ibl/openexr_image.hpp"
+#include "renderer/display_image.hpp"
+#include "tests/cli_scene.hpp"
+#include "tests/cli_util.hpp"
+#include "tests/gl_test_context.hpp"
+
+using pbr::test::isOneLine;
+using pbr::test::PbrRun;
+using pbr::test::runPbr;
+using pbr::test::TempDir;
+
+TEST_CASE("cli: pbr reference --out shows its radiance as the post pass does, under each tone curve") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string scene = dir.write("scene.json", pbr::test::kCliScene);
+  const pbr::ShaderLibrary shaders;
+  for (const char* curve : {"aces-hill", "khronos-neutral", "agx"}) {
+    CAPTURE(curve);
+    const std::string hdr = dir.file(std::string(curve) + ".exr"), png = dir.file(std::string(curve) + ".png");
+    const PbrRun run = runPbr(dir, {"reference", "--scene", scene, "--size", "32x18", "--threads", "2", "--hdr", hdr,
+                                    "--out", png, "--tonemap", curve, "--exposure", "3"});
+    CAPTURE(run.err);
+    REQUIRE(run.exitCode == 0);
+    const pbr::ImageRgba8 cpu = pbr::readPng(png);
+    const pbr::ImageRgba8 gpu =
+        pbr::displayImage(shaders, pbr::readOpenExr(hdr), 3.0f, pbr::parseToneCurve(curve));
+    REQUIRE(cpu.pixels.size() == gpu.pixels.size());
+    int worst = 0;
+    for (size_t i = 0; i < cpu.pixels.size(); ++i) worst = std::max(worst, std::abs(cpu.pixels[i] - gpu.pixels[i]));
+    CHECK(worst <= 1);
+  }
+  const PbrRun neither = runPbr(dir, {"reference", "--scene", scene, "--size", "32x18"});
+  CHECK(neither.exitCode == 2);
+  CHECK(isOneLine(neither.err));
+}
+
+TEST_CASE("cli: --exposure auto reports what it metered and yields to a scene camera's exposure") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string scene = dir.write("scene.json", pbr::test::kCliScene);
+  const std::vector<std::string> render = {"render", "--scene", scene, "--size", "64x36", "--frames", "1",
+                                           "--warmup", "0"};
+  std::vector<std::string> args = render;
+  args.insert(args.end(), {"--exposure", "auto", "--json", dir.file("a.json")});
+  const PbrRun metered = runPbr(dir, args);
+  CAPTURE(metered.err);
+  REQUIRE(metered.exitCode == 0);
+  CHECK(metered.out.find("exposure: auto, EV100 ") != std::string::npos);
+  CHECK(pbr::test::readFile(dir.file("a.json")).find("\"ev100_metered\"") != std::string::npos);
+
+  args = render;
+  args.insert(args.end(), {"--exposure", "auto", "--ev100", "3"});
+  const PbrRun both = runPbr(dir, args);
+  CHECK(both.exitCode == 2);
+  CHECK(isOneLine(both.err));
+  CHECK(both.err.find("--exposure auto") != std::string::npos);
+
+  std::string withCamera = pbr::test::kCliScene;
+  withCamera.replace(withCamera.find("\"fov_y_deg\""), 0, "\"ev100\": 2, ");
+  args = render;
+  args[2] = dir.write("camera.json", withCamera);
+  args.insert(args.end(), {"--exposure", "auto"});
+  const PbrRun camera = runPbr(dir, args);
+  REQUIRE(camera.exitCode == 0);
+  CHECK(camera.out.find("note: the scene's camera sets EV100 2.00, which keeps priority over --exposure auto") !=
+        std::string::npos);
+  CHECK(camera.out.find("exposure: auto") == std::string::npos);
+}
