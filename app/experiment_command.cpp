@@ -1,11 +1,13 @@
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "app/args.hpp"
 #include "app/bench/chart_script.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/experiments/experiments.hpp"
+#include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/output_file.hpp"
 
@@ -19,6 +21,7 @@ const std::vector<OptionSpec>& experimentOptions() {
       {"--size", "WxH", "frame size (fresnel: made odd, one pixel more or, at 16384, one less)", sizeText({640, 360}),
        ""},
       {"--frames", "K", "triangles: timed frames per configuration after one warm-up", "5", ""},
+      {"--scene", "NAME|FILE", "tonemap: the scene of the strip, built-in or a file", "default", ""},
       eglPlatformOption(),
   };
   return specs;
@@ -54,13 +57,15 @@ int runExperiment(const std::vector<std::string>& argv) {
                                 "Reproduces a Blinn-Phong vs PBR comparison; NAME is one of:\n"
                                 "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 degrees\n"
                                 "  saturation  fully saturated pixels of a wall under 1..10 co-located lights\n"
-                                "  triangles   frame time of both models under 100 lights as triangles grow",
+                                "  triangles   frame time of both models under 100 lights as triangles grow\n"
+                                "  tonemap     every tone curve: a grey ramp's display values, and one frame "
+                                "side by side",
                                 specs);
     return argv.empty() ? 2 : 0;
   }
   const std::string name = argv[0];
-  if (name != "fresnel" && name != "saturation" && name != "triangles") {
-    throw UsageError("unknown experiment '" + name + "' (expected fresnel, saturation or triangles)");
+  if (name != "fresnel" && name != "saturation" && name != "triangles" && name != "tonemap") {
+    throw UsageError("unknown experiment '" + name + "' (expected fresnel, saturation, triangles or tonemap)");
   }
   Args args(specs, std::vector<std::string>(argv.begin() + 1, argv.end()));
   if (args.helpRequested()) return runExperiment({"--help"});
@@ -69,6 +74,12 @@ int runExperiment(const std::vector<std::string>& argv) {
   const int frames = args.getInt("--frames", 1, 1000);
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
 
+  std::optional<Scene> scene;
+  if (name == "tonemap") {
+    scene = resolveScene(args.get("--scene"), SceneParams{});
+  } else if (args.has("--scene")) {
+    throw UsageError("--scene applies only to the tonemap experiment");
+  }
   makeOutputFolder("--out", outDir);  // before the experiment runs, so that a bad folder fails at once
   auto context = createHeadlessContext(platform);
   std::printf("renderer: %s | %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str(),
@@ -76,6 +87,7 @@ int runExperiment(const std::vector<std::string>& argv) {
   const ShaderLibrary shaders;
   const ExperimentResult result = name == "fresnel"      ? runFresnelExperiment(shaders, size)
                                   : name == "saturation" ? runSaturationExperiment(shaders, size)
+                                  : name == "tonemap"    ? runToneMapExperiment(shaders, size, *scene)
                                                          : runTrianglesExperiment(shaders, size, frames);
   for (const ExperimentImage& img : result.images) writePng(outDir + "/" + img.file, img.image);
   const std::string csv = outDir + "/" + name + ".csv", png = outDir + "/" + name + ".png";

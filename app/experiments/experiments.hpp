@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/image.hpp"
+#include "core/scene.hpp"
 #include "core/shader_library.hpp"
 
 namespace pbr {
@@ -42,6 +43,11 @@ ExperimentResult runSaturationExperiment(const ShaderLibrary& shaders, glm::ivec
 
 // Frame time of both models under 100 lights as the scene's triangle count grows.
 ExperimentResult runTrianglesExperiment(const ShaderLibrary& shaders, glm::ivec2 size, int frames);
+
+// The tone curves (--tonemap): each curve's display value of a grey ramp over 16 stops around mid grey, and one
+// frame of `scene` at its metered exposure under every curve, side by side (tonemap-strip.png: the centre square
+// of each, in kToneCurves order).
+ExperimentResult runToneMapExperiment(const ShaderLibrary& shaders, glm::ivec2 size, const Scene& scene);
 
 // Writes the table as CSV (x column first).
 void writeExperimentCsv(const std::string& path, const ExperimentTable& table);
