@@ -14,7 +14,9 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-run: build
+# Only the pbr binary: the test binaries are built by `make test`.
+run: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target pbr
 	./$(BUILD)/pbr render --scene default --out out/default.png
 
 test: build

@@ -249,22 +249,34 @@ int runAccuracy(const std::vector<std::string>& argv) {
   }
 
   const std::string csvPath = (dir / "accuracy.csv").string();
-  OutputFile csvFile(csvPath);
-  std::ostream& csv = csvFile.stream();
-  csv << "# gl_renderer: " << info.renderer << "\n# timing_mode: " << describe(mode) << "\n# pair_cost_frame: "
-      << cost.size.x << "x" << cost.size.y << ", " << cost.lights << " lights reaching every pixel, brute force, "
-      << cost.rounds << " rounds\n# compared_frame: " << size.x << "x" << size.y << "\n";
+  // The CSV's circumstances, beside it (csv_provenance.hpp).
+  const auto size2 = [](glm::ivec2 s) { return std::to_string(s.x) + "x" + std::to_string(s.y); };
+  KeyValues provenance = {
+      {"gl_renderer", info.renderer},
+      {"timing_mode", describe(mode)},
+      {"pair_cost_frame", size2(cost.size) + ", " + std::to_string(cost.lights) +
+                              " lights reaching every pixel, brute force, " + std::to_string(cost.rounds) + " rounds"},
+      {"compared_frame", size2(size)},
+      {"tone_curve", toString(curve)}};
   if (!shadowRows.empty()) {
-    csv << "# shadow_cost_frame: " << shadowScene.label << ", " << shadowCostSize.x << "x" << shadowCostSize.y
-        << ", shadow and lighting passes, " << cost.rounds << " rounds\n# shadow_state: each casting light alone, "
-        << "lit where shadowed over unshadowed radiance >= 0.5, against the reference's shadow rays; pixels within "
-        << kShadowBandPx << " px of a change of the reference's state are not compared\n";
+    provenance.push_back({"shadow_cost_frame", shadowScene.label + ", " + size2(shadowCostSize) +
+                                                   ", shadow and lighting passes, " + std::to_string(cost.rounds) +
+                                                   " rounds"});
+    provenance.push_back({"shadow_state", "each casting light alone, lit where shadowed over unshadowed radiance >= "
+                                          "0.5, against the reference's shadow rays; pixels within " +
+                                              std::to_string(kShadowBandPx) +
+                                              " px of a change of the reference's state are not compared"});
   }
   if (!transparencyRows.empty()) {
-    csv << "# transparency_cost_frame: " << transparencyScene.label << ", " << transparencyCostSize.x << "x"
-        << transparencyCostSize.y << ", transparency pass and frame, " << cost.rounds << " rounds\n"
-        << "# transparency_rows: the exact variant without shadows, GPU and reference\n";
+    provenance.push_back({"transparency_cost_frame", transparencyScene.label + ", " + size2(transparencyCostSize) +
+                                                         ", transparency pass and frame, " +
+                                                         std::to_string(cost.rounds) + " rounds"});
+    provenance.push_back({"transparency_rows", "the exact variant without shadows, GPU and reference"});
   }
+  OutputFile provenanceFile(provenancePath(csvPath));
+  provenanceFile.write([&](std::ostream& out) { writeKeyValues(out, provenance); });
+  OutputFile csvFile(csvPath);
+  std::ostream& csv = csvFile.stream();
   csv << "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
          "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels,shadow_filter,shadow_atlas,"
          "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
@@ -371,7 +383,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
     }
   }
   csvFile.commit();
-  std::printf("wrote %s and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(), dir.string().c_str());
+  std::printf("wrote %s (provenance in %s) and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(),
+              provenancePath(csvPath).c_str(), dir.string().c_str());
   if (slices) writeSlices(shaders, variants, sliceGrid, dir);
   checkGlError("accuracy");
   if (!args.has("--no-chart") && costs.empty()) {

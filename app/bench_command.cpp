@@ -70,7 +70,8 @@ const std::vector<OptionSpec>& benchOptions() {
       {"--pair-lights", "N", "lights of the --pair-cost frame", std::to_string(pairCost.lights), ""},
       {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn", std::to_string(pairCost.rounds),
        ""},
-      {"--csv", "F.csv", "write the results as CSV (provenance in leading # lines)"},
+      {"--csv", "F.csv", "write the results as CSV, and the run's provenance and settings beside it in "
+                         "F.provenance.txt"},
       {"--json", "F.json", "write the results, every timed frame included, as JSON"},
       {"--trace", "F.json", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
       {"--shard", "K/N",
@@ -160,6 +161,11 @@ void finishOutput(OutputFile* out, const std::function<void(std::ostream&)>& bod
   std::printf("wrote %s\n", out->path().c_str());
 }
 
+// The provenance file beside --csv's (csv_provenance.hpp), opened with it.
+std::unique_ptr<OutputFile> openCsvProvenance(const Args& args) {
+  return args.has("--csv") ? std::make_unique<OutputFile>(provenancePath(args.get("--csv"))) : nullptr;
+}
+
 PairCostSettings parsePairCostSettings(const Args& args) {
   PairCostSettings s;
   s.size = args.getSize("--size");
@@ -173,6 +179,7 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   report.variants = selectVariants(args.get("--pair-cost"));
   report.settings = settings;
   const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
+  const std::unique_ptr<OutputFile> csvProvenance = openCsvProvenance(args);
   const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
   const std::string timingRequest = args.get("--timing");
   auto context = createHeadlessContext(platform);
@@ -190,6 +197,7 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   report.provenance.set("load_average_end", loadAverage());
   printPairCostTable(std::cout, report);
   finishOutput(csv.get(), [&](std::ostream& out) { writePairCostCsv(out, report); });
+  finishOutput(csvProvenance.get(), [&](std::ostream& out) { writeKeyValues(out, pairCostCsvProvenance(report)); });
   finishOutput(json.get(), [&](std::ostream& out) { writePairCostJson(out, report); });
   return 0;
 }
@@ -210,8 +218,9 @@ int runBench(const std::vector<std::string>& argv) {
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
   std::vector<NamedFile> inputs;
   if (!isBuiltinScene(args.get("--scene"))) inputs.push_back({"--scene", args.get("--scene")});
-  checkOutputsApart(inputs, {{"--csv", args.get("--csv")}, {"--json", args.get("--json")},
-                             {"--trace", args.get("--trace")}});
+  checkOutputsApart(inputs, {{"--csv", args.get("--csv")},
+                             {"--csv's provenance", args.has("--csv") ? provenancePath(args.get("--csv")) : ""},
+                             {"--json", args.get("--json")}, {"--trace", args.get("--trace")}});
   if (args.has("--pair-cost")) {
     for (const char* sweepOnly : {"--trace", "--lights", "--culling", "--model", "--constant-density", "--shard"}) {
       if (args.has(sweepOnly)) throw UsageError(std::string(sweepOnly) + " belongs to the sweep, not --pair-cost");
@@ -250,6 +259,7 @@ int runBench(const std::vector<std::string>& argv) {
     scenes.push_back(std::move(scene));
   }
   const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
+  const std::unique_ptr<OutputFile> csvProvenance = openCsvProvenance(args);
   const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
   const std::unique_ptr<OutputFile> trace = openOutput(args, "--trace");
 
@@ -306,6 +316,7 @@ int runBench(const std::vector<std::string>& argv) {
 
   printBenchTable(std::cout, report);
   finishOutput(csv.get(), [&](std::ostream& out) { writeBenchCsv(out, report); });
+  finishOutput(csvProvenance.get(), [&](std::ostream& out) { writeKeyValues(out, benchCsvProvenance(report)); });
   finishOutput(json.get(), [&](std::ostream& out) { writeBenchJson(out, report); });
   finishOutput(trace.get(), [&](std::ostream& out) { writeTrace(out, report); });
   return 0;

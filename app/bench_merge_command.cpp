@@ -17,7 +17,7 @@ namespace {
 
 const std::vector<OptionSpec>& mergeOptions() {
   static const std::vector<OptionSpec> specs = {
-      {"--csv", "F.csv", "write the merged sweep as CSV, as pbr bench --csv writes it"},
+      {"--csv", "F.csv", "write the merged sweep as CSV (and F.provenance.txt), as pbr bench --csv writes it"},
       {"--json", "F.json", "write the merged sweep as JSON, as pbr bench --json writes it"},
       {"--trace", "F.json",
        "write the shards' timed frames as one Chrome trace, a process per shard on its own timeline (shards "
@@ -59,7 +59,9 @@ int runBenchMerge(const std::vector<std::string>& argv) {
   if (args.has("--trace")) requireExtension(args.get("--trace"), ".json");
   std::vector<NamedFile> inputs;
   for (const std::string& path : args.operands()) inputs.push_back({"shard", path});
-  checkOutputsApart(inputs, {{"--csv", args.get("--csv")}, {"--json", args.get("--json")},
+  checkOutputsApart(inputs, {{"--csv", args.get("--csv")},
+                             {"--csv's provenance", args.has("--csv") ? provenancePath(args.get("--csv")) : ""},
+                             {"--json", args.get("--json")},
                              {"--trace", args.get("--trace")}});
   std::vector<ShardFile> shards;
   for (const std::string& path : args.operands()) {
@@ -73,6 +75,11 @@ int runBenchMerge(const std::vector<std::string>& argv) {
   merged.provenance.set("merge_command", processCommandLine());
   printBenchTable(std::cout, merged);
   writeOutput(args, "--csv", writeBenchCsv, merged);
+  if (args.has("--csv")) {
+    OutputFile out(provenancePath(args.get("--csv")));
+    out.write([&](std::ostream& stream) { writeKeyValues(stream, benchCsvProvenance(merged)); });
+    std::printf("wrote %s\n", out.path().c_str());
+  }
   writeOutput(args, "--json", writeBenchJson, merged);
   writeOutput(args, "--trace", writeTrace, merged);
   return 0;

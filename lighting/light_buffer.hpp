@@ -64,7 +64,6 @@ class LightBuffer {
   uint32_t sceneIndex(uint32_t bufferIndex) const { return order_[bufferIndex]; }
   const std::vector<uint32_t>& order() const { return order_; }  // per buffer index, the scene's
   bool hasSpotLights() const { return hasSpots_; }
-  unsigned directionalCount() const { return directionalCount_; }
   size_t bytes() const { return (buffer_ ? buffer_->size() : 0) + (cones_ ? cones_->size() : 0); }
 
  private:
@@ -73,7 +72,6 @@ class LightBuffer {
   std::vector<uint32_t> order_;    // per buffer index, the scene's
   bool hasSpots_ = false;
   unsigned count_ = 0;
-  unsigned directionalCount_ = 0;
   UniformBuffer<DirectionalLightBlock> directionalBlock_{"lights.directional", DirectionalLightBlock{}};
 };
 

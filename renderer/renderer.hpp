@@ -134,7 +134,6 @@ class Renderer {
   const LightBuffer& lights() const { return scene_.lights; }
   const GBuffer& gbuffer() const { return targets_->gbuffer; }
   const IblMaps* ibl() const { return scene_.ibl.get(); }  // null without an environment
-  const UniformBuffer<FrameBlock>& frameUniforms() const { return frame_; }
   const Texture& ldr() const { return targets_->ldr; }  // the final RGBA8 frame, rows bottom-up as GL stores them
   RendererCounters counters() const;
 

@@ -13,6 +13,7 @@ axis) and the share of pixels more than 2 8-bit levels off (triangles, right axi
 ms."""
 import argparse
 import csv
+import os
 import statistics
 import sys
 
@@ -25,16 +26,17 @@ except ImportError:
 
 
 def read(path):
-    meta, rows = {}, []
+    """The provenance file beside the CSV (F.provenance.txt for F.csv) as a dict, and the CSV's rows."""
+    meta = {}
+    base = path[:-4] if path.endswith(".csv") else path
+    if os.path.exists(base + ".provenance.txt"):
+        with open(base + ".provenance.txt") as f:
+            for line in f:
+                key, _, value = line.partition(": ")
+                if value:
+                    meta[key] = value.strip()
     with open(path, newline="") as f:
-        lines = []
-        for line in f:
-            if line.startswith("# "):
-                key, _, value = line[2:].partition(": ")
-                meta[key] = value.strip()
-            else:
-                lines.append(line)
-    rows = list(csv.DictReader(lines))
+        rows = list(csv.DictReader(f))
     return meta, rows
 
 

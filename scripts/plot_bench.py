@@ -2,8 +2,8 @@
 """Charts of a `pbr bench` CSV: frame time against light count (log-log, one line per culling mode x shading
 model), per-pass stacked bars per configuration, and the speedup of clustered culling over brute force.
 
-Titles carry the GL renderer from the CSV's provenance lines, and say so when the times are CPU-rasterizer
-times (llvmpipe). Skipped configurations are left out of the lines and bars and named in the legends."""
+Titles carry the GL renderer from the provenance file beside the CSV (F.provenance.txt), and say so when the
+times are CPU-rasterizer times (llvmpipe). Skipped configurations are left out of the lines and bars and named in the legends."""
 import argparse
 import csv
 import os
@@ -23,16 +23,24 @@ FRAME_COLUMNS = ("frame", "cpu_frame")
 SHORT_MODEL = {"pbr": "PBR", "blinn-phong": "B-P"}
 
 
+def read_provenance(csv_path):
+    """The "key: value" lines of the provenance file `pbr` writes beside a CSV (F.provenance.txt for F.csv)."""
+    base = csv_path[:-4] if csv_path.endswith(".csv") else csv_path
+    provenance = {}
+    if os.path.exists(base + ".provenance.txt"):
+        with open(base + ".provenance.txt") as f:
+            for line in f:
+                key, _, value = line.partition(":")
+                if value:
+                    provenance[key.strip()] = value.strip()
+    return provenance
+
+
 def read_bench_csv(path):
     """Returns (provenance dict, header, rows as dicts) of a CSV written by `pbr bench --csv`."""
-    provenance, lines = {}, []
+    provenance = read_provenance(path)
     with open(path, newline="") as f:
-        for line in f:
-            if line.startswith("#"):
-                key, _, value = line[1:].partition(":")
-                provenance[key.strip()] = value.strip()
-            elif line.strip():
-                lines.append(line)
+        lines = [line for line in f if line.strip()]
     reader = csv.DictReader(lines)
     rows = list(reader)
     if not rows:

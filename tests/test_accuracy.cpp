@@ -43,8 +43,7 @@ std::vector<std::string> csvFields(const std::string& line) {
 std::map<std::string, std::map<std::string, std::string>> csvRows(const std::string& text) {
   std::istringstream in(text);
   std::string line;
-  do std::getline(in, line);
-  while (line.rfind("# ", 0) == 0);
+  std::getline(in, line);  // the header row comes first
   const std::vector<std::string> header = csvFields(line);
   std::map<std::string, std::map<std::string, std::string>> rows;
   while (std::getline(in, line)) {
@@ -93,8 +92,7 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));
   std::string line;
-  do std::getline(csv, line);
-  while (line.rfind("# ", 0) == 0);
+  std::getline(csv, line);
   CHECK(line == "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
                 "fixed_share,relative_rmse,mean_levels,max_levels,share_over_2,pixels,shadow_filter,shadow_atlas,"
                 "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
@@ -104,7 +102,10 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
   // A flat floor is tessellated exactly: its geometry error is zero.
   CHECK(line.rfind("geometry,fresnel-floor-40,reference,", 0) == 0);
   CHECK(line.find(",n/a,n/a,n/a,n/a,0,") != std::string::npos);
-  CHECK(test::readFile(dir.path() / "acc" / "accuracy.csv").find("# transparency_") == std::string::npos);
+  const std::string provenance = test::readFile(dir.path() / "acc" / "accuracy.provenance.txt");
+  CHECK(provenance.find("transparency_") == std::string::npos);
+  CHECK(provenance.rfind("gl_renderer: ", 0) == 0);
+  CHECK(provenance.find("\ntone_curve: aces-hill\n") != std::string::npos);
   size_t rows = 0;
   for (; std::getline(csv, line); ++rows) {
     CAPTURE(line);
@@ -195,7 +196,7 @@ TEST_CASE("pbr accuracy shadow rows: pcf3x3 at a 4096 atlas agrees with the refe
             "--no-chart"});
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   const std::string text = test::readFile(dir.path() / "acc" / "accuracy.csv");
-  CHECK(text.find("# shadow_state: ") != std::string::npos);
+  CHECK(test::readFile(dir.path() / "acc" / "accuracy.provenance.txt").find("\nshadow_state: ") != std::string::npos);
   auto rows = csvRows(text);
   REQUIRE(rows.count("unshadowed") == 1);
   REQUIRE(rows.count("shadow-pcf3x3-4096") == 1);
@@ -246,7 +247,8 @@ TEST_CASE("pbr accuracy transparency rows: every ordering against the reference,
             "160x90", "--out-dir", dir.file("acc"), "--no-chart"});
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   const std::string text = test::readFile(dir.path() / "acc" / "accuracy.csv");
-  CHECK(text.find("# transparency_cost_frame: transparency, 160x90, ") != std::string::npos);
+  CHECK(test::readFile(dir.path() / "acc" / "accuracy.provenance.txt")
+            .find("\ntransparency_cost_frame: transparency, 160x90, ") != std::string::npos);
   auto rows = csvRows(text);
   auto number = [&](const std::string& row, const std::string& column) { return std::stod(rows[row][column]); };
   // The other row kinds leave the transparency columns empty.

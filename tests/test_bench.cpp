@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench/csv_provenance.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 
@@ -24,7 +25,7 @@ using Json = nlohmann::json;
 
 namespace {
 
-// What a report must say about the circumstances of its run, in the CSV's "# key: value" lines and in JSON.
+// What a report must say about the circumstances of its run, in the CSV's provenance file and in JSON.
 const char* const kProvenanceKeys[] = {"command",     "run_date_utc", "gl_renderer", "gl_version",
                                        "gl_vendor",   "egl_platform", "timing_mode", "timing_note",
                                        "cpu_model",   "cpu_cores",    "build_type",  "git_commit",
@@ -56,15 +57,13 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
   return fields;
 }
 
-Csv parseCsv(const std::string& text) {
+// A CSV `pbr` wrote and the provenance file beside it (F.provenance.txt): the CSV starts with its header row.
+Csv readCsv(const std::string& path) {
   Csv csv;
-  std::istringstream in(text);
+  std::istringstream in(pbr::test::readFile(path));
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("# ", 0) == 0) {
-      const size_t colon = line.find(": ");
-      REQUIRE_MESSAGE(colon != std::string::npos, line);
-      csv.provenance[line.substr(2, colon - 2)] = line.substr(colon + 2);
-    } else if (csv.header.empty()) {
+    REQUIRE_MESSAGE(line.rfind('#', 0) != 0, line);
+    if (csv.header.empty()) {
       csv.header = splitCsvLine(line);
     } else {
       const std::vector<std::string> fields = splitCsvLine(line);
@@ -73,6 +72,12 @@ Csv parseCsv(const std::string& text) {
       for (size_t i = 0; i < fields.size(); ++i) row[csv.header[i]] = fields[i];
       csv.rows.push_back(row);
     }
+  }
+  std::istringstream provenance(pbr::test::readFile(pbr::provenancePath(path)));
+  for (std::string line; std::getline(provenance, line);) {
+    const size_t colon = line.find(": ");
+    REQUIRE_MESSAGE(colon != std::string::npos, line);
+    csv.provenance[line.substr(0, colon)] = line.substr(colon + 2);
   }
   return csv;
 }
@@ -113,7 +118,7 @@ TEST_CASE("bench: a tiny sweep writes CSV and JSON with every column filled and 
   REQUIRE(run.exitCode == 0);
   CHECK(run.out.find("lighting") != std::string::npos);  // the table
 
-  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  const Csv csv = readCsv(dir.file("bench.csv"));
   for (const char* key : kProvenanceKeys) {
     CAPTURE(key);
     REQUIRE(csv.provenance.count(key) == 1);
@@ -181,7 +186,7 @@ TEST_CASE("bench: --shadows on shadows every light, and each configuration repor
   const PbrRun run = runTinySweep(dir, {"--shadows", "on", "--shadow-atlas", "1024"});
   CAPTURE(run.err);
   REQUIRE(run.exitCode == 0);
-  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  const Csv csv = readCsv(dir.file("bench.csv"));
   CHECK(csv.provenance.at("shadows") == "on");
   CHECK(csv.provenance.at("shadow_atlas") == "1024");
   REQUIRE(csv.rows.size() == 4);
@@ -281,7 +286,7 @@ TEST_CASE("bench: --max-seconds skips configurations estimated to take longer, a
   REQUIRE(run.exitCode == 0);
   CHECK(run.out.find("skipped") != std::string::npos);
 
-  const Csv csv = parseCsv(pbr::test::readFile(dir.file("bench.csv")));
+  const Csv csv = readCsv(dir.file("bench.csv"));
   REQUIRE(csv.rows.size() == 4);
   for (const auto& row : csv.rows) {
     CHECK(row.at("status") == "skipped");
@@ -312,7 +317,7 @@ TEST_CASE("bench: --constant-density scales light radii by sqrt(smallest light c
     const PbrRun run = pbr::test::runPbr(dir, args);
     CAPTURE(run.err);
     REQUIRE(run.exitCode == 0);
-    sweeps.push_back(parseCsv(pbr::test::readFile(dir.file("bench.csv"))));
+    sweeps.push_back(readCsv(dir.file("bench.csv")));
     REQUIRE(sweeps.back().rows.size() == 2);
   }
   const auto avg = [&](size_t sweep, size_t row) {
@@ -386,8 +391,8 @@ TEST_CASE("bench: a sweep run as 2 shards under GNU parallel merges into the row
 
   const char* const configColumns[] = {"scene", "width", "height", "lights", "culling", "model",
                                        "light_radius_scale", "status", "timed_frames"};
-  const Csv expected = parseCsv(pbr::test::readFile(dir.file("whole.csv")));
-  const Csv merged = parseCsv(pbr::test::readFile(dir.file("merged.csv")));
+  const Csv expected = readCsv(dir.file("whole.csv"));
+  const Csv merged = readCsv(dir.file("merged.csv"));
   CHECK(merged.header == expected.header);
   REQUIRE(merged.rows.size() == 4);
   REQUIRE(merged.rows.size() == expected.rows.size());

@@ -117,16 +117,6 @@ std::string csvText(const BenchReport& r) {
   return out.str();
 }
 
-// The CSV without its "# key: value" lines: the header and the rows.
-std::string csvTable(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string table;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("# ", 0) != 0) table += line + "\n";
-  }
-  return table;
-}
-
 // Shards 1 and 2 of 2 of the tiny sweep.
 struct Shards {
   std::string one, two;
@@ -169,15 +159,16 @@ TEST_CASE("bench-merge: two shards merge into the CSV and JSON of the unsharded 
   REQUIRE(run.exitCode == 0);
   CHECK(run.out.find("skipped") != std::string::npos);  // the table
 
-  const std::string csv = pbr::test::readFile(dir.file("merged.csv"));
-  CHECK(csvTable(csv) == csvTable(csvText(whole)));
-  CHECK(csv.find("# sweep_fingerprint: " + pbr::sweepFingerprint(tinySweep()) + "\n") != std::string::npos);
-  CHECK(csv.find("# shard:") == std::string::npos);
-  CHECK(csv.find("# command: shard 1: pbr bench --shard 1/2; shard 2: pbr bench --shard 2/2\n") != std::string::npos);
-  CHECK(csv.find("# gl_renderer: llvmpipe (LLVM 15.0.6, 256 bits)\n") != std::string::npos);
-  CHECK(csv.find("# merged_shards: 2: " + shards.one + ", " + shards.two + "\n") != std::string::npos);
+  CHECK(pbr::test::readFile(dir.file("merged.csv")) == csvText(whole));
+  const std::string provenance = pbr::test::readFile(dir.file("merged.provenance.txt"));
+  CHECK(provenance.find("\nsweep_fingerprint: " + pbr::sweepFingerprint(tinySweep()) + "\n") != std::string::npos);
+  CHECK(provenance.find("\nshard:") == std::string::npos);
+  CHECK(provenance.find("command: shard 1: pbr bench --shard 1/2; shard 2: pbr bench --shard 2/2\n") !=
+        std::string::npos);
+  CHECK(provenance.find("\ngl_renderer: llvmpipe (LLVM 15.0.6, 256 bits)\n") != std::string::npos);
+  CHECK(provenance.find("\nmerged_shards: 2: " + shards.one + ", " + shards.two + "\n") != std::string::npos);
   // Keys in the order the bench writes them, not the JSON's sorted order.
-  CHECK(csv.find("# run_date_utc:") < csv.find("# gl_renderer:"));
+  CHECK(provenance.find("run_date_utc:") < provenance.find("gl_renderer:"));
 
   std::ostringstream wholeJson;
   pbr::writeBenchJson(wholeJson, whole);

@@ -16,11 +16,17 @@ std::string terms(const AccuracyVariant& v) { return describeTerms(v.model, v.sh
 
 }  // namespace
 
-void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
-  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << value << "\n";
+KeyValues pairCostCsvProvenance(const PairCostReport& report) {
+  KeyValues entries = report.provenance.entries;
   const PairCostSettings& s = report.settings;
-  out << "# pair_cost_frame: " << s.size.x << "x" << s.size.y << ", " << s.lights
-      << " lights reaching every pixel, brute force\n# rounds: " << s.rounds << "\n";
+  entries.push_back({"pair_cost_frame", std::to_string(s.size.x) + "x" + std::to_string(s.size.y) + ", " +
+                                            std::to_string(s.lights) + " lights reaching every pixel, brute force"});
+  entries.push_back({"rounds", std::to_string(s.rounds)});
+  return entries;
+}
+
+void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
+  const PairCostSettings& s = report.settings;
   out << "variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,ns_per_pair_p10,"
          "ns_per_pair_p90,ns_per_pair_min,ns_per_pair_max,fixed_share,pairs_per_frame,transparent_ns_per_pair_median,"
          "transparent_ns_per_pair_p10,transparent_ns_per_pair_p90,transparent_fixed_share\n";

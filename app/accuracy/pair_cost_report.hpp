@@ -4,6 +4,7 @@
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/accuracy/pair_cost.hpp"
+#include "app/bench/csv_provenance.hpp"
 #include "core/provenance.hpp"
 
 namespace pbr {
@@ -16,8 +17,10 @@ struct PairCostReport {
   std::vector<PairCost> costs;  // one per variant, same order
 };
 
-// CSV: provenance and settings as leading "# key: value" lines, then one row per variant.
+// CSV: a header row, then one row per variant; its provenance file (csv_provenance.hpp) holds the provenance and
+// settings.
 void writePairCostCsv(std::ostream& out, const PairCostReport& report);
+KeyValues pairCostCsvProvenance(const PairCostReport& report);
 // JSON (schema "pbr-pair-cost/1"): provenance, settings and one object per variant.
 void writePairCostJson(std::ostream& out, const PairCostReport& report);
 void printPairCostTable(std::ostream& out, const PairCostReport& report);

@@ -29,14 +29,6 @@ std::string csvField(const std::string& s) {
   return out + "\"";
 }
 
-// Provenance values are single-line by construction, but a command line may hold anything; unlike core's oneLine,
-// nothing is cut: the CSV keeps the whole command.
-std::string withoutLineBreaks(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  std::replace(s.begin(), s.end(), '\r', ' ');
-  return s;
-}
-
 const char* const kStatNames[] = {"median", "p10", "p90", "min", "max"};
 
 double statValue(const TimeSummary& t, int i) {
@@ -259,9 +251,13 @@ std::string sweepFingerprint(const BenchSettings& settings) {
   return text;
 }
 
+KeyValues benchCsvProvenance(const BenchReport& report) {
+  KeyValues entries = report.provenance.entries;
+  for (const auto& entry : settingsRecord(report)) entries.push_back(entry);
+  return entries;
+}
+
 void writeBenchCsv(std::ostream& out, const BenchReport& report) {
-  for (const auto& [key, value] : report.provenance.entries) out << "# " << key << ": " << withoutLineBreaks(value) << "\n";
-  for (const auto& [key, value] : settingsRecord(report)) out << "# " << key << ": " << value << "\n";
   const std::vector<std::string> passes = reportedPasses(report.results);
   const Record header = csvRecord(BenchResult{}, passes);
   for (size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i].first;

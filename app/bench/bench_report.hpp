@@ -6,6 +6,7 @@
 
 #include "app/bench/bench_shard.hpp"
 #include "app/bench/bench_sweep.hpp"
+#include "app/bench/csv_provenance.hpp"
 #include "core/messages.hpp"
 #include "core/provenance.hpp"
 
@@ -23,11 +24,13 @@ struct BenchReport {
 // its shards included, carry the same one.
 std::string sweepFingerprint(const BenchSettings& settings);
 
-// CSV: the provenance, settings, sweep fingerprint and shard as leading "# key: value" lines, a header row, then one row per
-// configuration with five order statistics per pass. Every cell holds a value: "skipped" for measurements of a
+// CSV: a header row, then one row per configuration with five order statistics per pass. Every cell holds a value: "skipped" for measurements of a
 // skipped configuration, "n/a" where a quantity does not exist (the cluster pass and cluster statistics of
 // brute-force rows).
 void writeBenchCsv(std::ostream& out, const BenchReport& report);
+// What the CSV's provenance file holds (csv_provenance.hpp): the provenance, the settings, the sweep fingerprint and
+// the shard.
+KeyValues benchCsvProvenance(const BenchReport& report);
 
 // JSON (schema "pbr-bench/1"): provenance, settings, the sweep's size and fingerprint, the shard ("shard": {"index":
 // K, "count": N}, only in a shard's report) and one object per configuration with summaries, every timed frame,
