@@ -281,12 +281,13 @@ int runRender(const std::vector<std::string>& argv) {
   applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
   const ExposureChoice exposure = applyExposureOptions(args, scene);
-  if (debug == DebugChannel::Shadows && !anyShadowCaster(scene.lights, scene.directionalLights, shadows.mode)) {
-    throw UsageError("--debug shadows: no light of the scene casts shadows under --shadows " +
-                     std::string(toString(shadows.mode)) + " (--shadows on makes every light cast)");
+  const DebugNeeds needs = debug ? debugChannelInfo(*debug).needs : DebugNeeds::Nothing;
+  if (needs == DebugNeeds::ShadowCaster && !anyShadowCaster(scene.lights, scene.directionalLights, shadows.mode)) {
+    throw UsageError("--debug " + std::string(toString(*debug)) + ": no light of the scene casts shadows under " +
+                     "--shadows " + toString(shadows.mode) + " (--shadows on makes every light cast)");
   }
-  if (debug == DebugChannel::Transparency && !hasBlendMaterial(scene)) {
-    throw UsageError("--debug transparency: the scene has no material with alphaMode BLEND");
+  if (needs == DebugNeeds::BlendSurface && !hasBlendMaterial(scene)) {
+    throw UsageError("--debug " + std::string(toString(*debug)) + ": the scene has no material with alphaMode BLEND");
   }
   checkOutputsApart(sceneInputs(sceneName, scene), {{"--out", outPng}, {"--hdr", outHdr}, {"--json", outJson}});
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of

@@ -94,20 +94,23 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   const bool ibl = scene_.ibl && options.model == ShadingModel::Pbr;
   const bool shadows = shadowed(options.shadows.mode);
   const bool blended = scene_.geometry.hasBlended();
-  // The cluster views need the grid that only clustered culling builds, the shadows view a light that casts, the
-  // transparency view a BLEND surface: without them the frame shows no debug view.
-  const bool debug = options.debug && (clustered || !needsClusterGrid(*options.debug)) &&
-                     (shadows || *options.debug != DebugChannel::Shadows) &&
-                     (blended || *options.debug != DebugChannel::Transparency);
-  const bool emission = debug && *options.debug == DebugChannel::Emission;
-  const bool efficiency = debug && *options.debug == DebugChannel::Efficiency;
-  const bool shadowView = debug && *options.debug == DebugChannel::Shadows;
-  const bool layerView = debug && *options.debug == DebugChannel::Transparency;
-  // The surface channels draw the G-buffer alone, the efficiency and shadows channels what the lighting pass counts
-  // for them, the transparency channel the BLEND layers it counts itself; all write every display pixel, so the
-  // passes whose output they would replace are left out.
-  const bool surfaceChannel = debug && isGBufferChannel(*options.debug) && !emission;
-  const bool replacesDisplay = surfaceChannel || efficiency || shadowView || layerView;
+  // A debug channel (debug/debug_channel.hpp) shows only where the frame has what it draws: the cluster grid that
+  // only clustered culling builds, a light that casts, a BLEND surface; without it the frame is shown as it is.
+  const DebugChannelInfo* debug = options.debug ? &debugChannelInfo(*options.debug) : nullptr;
+  if (debug && ((debug->needs == DebugNeeds::ClusterGrid && !clustered) ||
+                (debug->needs == DebugNeeds::ShadowCaster && !shadows) ||
+                (debug->needs == DebugNeeds::BlendSurface && !blended))) {
+    debug = nullptr;
+  }
+  const DebugSource source = debug ? debug->source : DebugSource::Surface;
+  const bool emission = debug && source == DebugSource::Emission;
+  const bool efficiency = debug && source == DebugSource::PairCounts;
+  const bool shadowView = debug && source == DebugSource::ShadowLight;
+  // The surface channels draw the G-buffer alone, the transparency channel the BLEND layers it counts itself, the
+  // emission channel post's picture of the radiance as the geometry pass leaves it: none needs the lit radiance.
+  const bool unlit = debug && (source == DebugSource::Surface || source == DebugSource::Emission ||
+                               source == DebugSource::Layers);
+  const bool replacesDisplay = debug && debug->replacesDisplay;
   PassList passes;
   passes.push_back({"gbuffer", {R::Geometry, R::Camera}, {R::GBuffer, R::Radiance},
                     [this, &t] { scene_.geometry.render(t.gbuffer, frame_); }});
@@ -123,7 +126,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                       }});
   }
   // After the cluster pass: the shadow views are planned from the clusters the surfaces occupy.
-  if (shadows && !emission && !surfaceChannel && !layerView) {
+  if (shadows && !unlit) {
     std::vector<R> shadowReads = {R::Geometry, R::Lights, R::Camera, R::GBuffer};
     if (clustered) shadowReads.push_back(R::ClusterLists);
     passes.push_back({"shadow", shadowReads, {R::ShadowMaps},
@@ -138,7 +141,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (shadowView) lightingWrites.push_back(R::ShadowLight);
   // The emission channel is post's picture of the radiance target as the geometry pass leaves it, emission alone:
   // leaving lighting out shows it without a copy of the target, and with the frame's own exposure and tone map.
-  if (!emission && !surfaceChannel && !layerView) {
+  if (!unlit) {
     passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency,
                                                                   shadows, shadowView] {
                         const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
@@ -192,7 +195,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   }
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster
   // views are painted after anti-aliasing, so that their legend is never filtered.
-  const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || needsClusterGrid(*options.debug));
+  const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || source == DebugSource::ClusterGrid);
   const bool metered = options.autoExposure && options.model == ShadingModel::Pbr && !replacesDisplay;
   if (metered) {
     if (!scene_.exposureMeter) scene_.exposureMeter = std::make_unique<ExposureMeter>(scene_.programs);
@@ -236,35 +239,42 @@ void Renderer::captureFrame(int frame, const FrameCapturer& capturer) {
 FramePass Renderer::debugPass(DebugChannel channel) {
   using R = FrameResource;
   FrameTargets& t = *targets_;
+  const DebugSource source = debugChannelInfo(channel).source;
   std::vector<R> reads;
-  if (channel == DebugChannel::Emission) {
-    reads = {R::Display, R::Camera};
-  } else if (isGBufferChannel(channel)) {
-    reads = {R::GBuffer, R::Camera};
-  } else if (needsClusterGrid(channel)) {
-    reads = {R::ClusterLists, R::GBuffer, R::Camera, R::Display};
-  } else if (channel == DebugChannel::Shadows) {
-    reads = {R::ShadowLight, R::ShadowMaps, R::Camera};
-  } else if (channel == DebugChannel::Transparency) {
-    reads = {R::Geometry, R::GBuffer, R::Camera};
-  } else {
-    reads = {R::PairCounts, R::Camera};
+  switch (source) {
+    case DebugSource::Emission: reads = {R::Display, R::Camera}; break;
+    case DebugSource::Surface: reads = {R::GBuffer, R::Camera}; break;
+    case DebugSource::ClusterGrid: reads = {R::ClusterLists, R::GBuffer, R::Camera, R::Display}; break;
+    case DebugSource::ShadowLight: reads = {R::ShadowLight, R::ShadowMaps, R::Camera}; break;
+    case DebugSource::Layers: reads = {R::Geometry, R::GBuffer, R::Camera}; break;
+    case DebugSource::PairCounts: reads = {R::PairCounts, R::Camera}; break;
   }
-  return {"debug", reads, {R::Display}, [this, &t, channel] {
+  return {"debug", reads, {R::Display}, [this, &t, channel, source] {
             scene_.debugLegend.update(makeLegendBlock(legendText(channel, frameData_, t.clusters.dims().z)));
-            if (isGBufferChannel(channel)) {
-              scene_.gbufferDebug.render(channel, t.gbuffer, frame_, scene_.debugLegend, t.ldr);
-            } else if (needsClusterGrid(channel)) {
-              scene_.clusterDebug.render(channel, t.clusters, t.gbuffer.depth, frame_, scene_.debugLegend, t.ldr);
-            } else if (channel == DebugChannel::Transparency) {
-              const FrameTargets::LayerCount& count = t.layerCount();
-              scene_.transparencyDebug.render(blendedSurfaces(count.framebuffer.id()), count.layers, frame_,
-                                              scene_.debugLegend, t.ldr);
-            } else if (channel == DebugChannel::Shadows) {
-              scene_.shadowDebug.render(t.shadowLight(), scene_.shadows.maps(), scene_.shadows.ownerMap(), frame_,
-                                        scene_.debugLegend, t.ldr);
-            } else {
-              scene_.efficiencyDebug.render(t.pairCounts(), frame_, scene_.debugLegend, t.ldr);
+            switch (source) {
+              case DebugSource::Surface:
+              case DebugSource::Emission: {
+                const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
+                                              t.gbuffer.depth};
+                scene_.gbufferDebug.render(channel, surface, frame_, scene_.debugLegend, t.ldr);
+                break;
+              }
+              case DebugSource::ClusterGrid:
+                scene_.clusterDebug.render(channel, t.clusters, t.gbuffer.depth, frame_, scene_.debugLegend, t.ldr);
+                break;
+              case DebugSource::Layers: {
+                const FrameTargets::LayerCount& count = t.layerCount();
+                scene_.transparencyDebug.render(blendedSurfaces(count.framebuffer.id()), count.layers, frame_,
+                                                scene_.debugLegend, t.ldr);
+                break;
+              }
+              case DebugSource::ShadowLight:
+                scene_.shadowDebug.render(t.shadowLight(), scene_.shadows.maps(), scene_.shadows.ownerMap(), frame_,
+                                          scene_.debugLegend, t.ldr);
+                break;
+              case DebugSource::PairCounts:
+                scene_.efficiencyDebug.render(t.pairCounts(), frame_, scene_.debugLegend, t.ldr);
+                break;
             }
           }};
 }

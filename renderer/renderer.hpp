@@ -12,7 +12,7 @@
 #include "core/shader_library.hpp"
 #include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
-#include "lighting/debug_channel.hpp"
+#include "debug/debug_channel.hpp"
 #include "core/tone_curve.hpp"
 #include "renderer/culling_choice.hpp"
 #include "renderer/frame_targets.hpp"

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "lighting/debug_channel.hpp"
+#include "debug/debug_channel.hpp"
 #include "tests/cli_util.hpp"
 
 using pbr::test::isOneLine;

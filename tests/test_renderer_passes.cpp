@@ -1,6 +1,7 @@
 // The renderer's declared pass list: the order each configuration runs and what each pass reads.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -94,4 +95,30 @@ TEST_CASE("pass list: BLEND surfaces add a transparency pass after lighting, and
   // A channel that replaces the frame draws no transparency.
   options.debug = DebugChannel::Efficiency;
   CHECK(names(renderer.passList(options)) == std::vector<std::string>{"gbuffer", "cluster", "lighting", "debug"});
+}
+
+TEST_CASE("pass list: each debug channel's row decides its passes: a channel that replaces the display has no post") {
+  PBR_REQUIRE_GL();
+  const ShaderLibrary shaders;
+  const Scene scene = makeBuiltinScene("transparency");  // BLEND surfaces, for the layers channel
+  Renderer renderer(shaders, scene, 64, 36);
+  for (const DebugChannel channel : kDebugChannels) {
+    const DebugChannelInfo& row = debugChannelInfo(channel);
+    CAPTURE(row.name);
+    CHECK(std::string(toString(channel)) == row.name);
+    CHECK(isGBufferChannel(channel) == (row.gbufferDefine != nullptr));
+    FrameOptions options;
+    options.debug = channel;
+    options.shadows.mode = ShadowMode::On;  // every light casts, for the shadows channel
+    options.autoExposure = true;
+    const std::vector<std::string> passes = names(renderer.passList(options));
+    const auto has = [&](const char* name) { return std::count(passes.begin(), passes.end(), name) == 1; };
+    CHECK(has("debug"));
+    CHECK(has("post") == !row.replacesDisplay);
+    CHECK(has("exposure") == !row.replacesDisplay);
+    const bool unlit = row.source == DebugSource::Surface || row.source == DebugSource::Emission ||
+                       row.source == DebugSource::Layers;
+    CHECK(has("lighting") == !unlit);
+    CHECK(has("shadow") == !unlit);
+  }
 }

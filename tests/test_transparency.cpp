@@ -14,7 +14,7 @@
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "core/gltf_loader.hpp"
-#include "lighting/transparency_debug_pass.hpp"
+#include "debug/transparency_debug_pass.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

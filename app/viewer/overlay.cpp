@@ -301,10 +301,11 @@ void Overlay::controls(Viewer& viewer) {
   if (viewer.view() && needsClusterGrid(*viewer.view()) && f.culling != Culling::Clustered) {
     ImGui::TextDisabled("(the cluster views need clustered culling)");
   }
-  if (viewer.view() == DebugChannel::Shadows && !viewer.lightStats().shadows.shadowedLights) {
+  const DebugNeeds needs = viewer.view() ? debugChannelInfo(*viewer.view()).needs : DebugNeeds::Nothing;
+  if (needs == DebugNeeds::ShadowCaster && !viewer.lightStats().shadows.shadowedLights) {
     ImGui::TextDisabled("(no light casts: shadows on makes every light cast)");
   }
-  if (viewer.view() == DebugChannel::Transparency && !blends) {
+  if (needs == DebugNeeds::BlendSurface && !blends) {
     ImGui::TextDisabled("(no material of the scene blends)");
   }
 

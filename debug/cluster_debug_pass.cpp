@@ -1,4 +1,4 @@
-#include "lighting/cluster_debug_pass.hpp"
+#include "debug/cluster_debug_pass.hpp"
 
 #include <stdexcept>
 #include <string>

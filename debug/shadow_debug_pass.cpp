@@ -1,4 +1,4 @@
-#include "lighting/shadow_debug_pass.hpp"
+#include "debug/shadow_debug_pass.hpp"
 
 #include "lighting/lighting_bindings.hpp"
 

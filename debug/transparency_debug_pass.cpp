@@ -1,4 +1,4 @@
-#include "lighting/transparency_debug_pass.hpp"
+#include "debug/transparency_debug_pass.hpp"
 
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/frame_block.hpp"
-#include "lighting/debug_channel.hpp"
+#include "debug/debug_channel.hpp"
 
 namespace pbr {
 

@@ -1,4 +1,4 @@
-#include "lighting/efficiency_debug_pass.hpp"
+#include "debug/efficiency_debug_pass.hpp"
 
 #include "lighting/lighting_bindings.hpp"
 

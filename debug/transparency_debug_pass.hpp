@@ -4,7 +4,7 @@
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
-#include "lighting/debug_legend.hpp"
+#include "debug/debug_legend.hpp"
 
 namespace pbr {
 

@@ -1,10 +1,10 @@
-#include "lighting/debug_legend.hpp"
+#include "debug/debug_legend.hpp"
 
 #include <cctype>
 #include <cstdio>
 #include <stdexcept>
 
-#include "lighting/transparency_debug_pass.hpp"
+#include "debug/transparency_debug_pass.hpp"
 
 namespace pbr {
 

@@ -3,8 +3,8 @@
 #include "core/frame_block.hpp"
 #include "core/program_cache.hpp"
 #include "core/uniform_buffer.hpp"
-#include "lighting/debug_channel.hpp"
-#include "lighting/debug_legend.hpp"
+#include "debug/debug_channel.hpp"
+#include "debug/debug_legend.hpp"
 #include "lighting/light_clusters.hpp"
 
 namespace pbr {
