@@ -2,6 +2,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -121,4 +125,92 @@ TEST_CASE("pass list: each debug channel's row decides its passes: a channel tha
     CHECK(has("lighting") == !unlit);
     CHECK(has("shadow") == !unlit);
   }
+}
+
+namespace {
+
+// A pass's row of docs/architecture.md's table: what it reads and writes, required (plain) and optional ([...]).
+struct DocumentedPass {
+  std::set<std::string> reads, optionalReads, writes, optionalWrites;
+};
+
+void parseCell(const std::string& cell, std::set<std::string>& required, std::set<std::string>& optional) {
+  std::istringstream items(cell);
+  for (std::string item; std::getline(items, item, ',');) {
+    item.erase(0, item.find_first_not_of(' '));
+    item.erase(item.find_last_not_of(' ') + 1);
+    if (item.size() > 2 && item.front() == '[' && item.back() == ']') {
+      optional.insert(item.substr(1, item.size() - 2));
+    } else {
+      required.insert(item);
+    }
+  }
+}
+
+std::map<std::string, DocumentedPass> documentedPasses() {
+  std::ifstream doc(std::string(PBR_SOURCE_DIR) + "/docs/architecture.md");
+  std::map<std::string, DocumentedPass> passes;
+  bool inSection = false;  // the table of the section "The frame's pass list"
+  for (std::string line; std::getline(doc, line);) {
+    if (line.rfind("## ", 0) == 0) inSection = line == "## The frame's pass list";
+    if (!inSection || line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::istringstream row(line.substr(1));
+    for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
+    if (cells.size() < 3) continue;
+    const std::string name = cells[0].substr(cells[0].find('`') + 1, cells[0].rfind('`') - cells[0].find('`') - 1);
+    DocumentedPass& p = passes[name];
+    parseCell(cells[1], p.reads, p.optionalReads);
+    parseCell(cells[2], p.writes, p.optionalWrites);
+  }
+  return passes;
+}
+
+void checkAgainst(const std::set<std::string>& required, const std::set<std::string>& optional,
+                  const std::vector<R>& actual) {
+  std::set<std::string> names;
+  for (const R r : actual) names.insert(toString(r));
+  for (const std::string& r : required) CHECK_MESSAGE(names.count(r) == 1, "missing " << r);
+  for (const std::string& r : names) CHECK_MESSAGE(required.count(r) + optional.count(r) == 1, "undocumented " << r);
+}
+
+}  // namespace
+
+TEST_CASE("pass list: every pass of the renderer reads and writes what docs/architecture.md's table says") {
+  PBR_REQUIRE_GL();
+  const std::map<std::string, DocumentedPass> documented = documentedPasses();
+  REQUIRE(documented.size() >= 10);
+  const ShaderLibrary shaders;
+  Scene lit = makeBuiltinScene("transparency");
+  lit.environment = EnvironmentDesc{};
+  Renderer renderer(shaders, lit, 64, 36);
+  std::vector<FrameOptions> configurations;
+  for (const Culling culling : {Culling::Clustered, Culling::None}) {
+    FrameOptions options;
+    options.culling = culling;
+    options.shadows.mode = ShadowMode::On;
+    options.aa = AntiAliasing::Fxaa;
+    options.autoExposure = true;
+    configurations.push_back(options);
+    for (const DebugChannel channel : kDebugChannels) {
+      options.debug = channel;
+      configurations.push_back(options);
+    }
+  }
+  ImageRgba8 ldr;
+  ImageRgbaF hdr;
+  std::set<std::string> seen;
+  for (const FrameOptions& options : configurations) {
+    for (const FramePass& pass : renderer.passList(options, {&ldr, &hdr})) {
+      CAPTURE(pass.name);
+      CAPTURE(options.debug ? toString(*options.debug) : "no debug channel");
+      seen.insert(pass.name);
+      const auto row = documented.find(pass.name);
+      REQUIRE(row != documented.end());
+      checkAgainst(row->second.reads, row->second.optionalReads, pass.reads);
+      checkAgainst(row->second.writes, row->second.optionalWrites, pass.writes);
+    }
+  }
+  // The table names no pass the renderer never runs.
+  for (const auto& [name, row] : documented) CHECK_MESSAGE(seen.count(name) == 1, name << " never ran");
 }
