@@ -70,8 +70,8 @@ const std::vector<OptionSpec>& accuracyOptions() {
       {"--transparency-cost-size", "WxH", "frame size at which the transparency rows' transparency pass and frame "
        "are timed", sizeText({640, 360}), ""},
       {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go", "out/accuracy", ""},
-      {"--slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
-      {"--slice-size", "AxR", "slice grid: view angles x roughness values", sizeText({90, 64}), ""},
+      {"--brdf-slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
+      {"--brdf-slice-size", "AxR", "BRDF slice grid: view angles x roughness values", sizeText({90, 64}), ""},
       {"--no-chart", "", "skip the chart (drawn by scripts/plot_accuracy.py with python3-matplotlib)"},
       {"--threads", "N", "reference renderer threads, 0 for all", std::to_string(referenceDefaults.threads), ""},
       timingOption(),
@@ -198,8 +198,8 @@ int runAccuracy(const std::vector<std::string>& argv) {
   cost.rounds = args.getInt("--rounds", 1, 10000);
   const bool measureCost = !args.has("--no-cost");
   const std::filesystem::path dir = args.get("--out-dir");
-  const bool slices = args.has("--slices");
-  const glm::ivec2 sliceGrid = args.getSize("--slice-size");
+  const bool slices = args.has("--brdf-slices");
+  const glm::ivec2 sliceGrid = args.getSize("--brdf-slice-size");
   reference::ReferenceOptions referenceOptions;
   referenceOptions.threads = args.getInt("--threads", 0, 1024);
   const std::string timing = args.get("--timing");

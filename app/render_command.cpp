@@ -10,6 +10,7 @@
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/frame_notes.hpp"
+#include "app/render_settings.hpp"
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/frame_capture.hpp"
@@ -71,7 +72,8 @@ const std::vector<OptionSpec>& renderOptions() {
            "bring over what they would unshadowed, 0 black, with the shadow atlas inset; clusters and slices need "
            "--culling clustered)",
        "", "none, the frame itself"},
-      {"--stats", "", "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
+      {"--stats", "",
+       "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
       {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
       {"--exposure", "X|auto",
        "exposure multiplier before the tone curve, or auto: metered from the frame itself on the GPU (the mean log2 "
@@ -90,8 +92,12 @@ const std::vector<OptionSpec>& renderOptions() {
        "the warm-up, the timed ones and the final capture frame, 1 to --warmup + --frames + 2): captured through "
        "RenderDoc's in-application API when run under RenderDoc (renderdoccmd capture ...), and always wrapped in a "
        "debug group and marker 'capture frame K'", "", "none"},
-      {"--json", "F.json", "write the timings (every timed frame), light statistics and provenance as JSON (pbr bench "
-                           "schema)"},
+      {"--json", "F.json", "write the timings (every timed frame), light statistics, provenance and the settings that "
+                           "decided the frame (render_settings) as JSON (pbr bench schema)"},
+      {"--settings", "F.json",
+       "take every option that decides the frame from the render_settings of a report pbr render --json wrote, so "
+       "that it renders the same frame; options given here replace the report's",
+       "", "none: the options given here and their defaults"},
       timingOption(),
       eglPlatformOption(),
       allowOutsideUrisOption(),
@@ -213,8 +219,10 @@ void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
 
 }  // namespace
 
-int runRender(const std::vector<std::string>& argv) {
+int runRender(const std::vector<std::string>& commandLine) {
   const auto& specs = renderOptions();
+  // --settings F.json: the report's options, under the ones given here.
+  const std::vector<std::string> argv = withSettingsFile(specs, commandLine);
   Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr render [options]",
@@ -396,6 +404,7 @@ int runRender(const std::vector<std::string>& argv) {
     report.settings.timing = timing;
     report.settings.shadows = shadows;
     report.results.push_back(std::move(result));
+    report.renderSettings = renderSettings(specs, args);
     jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
     std::printf("wrote %s\n", outJson.c_str());
   }

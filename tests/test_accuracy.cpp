@@ -87,7 +87,8 @@ TEST_CASE("pbr accuracy: one CSV row per variant with cost per pair and error, a
   const test::TempDir dir;
   const test::PbrRun run = test::runPbr(dir, {"accuracy", "--size", "32x18", "--pair-size", "32x18", "--pair-lights",
                                               "4", "--rounds", "3", "--scenes", "fresnel-floor:40", "--out-dir",
-                                              dir.file("acc"), "--no-chart", "--slices", "--slice-size", "16x8",
+                                              dir.file("acc"), "--no-chart", "--brdf-slices", "--brdf-slice-size",
+                                              "16x8",
                                               "--shadow-rows", "none", "--transparency-rows", "none"});
   REQUIRE_MESSAGE(run.exitCode == 0, run.err);
   std::istringstream csv(test::readFile(dir.path() / "acc" / "accuracy.csv"));

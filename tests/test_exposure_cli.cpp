@@ -1,7 +1,7 @@
 // The display transform's options on the command line: `pbr reference --out` encodes on the CPU what the post pass
 // encodes on the GPU, for every tone curve; `--exposure auto` reports the metered EV100 (and in --json), gives way
-// to a scene camera's exposure with a note, and is refused with --ev100; a fixed exposure that clips says so with
-// the hint.
+// to a scene camera's exposure with a note, and is refused with --ev100; and `pbr render --settings` reproduces the
+// frame of a --json report (app/render_settings.hpp).
 #include <doctest/doctest.h>
 
 #include <cstdlib>
@@ -77,4 +77,34 @@ TEST_CASE("cli: --exposure auto reports what it metered and yields to a scene ca
   CHECK(camera.out.find("note: the scene's camera sets EV100 2.00, which keeps priority over --exposure auto") !=
         std::string::npos);
   CHECK(camera.out.find("exposure: auto") == std::string::npos);
+}
+
+TEST_CASE("cli: pbr render --settings renders the frame a --json report was made of, options given here first") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const std::string scene = dir.write("scene.json", pbr::test::kCliScene);
+  const PbrRun first = runPbr(dir, {"render", "--scene", scene, "--size", "64x36", "--frames", "1", "--warmup", "0",
+                                    "--tonemap", "agx", "--culling", "none", "--tile", "16", "--exposure", "auto",
+                                    "--out", dir.file("first.png"), "--json", dir.file("first.json")});
+  REQUIRE(first.exitCode == 0);
+  const std::string report = pbr::test::readFile(dir.file("first.json"));
+  CHECK(report.find("\"render_settings\"") != std::string::npos);
+  CHECK(report.find("\"--tonemap\": \"agx\"") != std::string::npos);
+  // No scene, size or curve given: all from the report.
+  const PbrRun again = runPbr(dir, {"render", "--settings", dir.file("first.json"), "--frames", "1", "--warmup", "0",
+                                    "--out", dir.file("again.png")});
+  CAPTURE(again.err);
+  REQUIRE(again.exitCode == 0);
+  CHECK(pbr::readPng(dir.file("again.png")).pixels == pbr::readPng(dir.file("first.png")).pixels);
+  // An option given on the command line replaces the report's.
+  const PbrRun other = runPbr(dir, {"render", "--settings", dir.file("first.json"), "--tonemap", "linear",
+                                    "--frames", "1", "--warmup", "0", "--out", dir.file("other.png")});
+  REQUIRE(other.exitCode == 0);
+  CHECK(other.out.find("tonemap linear") != std::string::npos);
+  CHECK(pbr::readPng(dir.file("other.png")).pixels != pbr::readPng(dir.file("first.png")).pixels);
+  // A file without the record is refused naming it.
+  const PbrRun none = runPbr(dir, {"render", "--settings", scene});
+  CHECK(none.exitCode != 0);
+  CHECK(isOneLine(none.err));
+  CHECK(none.err.find("holds no render_settings") != std::string::npos);
 }

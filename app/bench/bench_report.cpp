@@ -282,6 +282,11 @@ void writeBenchJson(std::ostream& out, const BenchReport& report) {
                {{"configurations", sweepConfigs(report.settings).size()},
                 {"fingerprint", sweepFingerprint(report.settings)}}}};
   if (report.shard) doc["shard"] = {{"index", report.shard->index}, {"count", report.shard->count}};
+  if (!report.renderSettings.empty()) {
+    Json settings = Json::object();
+    for (const auto& [option, value] : report.renderSettings) settings[option] = value;
+    doc["render_settings"] = settings;
+  }
   doc["configurations"] = configurations;
   out << jsonText(doc, 2) << "\n";
 }

@@ -18,15 +18,18 @@ struct BenchReport {
   BenchSettings settings;
   std::vector<BenchResult> results;  // in sweep order, skipped configurations included
   std::optional<BenchShard> shard;   // set when the results are one shard of the sweep the settings describe
+  // pbr render --json: every option that decided the frame, as given or by default ("render_settings"), which
+  // `pbr render --settings` reads back; empty for bench reports.
+  std::vector<std::pair<std::string, std::string>> renderSettings;
 };
 
 // A digest of the settings that define a sweep's measurements (FNV-1a, 16 hex digits): reports of the same sweep,
 // its shards included, carry the same one.
 std::string sweepFingerprint(const BenchSettings& settings);
 
-// CSV: a header row, then one row per configuration with five order statistics per pass. Every cell holds a value: "skipped" for measurements of a
-// skipped configuration, "n/a" where a quantity does not exist (the cluster pass and cluster statistics of
-// brute-force rows).
+// CSV: a header row, then one row per configuration with five order statistics per pass. Every cell holds a
+// value: "skipped" for measurements of a skipped configuration, "n/a" where a quantity does not exist (the cluster
+// pass and cluster statistics of brute-force rows).
 void writeBenchCsv(std::ostream& out, const BenchReport& report);
 // What the CSV's provenance file holds (csv_provenance.hpp): the provenance, the settings, the sweep fingerprint and
 // the shard.
