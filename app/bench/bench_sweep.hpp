@@ -31,7 +31,7 @@ struct BenchSettings {
 // With --constant-density, light radii are scaled by sqrt(L0 / N), L0 the sweep's smallest light count, which
 // holds N r^2 constant. Lights lie in a layer much thinner than it is wide, so a cluster much smaller than the
 // lights sees a constant number of them; a cluster of extent s sees about N (r + s)^2, so where clusters are as
-// large as the lights or larger (distant depth slices) the count still rises with N: docs/performance.md
+// large as the lights or larger (distant depth slices) the count still rises with N: docs/performance-history.md
 // measures by how much.
 int densityReferenceLights(const BenchSettings& settings);
 float densityRadiusScale(int lights, int referenceLights);
