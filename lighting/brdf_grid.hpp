@@ -6,7 +6,7 @@
 
 #include "core/binding_table.hpp"
 #include "core/shader_library.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 namespace pbr {
 

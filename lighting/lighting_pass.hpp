@@ -15,7 +15,7 @@
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/light_clusters.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 namespace pbr {
 

@@ -5,10 +5,9 @@
 
 namespace pbr::reference {
 
-// The forms as `pbr reference --variant` names them, in the renderer's --variant spelling: "key=value,..." with
-// keys visibility (or vis: exact|hammon|separable), ndf (ggx, the only one), fresnel (exact|schlick|schlick-sg)
-// and diffuse (lambert-1-f|lambert-1-f-vh|lambert), keys left out keeping the reference model's form; or, alone,
-// "study" (BrdfForms::study()). Throws std::invalid_argument.
+// The forms as `pbr reference --variant` names them: the renderer's --variant, read by its parser
+// (parseShadingVariant), keys left out keeping the reference model's form; or, alone, "study". Throws
+// std::invalid_argument for what the parser refuses and for the terms the reference cannot evaluate (BrdfForms).
 BrdfForms parseBrdfForms(const std::string& text);
 std::string toString(const BrdfForms& forms);  // every key, in the form parseBrdfForms reads
 

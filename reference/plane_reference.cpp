@@ -62,10 +62,10 @@ Image render(const Scene& scene, int width, int height, Shade shade) {
 
 }  // namespace
 
-Image renderPbr(const Scene& scene, int width, int height, BrdfForms::Visibility visibility) {
+Image renderPbr(const Scene& scene, int width, int height, Visibility visibility) {
   BrdfForms forms;
   forms.visibility = visibility;
-  forms.fresnel = BrdfForms::Fresnel::Schlick;
+  forms.fresnel = Fresnel::Schlick;
   // One material, so one table per frame: it can afford finer bins than renderReference's per-object tables.
   const AlbedoTable albedo(scene.material, forms, 256, 48);
   const dvec3& n = scene.plane.normal;

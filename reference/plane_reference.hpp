@@ -51,7 +51,7 @@ struct Image {
 // The PBR model with the renderer's standard forms, Schlick's Fresnel and Lambert weighted by (1 - F(n.v)), and
 // the given Smith visibility.
 Image renderPbr(const Scene& scene, int width, int height,
-                BrdfForms::Visibility visibility = BrdfForms::Visibility::HeightCorrelated);
+                Visibility visibility = Visibility::HeightCorrelated);
 Image renderBlinnPhong(const Scene& scene, int width, int height, BlinnPhongLobe lobe = BlinnPhongLobe::Power);
 
 }  // namespace pbr::reference::plane

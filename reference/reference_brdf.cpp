@@ -2,10 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 namespace pbr::reference {
+
+BrdfForms::BrdfForms(const ShadingVariant& variant) : ShadingVariant(variant) {
+  if (ndf != Ndf::Ggx) throw std::invalid_argument("the reference cannot evaluate ndf=beckmann (it has GGX alone)");
+  if (diffuse == Diffuse::Burley) {
+    throw std::invalid_argument("the reference cannot evaluate diffuse=burley (lambert-1-f, lambert-1-f-vh, lambert)");
+  }
+}
+
+BrdfForms BrdfForms::study() { return BrdfForms(parseShadingVariant("study")); }
 
 // Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces".
 double ggxD(double NoH, double alpha) {
@@ -72,6 +82,7 @@ double fresnelSchlickSG(double c, double f0) {
 
 BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
                        const BrdfForms& forms) {
+  if (forms.ndf != Ndf::Ggx) throw std::logic_error("the reference has GGX alone (BrdfForms refuses another NDF)");
   const dvec3 H = glm::normalize(V + L);
   const double NoV = std::max(glm::dot(N, V), 1e-4);
   const double NoL = std::max(glm::dot(N, L), 0.0);
@@ -81,11 +92,11 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const dvec3 f0 = specularF0(m);
   auto fresnel = [&](double c) {
     switch (forms.fresnel) {
-      case BrdfForms::Fresnel::Schlick:
+      case Fresnel::Schlick:
         return dvec3(fresnelSchlick(c, f0.x), fresnelSchlick(c, f0.y), fresnelSchlick(c, f0.z));
-      case BrdfForms::Fresnel::SchlickSG:
+      case Fresnel::SchlickSG:
         return dvec3(fresnelSchlickSG(c, f0.x), fresnelSchlickSG(c, f0.y), fresnelSchlickSG(c, f0.z));
-      case BrdfForms::Fresnel::ExactDielectric: break;
+      case Fresnel::Exact: break;
     }
     // Metals: Schlick from their base colour; dielectrics: exact Fresnel; blended by metalness like F0 is.
     const dvec3 metal(fresnelSchlick(c, m.baseColor.x), fresnelSchlick(c, m.baseColor.y),
@@ -94,17 +105,18 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   };
   auto visibility = [&] {
     switch (forms.visibility) {
-      case BrdfForms::Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, alpha);
-      case BrdfForms::Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, alpha);
-      case BrdfForms::Visibility::HeightCorrelated: break;
+      case Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, alpha);
+      case Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, alpha);
+      case Visibility::HeightCorrelated: break;
     }
     return smithVisibilityExact(NoV, NoL, alpha);
   };
   auto diffuseWeight = [&] {
     switch (forms.diffuse) {
-      case BrdfForms::Diffuse::LambertOneMinusFVh: return dvec3(1.0) - fresnel(VoH);
-      case BrdfForms::Diffuse::Lambert: return dvec3(1.0);
-      case BrdfForms::Diffuse::LambertOneMinusFNv: break;
+      case Diffuse::LambertOneMinusFVh: return dvec3(1.0) - fresnel(VoH);
+      case Diffuse::Lambert: return dvec3(1.0);
+      case Diffuse::LambertOneMinusF: break;
+      case Diffuse::Burley: throw std::logic_error("the reference has no Burley diffuse (BrdfForms refuses it)");
     }
     return dvec3(1.0) - fresnel(NoV);
   };

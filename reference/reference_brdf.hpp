@@ -1,6 +1,8 @@
 #pragma once
 #include <glm/vec3.hpp>
 
+#include "core/shading_model.hpp"
+
 namespace pbr::reference {
 
 using glm::dvec3;
@@ -24,21 +26,19 @@ double alphaFromRoughness(double roughness);
 // The normal-incidence reflectance mix(0.04, baseColor, metalness) that the Schlick forms start from.
 dvec3 specularF0(const ReferenceMaterial& m);
 
-// Which form of each term evaluateBrdf uses; the defaults are the reference model above. The NDF is always GGX.
-struct BrdfForms {
-  // Smith visibility G2 / (4 n.l n.v): exact height-correlated, Hammon's linear fit of it, or G1(l) G1(v).
-  enum class Visibility { HeightCorrelated, Hammon, Separable };
-  // Exact for the dielectric part with Schlick for metals, or for the whole F0 = mix(0.04, baseColor, metalness)
-  // Schlick's (1 - c)^5 or its spherical-Gaussian fit.
-  enum class Fresnel { ExactDielectric, Schlick, SchlickSG };
-  // Lambert weighted by (1 - F(n.v)), by (1 - F(v.h)), or unweighted; times (1 - metalness) in every case.
-  enum class Diffuse { LambertOneMinusFNv, LambertOneMinusFVh, Lambert };
-  Visibility visibility = Visibility::HeightCorrelated;
-  Fresnel fresnel = Fresnel::ExactDielectric;
-  Diffuse diffuse = Diffuse::LambertOneMinusFNv;
-
+// Which form of each term evaluateBrdf uses, in the renderer's vocabulary (ShadingVariant, core/shading_model.hpp:
+// one set of names, parsed once): visibility exact (height-correlated), hammon or separable; Fresnel exact (for
+// the dielectric part, Schlick for metals), schlick or schlick-sg; diffuse lambert-1-f (by 1 - F(n.v)),
+// lambert-1-f-vh or lambert, times (1 - metalness) in every case. The defaults are the reference model above, which
+// differs from the renderer's default in one term by choice: Fresnel exact where the renderer's is Schlick's (the
+// yardstick evaluates the exact form the approximation is measured against). The reference cannot evaluate
+// ndf=beckmann nor diffuse=burley: made from a variant that uses them, BrdfForms throws std::invalid_argument naming
+// the term.
+struct BrdfForms : ShadingVariant {
+  BrdfForms() { fresnel = Fresnel::Exact; }
+  BrdfForms(const ShadingVariant& variant);  // NOLINT: a variant is a set of forms
   // The PBR model of the Blinn-Phong-vs-PBR study: Hammon, Schlick, Lambert by (1 - F(v.h)).
-  static BrdfForms study() { return {Visibility::Hammon, Fresnel::Schlick, Diffuse::LambertOneMinusFVh}; }
+  static BrdfForms study();
 };
 
 double ggxD(double NoH, double alpha);

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/gl_objects.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 namespace pbr {
 

@@ -4,7 +4,7 @@
 #include "core/profiler.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/light_clusters.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 namespace pbr {
 

@@ -14,6 +14,9 @@
 #include "reference/reference_renderer.hpp"
 
 using namespace pbr::reference;
+using pbr::Diffuse;
+using pbr::Fresnel;
+using pbr::Visibility;
 
 TEST_CASE("reference: exact dielectric Fresnel has its textbook values") {
   // Normal incidence: ((eta - 1) / (eta + 1))^2; grazing incidence: 1.
@@ -131,10 +134,10 @@ TEST_CASE("reference: each BRDF form has its closed form") {
   const double vh = glm::dot(V, H);
   const ReferenceMaterial m{dvec3(0.9, 0.6, 0.3), 0.4, 0.3};
   BrdfForms schlick, sg, vhDiffuse;
-  schlick.fresnel = BrdfForms::Fresnel::Schlick;
-  sg.fresnel = BrdfForms::Fresnel::SchlickSG;
-  vhDiffuse.fresnel = BrdfForms::Fresnel::Schlick;
-  vhDiffuse.diffuse = BrdfForms::Diffuse::LambertOneMinusFVh;
+  schlick.fresnel = Fresnel::Schlick;
+  sg.fresnel = Fresnel::SchlickSG;
+  vhDiffuse.fresnel = Fresnel::Schlick;
+  vhDiffuse.diffuse = Diffuse::LambertOneMinusFVh;
   const BrdfLobes fs = evaluateBrdf(N, V, Ln, m, schlick), fsg = evaluateBrdf(N, V, Ln, m, sg);
   const BrdfLobes fvh = evaluateBrdf(N, V, Ln, m, vhDiffuse);
   for (int ch = 0; ch < 3; ++ch) {
@@ -157,8 +160,8 @@ TEST_CASE("reference: white furnace, Lambert weighted by (1 - F(v.h)) reflects u
   constexpr double kGrazing = 0.01;
   constexpr int kSamples = 256;  // per axis: the albedo moves by < 1e-3 from 256 to 512
   BrdfForms vh, standard;
-  vh.fresnel = standard.fresnel = BrdfForms::Fresnel::Schlick;
-  vh.diffuse = BrdfForms::Diffuse::LambertOneMinusFVh;
+  vh.fresnel = standard.fresnel = Fresnel::Schlick;
+  vh.diffuse = Diffuse::LambertOneMinusFVh;
   double worstVh = 0.0, worstRoughness = 0.0, worstStandard = 0.0;
   for (double roughness : {0.05, 0.1, 0.2, 0.3, 0.5, 1.0}) {
     const ReferenceMaterial white{dvec3(1.0), roughness, 0.0};
@@ -186,13 +189,33 @@ TEST_CASE("reference: parseBrdfForms reads study or key=value forms, and toStrin
   CHECK(toString(parseBrdfForms("")) == "visibility=exact,ndf=ggx,fresnel=exact,diffuse=lambert-1-f");
   CHECK(toString(parseBrdfForms("study")) == "visibility=hammon,ndf=ggx,fresnel=schlick,diffuse=lambert-1-f-vh");
   const BrdfForms f = parseBrdfForms("vis=separable,ndf=ggx,fresnel=schlick-sg,diffuse=lambert");
-  CHECK(f.visibility == BrdfForms::Visibility::Separable);
-  CHECK(f.fresnel == BrdfForms::Fresnel::SchlickSG);
-  CHECK(f.diffuse == BrdfForms::Diffuse::Lambert);
+  CHECK((f.visibility == Visibility::Separable));
+  CHECK((f.fresnel == Fresnel::SchlickSG));
+  CHECK((f.diffuse == Diffuse::Lambert));
   CHECK(toString(parseBrdfForms(toString(f))) == toString(f));
   // Forms the reference does not have, and study with other keys.
   for (const char* bad : {"study,fresnel=exact", "ndf=beckmann", "diffuse=burley", "fresnel", "specular=ggx"}) {
     CAPTURE(bad);
     CHECK_THROWS_AS(parseBrdfForms(bad), std::invalid_argument);
   }
+}
+
+TEST_CASE("reference: its forms are the renderer's vocabulary, its defaults the renderer's but for exact Fresnel") {
+  const pbr::ShadingVariant renderer;
+  const BrdfForms reference;
+  // The one stated difference: the yardstick evaluates the exact dielectric Fresnel the renderer approximates.
+  CHECK((renderer.fresnel == Fresnel::Schlick));
+  CHECK((reference.fresnel == Fresnel::Exact));
+  CHECK((reference.visibility == renderer.visibility));
+  CHECK((reference.ndf == renderer.ndf));
+  CHECK((reference.diffuse == renderer.diffuse));
+  // A variant's forms carry over term for term; the terms the reference cannot evaluate are named.
+  const pbr::ShadingVariant study = pbr::parseShadingVariant("study");
+  CHECK(toString(BrdfForms(study)) == pbr::toString(study));
+  CHECK_THROWS_WITH_AS(BrdfForms(pbr::parseShadingVariant("ndf=beckmann")),
+                       "the reference cannot evaluate ndf=beckmann (it has GGX alone)", std::invalid_argument);
+  CHECK_THROWS_WITH_AS(parseBrdfForms("diffuse=burley"),
+                       "the reference cannot evaluate diffuse=burley (lambert-1-f, lambert-1-f-vh, lambert)",
+                       std::invalid_argument);
+  CHECK_THROWS_AS(parseBrdfForms("lobe=sg"), std::invalid_argument);
 }

@@ -280,7 +280,7 @@ TEST_CASE("render analytic: Hammon visibility is close to the exact term but not
     const Frame hammon = render(renderer, options(pbr::ShadingModel::Pbr, pbr::Visibility::Hammon));
     const Frame exact = render(renderer, options(pbr::ShadingModel::Pbr));
     checkAgainstReference("Hammon " + name, hammon.hdr,
-                          plane::renderPbr(expected, kWidth, kHeight, ref::BrdfForms::Visibility::Hammon));
+                          plane::renderPbr(expected, kWidth, kHeight, pbr::Visibility::Hammon));
     // Hammon's linear form is an approximation whose error grows with roughness: against the exact reference it
     // is off by 1-11% on average and up to ~17% at grazing pixels on these materials (see the message). These
     // bounds only reject a term that is far off; the tight check is the one against the Hammon reference above.

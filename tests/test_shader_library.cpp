@@ -20,7 +20,7 @@
 #include "lighting/light_clusters.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 #include "post/post_pass.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/shader_tree.hpp"

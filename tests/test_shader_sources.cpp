@@ -19,7 +19,7 @@
 #include "lighting/brdf_grid.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 #include "post/post_pass.hpp"
 #include "tests/shader_tree.hpp"
 

@@ -9,7 +9,7 @@
 #include "core/builtin_scenes.hpp"
 #include "core/scene.hpp"
 #include "gbuffer/gbuffer.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {

@@ -4,7 +4,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/shader_library.hpp"
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 namespace pbr {
 

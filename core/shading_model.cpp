@@ -1,4 +1,4 @@
-#include "lighting/shading_model.hpp"
+#include "core/shading_model.hpp"
 
 #include <algorithm>
 #include <cstddef>
