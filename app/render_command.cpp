@@ -94,9 +94,10 @@ const std::vector<OptionSpec>& renderOptions() {
        "debug group and marker 'capture frame K'", "", "none"},
       {"--json", "F.json", "write the timings (every timed frame), light statistics, provenance and the settings that "
                            "decided the frame (render_settings) as JSON (pbr bench schema)"},
-      {"--settings", "F.json",
+      {"--settings", "F.json|F.json#K",
        "take every option that decides the frame from the render_settings of a report pbr render --json wrote, so "
-       "that it renders the same frame; options given here replace the report's",
+       "that it renders the same frame, or from configuration K of a pbr bench report; options given here replace "
+       "the report's",
        "", "none: the options given here and their defaults"},
       timingOption(),
       eglPlatformOption(),

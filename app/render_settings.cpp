@@ -18,6 +18,48 @@ constexpr const char* kNotFrameOptions[] = {"--out",   "--hdr",    "--json",    
 // "--name" of "--name" or "--name=value".
 std::string optionName(const std::string& arg) { return arg.substr(0, arg.find('=')); }
 
+std::string text(const nlohmann::json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+// The options pbr render takes to draw configuration `row` (from 1) of a pbr bench report: its scene, size,
+// lights, culling, model, shadows and tone curve, and the bench's display (no anti-aliasing).
+RenderSettings benchRowSettings(const nlohmann::json& doc, const std::string& path, size_t row) {
+  const auto settings = doc.find("settings");
+  const auto configurations = doc.find("configurations");
+  if (settings == doc.end() || configurations == doc.end() || !configurations->is_array()) {
+    throw std::runtime_error(path + ": neither render_settings nor a pbr bench report's settings and configurations");
+  }
+  if (row < 1 || row > configurations->size()) {
+    throw std::runtime_error(path + "#" + std::to_string(row) + ": the report has configurations 1 to " +
+                             std::to_string(configurations->size()));
+  }
+  const nlohmann::json& c = (*configurations)[row - 1];
+  const nlohmann::json& s = *settings;
+  try {
+    if (c.at("light_radius_scale").get<double>() != 1.0) {
+      throw std::runtime_error(path + "#" + std::to_string(row) + ": light radii scaled by " +
+                               text(c.at("light_radius_scale")) + " (--constant-density), which pbr render cannot");
+    }
+    RenderSettings record = {{"--scene", text(s.at("scene"))},
+                             {"--size", text(c.at("width")) + "x" + text(c.at("height"))},
+                             {"--lights", text(c.at("lights"))},
+                             {"--culling", text(c.at("culling"))},
+                             {"--model", text(c.at("model"))},
+                             {"--shadows", text(s.at("shadows"))},
+                             {"--shadow-filter", text(s.at("shadow_filter"))},
+                             {"--shadow-atlas", text(s.at("shadow_atlas"))},
+                             {"--aa", "none"}};
+    if (s.contains("tone_curve")) record.push_back({"--tonemap", text(s.at("tone_curve"))});
+    if (s.contains("spot_share") && !s.at("spot_share").is_null()) {
+      record.push_back({"--spot-share", text(s.at("spot_share"))});
+    }
+    return record;
+  } catch (const nlohmann::json::exception&) {
+    throw std::runtime_error(path + "#" + std::to_string(row) + ": not a configuration of a pbr bench report");
+  }
+}
+
 }  // namespace
 
 bool decidesFrame(const std::string& option) {
@@ -46,17 +88,39 @@ std::vector<std::string> withSettingsFile(const std::vector<OptionSpec>& specs, 
     if (argv[i].rfind("--settings=", 0) == 0) path = argv[i].substr(std::string("--settings=").size());
   }
   if (path.empty()) return argv;
+  // F.json#K: configuration K of a bench report.
+  size_t row = 0;
+  const size_t hash = path.rfind('#');
+  if (hash != std::string::npos) {
+    const std::string digits = path.substr(hash + 1);
+    if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos) {
+      throw UsageError("--settings " + path + ": expected F.json or F.json#K, K a configuration of a bench report");
+    }
+    row = std::stoul(digits);
+    path.erase(hash);
+  }
   const nlohmann::json doc = readJsonFile(path);
-  const auto record = doc.find("render_settings");
-  if (record == doc.end() || !record->is_object()) {
-    throw std::runtime_error(path + ": holds no render_settings object (pbr render --json writes one)");
+  const auto found = doc.find("render_settings");
+  nlohmann::json record = nlohmann::json::object();
+  if (row > 0 || found == doc.end()) {
+    if (found == doc.end() && row == 0 && doc.contains("configurations")) {
+      throw std::runtime_error(path + ": a pbr bench report: name one of its configurations, " + path + "#K");
+    }
+    if (found == doc.end() && !doc.contains("configurations")) {
+      throw std::runtime_error(path + ": holds no render_settings object (pbr render --json writes one)");
+    }
+    for (const auto& [option, value] : benchRowSettings(doc, path, row)) record[option] = value;
+  } else if (!found->is_object()) {
+    throw std::runtime_error(path + ": render_settings is not an object");
+  } else {
+    record = *found;
   }
   std::vector<std::string> given;
   for (const std::string& arg : argv) {
     if (arg.rfind("--", 0) == 0) given.push_back(optionName(arg));
   }
   std::vector<std::string> out = argv;
-  for (const auto& [option, value] : record->items()) {
+  for (const auto& [option, value] : record.items()) {
     const auto spec = std::find_if(specs.begin(), specs.end(), [&](const OptionSpec& s) { return s.name == option; });
     if (spec == specs.end() || !decidesFrame(option) || !value.is_string()) {
       throw std::runtime_error(path + ": render_settings." + option + ": not an option of pbr render that decides "

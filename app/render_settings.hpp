@@ -18,8 +18,10 @@ bool decidesFrame(const std::string& option);
 // reads back from any folder.
 RenderSettings renderSettings(const std::vector<OptionSpec>& specs, const Args& args);
 // `argv` with the options of the record in `--settings F.json` that argv does not give itself appended: options
-// given on the command line replace the report's. Unchanged without --settings. Throws std::runtime_error naming
-// the file when it holds no render_settings object, or one whose entry is not a frame option of the table.
+// given on the command line replace the report's. `--settings F.json#K` takes configuration K (from 1) of a pbr
+// bench report instead: its scene, size, lights, culling, model, shadows and tone curve, with the bench's display
+// (no anti-aliasing). Unchanged without --settings. Throws std::runtime_error naming the file when it holds neither
+// a render_settings object nor that configuration, or an entry that is not a frame option of the table.
 std::vector<std::string> withSettingsFile(const std::vector<OptionSpec>& specs, const std::vector<std::string>& argv);
 
 }  // namespace pbr

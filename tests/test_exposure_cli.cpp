@@ -1,7 +1,7 @@
 // The display transform's options on the command line: `pbr reference --out` encodes on the CPU what the post pass
 // encodes on the GPU, for every tone curve; `--exposure auto` reports the metered EV100 (and in --json), gives way
 // to a scene camera's exposure with a note, and is refused with --ev100; and `pbr render --settings` reproduces the
-// frame of a --json report (app/render_settings.hpp).
+// frame of a --json report or a bench row (app/render_settings.hpp).
 #include <doctest/doctest.h>
 
 #include <cstdlib>
@@ -107,4 +107,30 @@ TEST_CASE("cli: pbr render --settings renders the frame a --json report was made
   CHECK(none.exitCode != 0);
   CHECK(isOneLine(none.err));
   CHECK(none.err.find("holds no render_settings") != std::string::npos);
+}
+
+TEST_CASE("cli: pbr render --settings F.json#K renders configuration K of a bench report as the bench drew it") {
+  PBR_REQUIRE_GL();
+  const TempDir dir;
+  const PbrRun bench = runPbr(dir, {"bench", "--scene", "default", "--lights", "8,16", "--culling", "clustered",
+                                    "--model", "pbr", "--size", "64x36", "--warmup", "1", "--frames", "1", "--tonemap",
+                                    "khronos-neutral", "--json", dir.file("bench.json")});
+  CAPTURE(bench.err);
+  REQUIRE(bench.exitCode == 0);
+  const PbrRun row = runPbr(dir, {"render", "--settings", dir.file("bench.json") + "#2", "--frames", "1", "--warmup",
+                                  "0", "--out", dir.file("row.png")});
+  CAPTURE(row.err);
+  REQUIRE(row.exitCode == 0);
+  const PbrRun same = runPbr(dir, {"render", "--scene", "default", "--lights", "16", "--culling", "clustered",
+                                   "--model", "pbr", "--size", "64x36", "--tonemap", "khronos-neutral", "--aa", "none",
+                                   "--frames", "1", "--warmup", "0", "--out", dir.file("same.png")});
+  REQUIRE(same.exitCode == 0);
+  CHECK(pbr::readPng(dir.file("row.png")).pixels == pbr::readPng(dir.file("same.png")).pixels);
+  // A bench report needs its row named, and the row must exist.
+  for (const std::string& settings : {dir.file("bench.json"), dir.file("bench.json") + "#3"}) {
+    const PbrRun refused = runPbr(dir, {"render", "--settings", settings});
+    CHECK(refused.exitCode != 0);
+    CHECK(isOneLine(refused.err));
+    CHECK(refused.err.find("bench.json") != std::string::npos);
+  }
 }
