@@ -1,6 +1,7 @@
 #include "post/exposure_meter.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 #include "core/exposure.hpp"
@@ -33,15 +34,16 @@ void ExposureMeter::reset(std::optional<float> fromEv100) {
 }
 
 void ExposureMeter::meter(const Texture& hdr, float adaptSeconds, float initialEv100) {
-  const ShaderDefines meterDefines = defines();
+  if (!histogram_) {
+    histogram_ = &programs_.compute("post/exposure_histogram.comp", defines());
+    adapt_ = &programs_.compute("post/exposure_adapt.comp", defines());
+  }
   state_.bindBase(GL_SHADER_STORAGE_BUFFER, kExposureSsbo.index);
-  const Program& histogram = programs_.compute("post/exposure_histogram.comp", meterDefines);
-  histogram.use();
+  histogram_->use();
   glBindTextureUnit(0, hdr.id());
   glDispatchCompute(static_cast<GLuint>((hdr.width() + 15) / 16), static_cast<GLuint>((hdr.height() + 15) / 16), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  const Program& adapt = programs_.compute("post/exposure_adapt.comp", meterDefines);
-  adapt.use();
+  adapt_->use();
   // location 0: x seconds to adapt over (negative: at once), y the EV100 before any metering.
   glUniform2f(0, std::isfinite(adaptSeconds) ? adaptSeconds : -1.0f, initialEv100);
   glDispatchCompute(1, 1, 1);
@@ -51,9 +53,9 @@ void ExposureMeter::meter(const Texture& hdr, float adaptSeconds, float initialE
 void ExposureMeter::bind() const { state_.bindBase(GL_SHADER_STORAGE_BUFFER, kExposureSsbo.index); }
 
 MeteredExposure ExposureMeter::read() const {
-  float values[3] = {};
-  glGetNamedBufferSubData(state_.id(), 0, sizeof values, values);
-  return {values[0], values[2]};
+  ExposureState state{};  // its head only: the bins are the next frame's
+  glGetNamedBufferSubData(state_.id(), 0, GLsizeiptr(offsetof(ExposureState, bins)), &state);
+  return {state.ev100, state.targetEv100};
 }
 
 }  // namespace pbr

@@ -61,6 +61,8 @@ class ExposureMeter {
 
  private:
   ProgramCache& programs_;
+  const Program* histogram_ = nullptr;  // both compiled by the first metering
+  const Program* adapt_ = nullptr;
   Buffer state_;
 };
 
