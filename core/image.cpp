@@ -66,6 +66,15 @@ void writeLdr(std::ostream& out, LdrFileFormat format, const ImageRgba8& image) 
   }
 }
 
+bool overImageLimit(int64_t width, int64_t height) {
+  return width > kMaxImageSide || height > kMaxImageSide || width * height > kMaxImagePixels;
+}
+
+std::string imageLimitText(int64_t width, int64_t height) {
+  return std::to_string(width) + "x" + std::to_string(height) + " pixels, over the image limit (" +
+         std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) + " pixels in all)";
+}
+
 ImageRgba8 readPng(const std::string& path) {
   const std::string bytes = readInputFile(path);
   return decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path);
@@ -198,10 +207,6 @@ bool isWebp(const unsigned char* b, size_t size) {
   return size >= 12 && std::memcmp(b, "RIFF", 4) == 0 && std::memcmp(b + 8, "WEBP", 4) == 0;
 }
 
-std::string overLimit(int w, int h) {
-  return std::to_string(w) + "x" + std::to_string(h) + " pixels, over the image limit (" +
-         std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) + " pixels in all)";
-}
 
 // WebP (EXT_texture_webp) through libwebp: the header's size checked against the limits before the decoder
 // allocates, as for stb's formats.
@@ -210,8 +215,8 @@ ImageRgba8 decodeWebp(const unsigned char* bytes, size_t size, const std::string
   if (!WebPGetInfo(bytes, size, &w, &h)) {
     throw std::runtime_error(name + ": cannot decode image: not a valid WebP file");
   }
-  if (w > kMaxImageSide || h > kMaxImageSide || int64_t(w) * h > kMaxImagePixels) {
-    throw std::runtime_error(name + ": cannot decode image: " + overLimit(w, h));
+  if (overImageLimit(w, h)) {
+    throw std::runtime_error(name + ": cannot decode image: " + imageLimitText(w, h));
   }
   std::unique_ptr<uint8_t, void (*)(void*)> data(WebPDecodeRGBA(bytes, size, &w, &h), WebPFree);
   if (!data) throw std::runtime_error(name + ": cannot decode image: corrupt WebP data");
@@ -249,9 +254,8 @@ ImageRgba8 decodeImage(const unsigned char* bytes, size_t size, const std::strin
   // larger than this could not be uploaded anyway (GL_MAX_TEXTURE_SIZE is 16384 on llvmpipe).
   int declaredW = 0, declaredH = 0, declaredN = 0;
   if (stbi_info_from_memory(bytes, static_cast<int>(size), &declaredW, &declaredH, &declaredN) &&
-      (declaredW > kMaxImageSide || declaredH > kMaxImageSide ||
-       int64_t(declaredW) * declaredH > kMaxImagePixels)) {
-    throw std::runtime_error(name + ": cannot decode image: " + overLimit(declaredW, declaredH));
+      overImageLimit(declaredW, declaredH)) {
+    throw std::runtime_error(name + ": cannot decode image: " + imageLimitText(declaredW, declaredH));
   }
   int w = 0, h = 0, n = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(

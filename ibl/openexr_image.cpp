@@ -68,6 +68,10 @@ ImageRgbaF readOpenExr(const std::string& path) {
     throw std::runtime_error(path + ": OpenEXR image size " + std::to_string(width) + "x" + std::to_string(height) +
                              " out of range (at most " + std::to_string(kMaxSide) + " a side)");
   }
+  // Before tinyexr allocates the planes.
+  if (overImageLimit(width, height)) {
+    throw std::runtime_error(path + ": OpenEXR image size " + imageLimitText(width, height));
+  }
   // R, G and B, or a luminance channel Y read as grey; half and float channels read as float.
   int red = -1, green = -1, blue = -1, grey = -1;
   for (int c = 0; c < header.num_channels; ++c) {
@@ -85,7 +89,8 @@ ImageRgbaF readOpenExr(const std::string& path) {
     throw std::runtime_error(path + ": OpenEXR image without R, G and B channels (nor Y)");
   }
   if (LoadEXRImageFromMemory(&exr.image, &header, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
-    InitEXRImage(&exr.image);  // a failed load frees what it made itself, leaving pointers FreeEXRImage would free again
+    // A failed load frees what it made itself, leaving pointers FreeEXRImage would free again.
+    InitEXRImage(&exr.image);
     throw std::runtime_error(path + ": cannot decode the OpenEXR image: " + oneLine(takeError(err, "unreadable")));
   }
   const int w = static_cast<int>(width), h = static_cast<int>(height);

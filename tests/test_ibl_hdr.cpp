@@ -136,6 +136,11 @@ TEST_CASE("ibl hdr: unsupported headers name what is wrong") {
 
   const std::string badLength = writeBytes(dir, "length.hdr", hdrFile(8, 1, std::string("\x02\x02\x00\x09", 4)));
   checkOneLineNaming(errorOf(badLength), badLength, "is not the width 8");
+
+  // A few bytes of the original format's runs may declare gigapixels: refused before anything is allocated.
+  const std::string huge = writeBytes(dir, "huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 30000 +X 30000\n"
+                                                       "\x80\x80\x80\x81\x01\x01\x01\xff");
+  checkOneLineNaming(errorOf(huge), huge, "Radiance image size 30000x30000 pixels, over the image limit (16384 a side");
 }
 
 TEST_CASE("ibl hdr: flat and run-length pixels decode to the RGBE values they encode") {
