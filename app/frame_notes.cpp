@@ -30,7 +30,7 @@ Clipping clipping(const ImageRgba8& image) {
 
 }  // namespace
 
-std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, float exposure, bool autoExposure,
+std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, const FrameExposure& exposure,
                                     const ImageRgba8* ldr) {
   std::vector<std::string> notes;
   if (!scene.objects.empty()) {
@@ -50,15 +50,23 @@ std::vector<std::string> frameNotes(const Scene& scene, glm::ivec2 size, float e
   // lost.
   if (ldr) {
     const Clipping c = clipping(*ldr);
-    const std::string hint = autoExposure ? "" : "; --exposure auto meters it from the frame";
+    const std::string hint = exposure.metered ? "" : "; --exposure auto meters it from the frame";
+    const char* clamped = "the blinn-phong model adds its light in LDR and clamps it, with no exposure to lower";
     char text[240];
-    if (c.white > 0.99) {
+    if (c.white > 0.99 && exposure.applies) {
       std::snprintf(text, sizeof text, "%.1f%% of the frame clips to white: an exposure of %g is too high for this "
-                    "scene (--exposure, --ev100)%s", 100.0 * c.white, double(exposure), hint.c_str());
+                    "scene (--exposure, --ev100)%s", 100.0 * c.white, double(exposure.value), hint.c_str());
+      notes.push_back(text);
+    } else if (c.white > 0.99) {
+      std::snprintf(text, sizeof text, "%.1f%% of the frame clips to white: %s", 100.0 * c.white, clamped);
+      notes.push_back(text);
+    } else if (c.clipped > kClippedShareNoted && exposure.applies) {
+      std::snprintf(text, sizeof text, "%.1f%% of the frame's pixels clip (a channel at 250 or more) at exposure %g%s",
+                    100.0 * c.clipped, double(exposure.value), hint.c_str());
       notes.push_back(text);
     } else if (c.clipped > kClippedShareNoted) {
-      std::snprintf(text, sizeof text, "%.1f%% of the frame's pixels clip (a channel at 250 or more) at exposure %g%s",
-                    100.0 * c.clipped, double(exposure), hint.c_str());
+      std::snprintf(text, sizeof text, "%.1f%% of the frame's pixels clip (a channel at 250 or more): %s",
+                    100.0 * c.clipped, clamped);
       notes.push_back(text);
     }
   }

@@ -379,8 +379,8 @@ int runRender(const std::vector<std::string>& commandLine) {
   }
   const float shownExposure =
       metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
-  for (const std::string& note :
-       frameNotes(scene, size, shownExposure, exposure.autoExposure, outPng.empty() ? nullptr : &ldr)) {
+  const FrameExposure shown{model == ShadingModel::Pbr, shownExposure, metered.has_value()};
+  for (const std::string& note : frameNotes(scene, size, shown, outPng.empty() ? nullptr : &ldr)) {
     std::printf("note: %s\n", note.c_str());
   }
   if (hdrFile) {
