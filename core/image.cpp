@@ -75,6 +75,13 @@ std::string imageLimitText(int64_t width, int64_t height) {
          std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxImagePixels) + " pixels in all)";
 }
 
+bool overEnvironmentLimit(int64_t width, int64_t height) { return width * height > kMaxImagePixels; }
+
+std::string environmentLimitText(int64_t width, int64_t height) {
+  return std::to_string(width) + "x" + std::to_string(height) + " is " + std::to_string(width * height) +
+         " pixels, over the limit of " + std::to_string(kMaxImagePixels) + " (1 GiB as float RGBA)";
+}
+
 ImageRgba8 readPng(const std::string& path) {
   const std::string bytes = readInputFile(path);
   return decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path);

@@ -44,11 +44,15 @@ ImageRgba8 readPng(const std::string& path);
 // before the decoder allocates.
 constexpr int kMaxImageSide = 16384;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
-// Whether a header's declared size is over those limits; the same limits hold for environment images (Radiance,
-// OpenEXR), 1 GiB as float RGBA: a file of a few bytes may declare gigapixels.
+// Whether a header's declared size is over those limits, and "WxH pixels, over the image limit (16384 a side,
+// 67108864 pixels in all)".
 bool overImageLimit(int64_t width, int64_t height);
-// "WxH pixels, over the image limit (16384 a side, 67108864 pixels in all)".
 std::string imageLimitText(int64_t width, int64_t height);
+// Environment images (Radiance, OpenEXR) keep their formats' sides (the context's texture size is checked where
+// they are uploaded) but not more pixels in all (1 GiB as float RGBA): a file of a few bytes may declare
+// gigapixels. The text: "WxH is N pixels, over the limit of 67108864 (1 GiB as float RGBA)".
+bool overEnvironmentLimit(int64_t width, int64_t height);
+std::string environmentLimitText(int64_t width, int64_t height);
 
 // Decodes PNG and JPEG (stb_image) and WebP (libwebp) to RGBA8 (16-bit images narrowed to 8 bits); any other
 // format is refused. Throws

@@ -69,8 +69,8 @@ ImageRgbaF readOpenExr(const std::string& path) {
                              " out of range (at most " + std::to_string(kMaxSide) + " a side)");
   }
   // Before tinyexr allocates the planes.
-  if (overImageLimit(width, height)) {
-    throw std::runtime_error(path + ": OpenEXR image size " + imageLimitText(width, height));
+  if (overEnvironmentLimit(width, height)) {
+    throw std::runtime_error(path + ": OpenEXR image size " + environmentLimitText(width, height));
   }
   // R, G and B, or a luminance channel Y read as grey; half and float channels read as float.
   int red = -1, green = -1, blue = -1, grey = -1;

@@ -81,8 +81,8 @@ void readHeader(HdrReader& in, int& width, int& height) {
     in.fail("Radiance image size " + w + "x" + h + " out of range (at most " + std::to_string(kMaxSide) + " a side)");
   }
   // Before the pixels are allocated: a few bytes of runs may declare gigapixels.
-  if (overImageLimit(int64_t(side(w)), int64_t(side(h)))) {
-    in.fail("Radiance image size " + imageLimitText(int64_t(side(w)), int64_t(side(h))));
+  if (overEnvironmentLimit(int64_t(side(w)), int64_t(side(h)))) {
+    in.fail("Radiance image size " + environmentLimitText(int64_t(side(w)), int64_t(side(h))));
   }
   width = static_cast<int>(side(w));
   height = static_cast<int>(side(h));

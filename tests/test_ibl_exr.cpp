@@ -90,12 +90,13 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
   wide.replace(maxX, 4, std::string(reinterpret_cast<const char*>(&x), 4));
   const std::string widePath = dir.write("wide.exr", wide);
   CHECK(errorOf(widePath) == widePath + ": OpenEXR image size 40000x2 out of range (at most 32767 a side)");
-  // 20000 x 2 fits the format but not the image limit that holds for every environment.
-  const int32_t within = 19999;
-  wide.replace(maxX, 4, std::string(reinterpret_cast<const char*>(&within), 4));
+  // 30000 x 3000 fits the format's sides but not the environments' pixel limit.
+  const int32_t wideX = 29999, tallY = 2999;
+  wide.replace(maxX, 4, std::string(reinterpret_cast<const char*>(&wideX), 4));
+  wide.replace(maxX + 4, 4, std::string(reinterpret_cast<const char*>(&tallY), 4));
   const std::string overPath = dir.write("over.exr", wide);
-  CHECK(errorOf(overPath) == overPath + ": OpenEXR image size 20000x2 pixels, over the image limit (16384 a side, "
-                                        "67108864 pixels in all)");
+  CHECK(errorOf(overPath) == overPath + ": OpenEXR image size 30000x3000 is 90000000 pixels, over the limit of "
+                                        "67108864 (1 GiB as float RGBA)");
   const std::string notExr = dir.write("plain.exr", "not an image");
   CHECK(errorOf(notExr) == notExr + ": not an OpenEXR file (no EXR magic number)");
 }
