@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/bench/bench_report_reader.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/json_file.hpp"
 
@@ -18,46 +19,50 @@ constexpr const char* kNotFrameOptions[] = {"--out",   "--hdr",    "--json",    
 // "--name" of "--name" or "--name=value".
 std::string optionName(const std::string& arg) { return arg.substr(0, arg.find('=')); }
 
-std::string text(const nlohmann::json& value) {
-  return value.is_string() ? value.get<std::string>() : value.dump();
+// The options pbr render takes to draw configuration `row` (from 1) of a pbr bench report, read as bench-merge
+// reads it: its scene, size, lights, culling, model, shadows and tone curve, and the bench's display (no
+// anti-aliasing).
+RenderSettings benchRowSettings(const std::string& path, size_t row) {
+  const BenchReport report = readBenchReport(path).report;
+  if (row < 1 || row > report.results.size()) {
+    throw std::runtime_error(path + "#" + std::to_string(row) + ": the report has configurations 1 to " +
+                             std::to_string(report.results.size()));
+  }
+  const BenchConfig& c = report.results[row - 1].config;
+  if (c.radiusScale != 1.0f) {
+    throw std::runtime_error(path + "#" + std::to_string(row) + ": light radii scaled by " +
+                             numberText(c.radiusScale) + " (--constant-density), which pbr render cannot");
+  }
+  RenderSettings record = {{"--scene", c.scene},
+                           {"--size", sizeText(c.size)},
+                           {"--lights", std::to_string(c.lights)},
+                           {"--culling", toString(c.culling)},
+                           {"--model", toString(c.model)},
+                           {"--shadows", toString(c.shadows.mode)},
+                           {"--shadow-filter", toString(c.shadows.filter)},
+                           {"--shadow-atlas", std::to_string(c.shadows.atlasSize)},
+                           {"--tonemap", toString(c.toneCurve)},
+                           {"--aa", "none"}};
+  if (report.settings.spotShare) record.push_back({"--spot-share", numberText(*report.settings.spotShare)});
+  return record;
 }
 
-// The options pbr render takes to draw configuration `row` (from 1) of a pbr bench report: its scene, size,
-// lights, culling, model, shadows and tone curve, and the bench's display (no anti-aliasing).
-RenderSettings benchRowSettings(const nlohmann::json& doc, const std::string& path, size_t row) {
-  const auto settings = doc.find("settings");
-  const auto configurations = doc.find("configurations");
-  if (settings == doc.end() || configurations == doc.end() || !configurations->is_array()) {
-    throw std::runtime_error(path + ": neither render_settings nor a pbr bench report's settings and configurations");
+// The render_settings of a report pbr render --json wrote.
+RenderSettings reportSettings(const std::string& path) {
+  const nlohmann::json doc = readJsonFile(path);
+  const auto found = doc.find("render_settings");
+  if (found == doc.end() && doc.contains("configurations")) {
+    throw std::runtime_error(path + ": a pbr bench report: name one of its configurations, " + path + "#K");
   }
-  if (row < 1 || row > configurations->size()) {
-    throw std::runtime_error(path + "#" + std::to_string(row) + ": the report has configurations 1 to " +
-                             std::to_string(configurations->size()));
+  if (found == doc.end() || !found->is_object()) {
+    throw std::runtime_error(path + ": holds no render_settings object (pbr render --json writes one)");
   }
-  const nlohmann::json& c = (*configurations)[row - 1];
-  const nlohmann::json& s = *settings;
-  try {
-    if (c.at("light_radius_scale").get<double>() != 1.0) {
-      throw std::runtime_error(path + "#" + std::to_string(row) + ": light radii scaled by " +
-                               text(c.at("light_radius_scale")) + " (--constant-density), which pbr render cannot");
-    }
-    RenderSettings record = {{"--scene", text(s.at("scene"))},
-                             {"--size", text(c.at("width")) + "x" + text(c.at("height"))},
-                             {"--lights", text(c.at("lights"))},
-                             {"--culling", text(c.at("culling"))},
-                             {"--model", text(c.at("model"))},
-                             {"--shadows", text(s.at("shadows"))},
-                             {"--shadow-filter", text(s.at("shadow_filter"))},
-                             {"--shadow-atlas", text(s.at("shadow_atlas"))},
-                             {"--aa", "none"}};
-    if (s.contains("tone_curve")) record.push_back({"--tonemap", text(s.at("tone_curve"))});
-    if (s.contains("spot_share") && !s.at("spot_share").is_null()) {
-      record.push_back({"--spot-share", text(s.at("spot_share"))});
-    }
-    return record;
-  } catch (const nlohmann::json::exception&) {
-    throw std::runtime_error(path + "#" + std::to_string(row) + ": not a configuration of a pbr bench report");
+  RenderSettings record;
+  for (const auto& [option, value] : found->items()) {
+    if (!value.is_string()) throw std::runtime_error(path + ": render_settings." + option + ": expected a string");
+    record.push_back({option, value.get<std::string>()});
   }
+  return record;
 }
 
 }  // namespace
@@ -99,36 +104,21 @@ std::vector<std::string> withSettingsFile(const std::vector<OptionSpec>& specs, 
     row = std::stoul(digits);
     path.erase(hash);
   }
-  const nlohmann::json doc = readJsonFile(path);
-  const auto found = doc.find("render_settings");
-  nlohmann::json record = nlohmann::json::object();
-  if (row > 0 || found == doc.end()) {
-    if (found == doc.end() && row == 0 && doc.contains("configurations")) {
-      throw std::runtime_error(path + ": a pbr bench report: name one of its configurations, " + path + "#K");
-    }
-    if (found == doc.end() && !doc.contains("configurations")) {
-      throw std::runtime_error(path + ": holds no render_settings object (pbr render --json writes one)");
-    }
-    for (const auto& [option, value] : benchRowSettings(doc, path, row)) record[option] = value;
-  } else if (!found->is_object()) {
-    throw std::runtime_error(path + ": render_settings is not an object");
-  } else {
-    record = *found;
-  }
+  const RenderSettings record = row > 0 ? benchRowSettings(path, row) : reportSettings(path);
   std::vector<std::string> given;
   for (const std::string& arg : argv) {
     if (arg.rfind("--", 0) == 0) given.push_back(optionName(arg));
   }
   std::vector<std::string> out = argv;
-  for (const auto& [option, value] : record.items()) {
+  for (const auto& [option, value] : record) {
     const auto spec = std::find_if(specs.begin(), specs.end(), [&](const OptionSpec& s) { return s.name == option; });
-    if (spec == specs.end() || !decidesFrame(option) || !value.is_string()) {
+    if (spec == specs.end() || !decidesFrame(option)) {
       throw std::runtime_error(path + ": render_settings." + option + ": not an option of pbr render that decides "
-                               "the frame, given as a string");
+                               "the frame");
     }
     if (std::find(given.begin(), given.end(), option) != given.end()) continue;
     out.push_back(option);
-    if (!spec->metavar.empty()) out.push_back(value.get<std::string>());
+    if (!spec->metavar.empty()) out.push_back(value);
   }
   return out;
 }
