@@ -14,8 +14,8 @@
 #include "app/scene_source.hpp"
 #include "core/context.hpp"
 #include "core/frame_capture.hpp"
-#include "core/image.hpp"
 #include "core/exposure.hpp"
+#include "core/image.hpp"
 #include "core/messages.hpp"
 #include "core/output_file.hpp"
 #include "lighting/lighting_pass.hpp"
@@ -271,6 +271,14 @@ int runRender(const std::vector<std::string>& commandLine) {
   if (debug && needsClusterGrid(*debug) && culling == Culling::None) {
     throw UsageError(std::string("--debug ") + toString(*debug) + " needs --culling clustered");
   }
+  // Blinn-Phong frames are clamped in LDR: no tone curve or exposure reaches them.
+  const ToneCurve curve = readToneCurve(args);
+  if (model != ShadingModel::Pbr && args.has("--tonemap")) {
+    throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
+  }
+  if (model != ShadingModel::Pbr && args.get("--exposure") == "auto") {
+    throw UsageError("--exposure auto meters the pbr model's frames; --model blinn-phong frames are clamped");
+  }
   const glm::ivec2 size = args.getSize("--size");
   const int warmup = args.getInt("--warmup", 0, 100000);
   const int frames = args.getInt("--frames", 1, 100000);
@@ -316,10 +324,6 @@ int runRender(const std::vector<std::string>& commandLine) {
   // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
   const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
                                                                   : std::string(toString(aa));
-  const ToneCurve curve = readToneCurve(args);
-  if (model != ShadingModel::Pbr && args.has("--tonemap")) {
-    throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
-  }
   const std::string shownCurve = model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(curve)) : "";
   std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s%s\n", scene.name.c_str(), size.x,
               size.y, scene.lights.size(), directional.c_str(), toString(model),
@@ -377,8 +381,7 @@ int runRender(const std::vector<std::string>& commandLine) {
     pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(outPng), ldr); });
     std::printf("wrote %s\n", outPng.c_str());
   }
-  const float shownExposure =
-      metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
+  const float shownExposure = metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
   const FrameExposure shown{model == ShadingModel::Pbr, shownExposure, metered.has_value()};
   for (const std::string& note : frameNotes(scene, size, shown, outPng.empty() ? nullptr : &ldr)) {
     std::printf("note: %s\n", note.c_str());

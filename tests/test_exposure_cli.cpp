@@ -66,6 +66,13 @@ TEST_CASE("cli: --exposure auto reports what it metered and yields to a scene ca
   CHECK(both.exitCode == 2);
   CHECK(isOneLine(both.err));
   CHECK(both.err.find("--exposure auto") != std::string::npos);
+  // Blinn-Phong frames are clamped: nothing to meter, refused before a context is made.
+  args = render;
+  args.insert(args.end(), {"--exposure", "auto", "--model", "blinn-phong"});
+  const PbrRun clamped = runPbr(dir, args);
+  CHECK(clamped.exitCode == 2);
+  CHECK(isOneLine(clamped.err));
+  CHECK(clamped.out.empty());
 
   std::string withCamera = pbr::test::kCliScene;
   withCamera.replace(withCamera.find("\"fov_y_deg\""), 0, "\"ev100\": 2, ");
