@@ -250,16 +250,15 @@ int runAccuracy(const std::vector<std::string>& argv) {
 
   const std::string csvPath = (dir / "accuracy.csv").string();
   // The CSV's circumstances, beside it (csv_provenance.hpp).
-  const auto size2 = [](glm::ivec2 s) { return std::to_string(s.x) + "x" + std::to_string(s.y); };
   KeyValues provenance = {
       {"gl_renderer", info.renderer},
       {"timing_mode", describe(mode)},
-      {"pair_cost_frame", size2(cost.size) + ", " + std::to_string(cost.lights) +
+      {"pair_cost_frame", sizeText(cost.size) + ", " + std::to_string(cost.lights) +
                               " lights reaching every pixel, brute force, " + std::to_string(cost.rounds) + " rounds"},
-      {"compared_frame", size2(size)},
+      {"compared_frame", sizeText(size)},
       {"tone_curve", toString(curve)}};
   if (!shadowRows.empty()) {
-    provenance.push_back({"shadow_cost_frame", shadowScene.label + ", " + size2(shadowCostSize) +
+    provenance.push_back({"shadow_cost_frame", shadowScene.label + ", " + sizeText(shadowCostSize) +
                                                    ", shadow and lighting passes, " + std::to_string(cost.rounds) +
                                                    " rounds"});
     provenance.push_back({"shadow_state", "each casting light alone, lit where shadowed over unshadowed radiance >= "
@@ -268,13 +267,13 @@ int runAccuracy(const std::vector<std::string>& argv) {
                                               " px of a change of the reference's state are not compared"});
   }
   if (!transparencyRows.empty()) {
-    provenance.push_back({"transparency_cost_frame", transparencyScene.label + ", " + size2(transparencyCostSize) +
+    provenance.push_back({"transparency_cost_frame", transparencyScene.label + ", " + sizeText(transparencyCostSize) +
                                                          ", transparency pass and frame, " +
                                                          std::to_string(cost.rounds) + " rounds"});
     provenance.push_back({"transparency_rows", "the exact variant without shadows, GPU and reference"});
   }
+  // Opened with the CSV, so that an unwritable folder fails at once; both are renamed into place at the end.
   OutputFile provenanceFile(provenancePath(csvPath));
-  provenanceFile.write([&](std::ostream& out) { writeKeyValues(out, provenance); });
   OutputFile csvFile(csvPath);
   std::ostream& csv = csvFile.stream();
   csv << "variant,scene,model,terms,hdr_format,gbuffer,ns_per_pair_median,ns_per_pair_p10,ns_per_pair_p90,"
@@ -383,6 +382,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
     }
   }
   csvFile.commit();
+  provenanceFile.write([&](std::ostream& out) { writeKeyValues(out, provenance); });
   std::printf("wrote %s (provenance in %s) and error maps error-VARIANT-SCENE.png in %s\n", csvPath.c_str(),
               provenancePath(csvPath).c_str(), dir.string().c_str());
   if (slices) writeSlices(shaders, variants, sliceGrid, dir);

@@ -131,7 +131,7 @@ int runReference(const std::vector<std::string>& argv) {
     ldr.pixels.reserve(frame.radiance.pixels.size());
     for (size_t i = 0; i + 3 < frame.radiance.pixels.size(); i += 4) {
       const float* p = &frame.radiance.pixels[i];
-      const glm::ivec3 code = reference::displayCode(glm::dvec3(p[0], p[1], p[2]), exposure.exposure, true, curve);
+      const glm::ivec3 code = reference::displayCode(glm::dvec3(p[0], p[1], p[2]), exposure.exposure, curve);
       ldr.pixels.insert(ldr.pixels.end(), {uint8_t(code.x), uint8_t(code.y), uint8_t(code.z), 255});
     }
     ldrFile->write([&](std::ostream& o) { writeLdr(o, ldrFileFormat(outLdr), ldr); });

@@ -1,6 +1,8 @@
 #include "core/tone_curve.hpp"
 
+#include <iterator>
 #include <stdexcept>
+#include <string>
 
 namespace pbr {
 
@@ -41,7 +43,13 @@ ToneCurve parseToneCurve(const std::string& name) {
 const char* toString(ToneCurve curve) { return entry(curve).name; }
 
 const char* toneCurveNames() {
-  return "aces-hill, aces-narkowicz, khronos-neutral, agx, reinhard, exponential or linear";
+  static const std::string names = [] {
+    std::string text;
+    const size_t n = std::size(kCurves);
+    for (size_t i = 0; i < n; ++i) text += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + kCurves[i].name;
+    return text;
+  }();
+  return names.c_str();
 }
 
 const char* toneCurveDefine(ToneCurve curve) { return entry(curve).define; }

@@ -10,6 +10,8 @@ namespace pbr {
 
 ShaderDefines ExposureMeter::defines() {
   return concat({{"METER_BINS", std::to_string(kMeterBins)},
+                 {"METER_LOG2_MIN", std::to_string(kMeterLog2Min) + ".0"},
+                 {"METER_BINS_PER_STOP", std::to_string(kMeterBinsPerStop) + ".0"},
                  {"METER_LOW_SHARE", std::to_string(kMeterLowShare)},
                  {"METER_HIGH_SHARE", std::to_string(kMeterHighShare)},
                  {"METER_KEY", std::to_string(kMeterKey)},

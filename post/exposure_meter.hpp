@@ -15,7 +15,10 @@ namespace pbr {
 // meter: a few light sources or a bright sky in view do not darken the frame, and dark corners do not blow it out.
 // Black pixels (below 2^-24 cd/m^2: the background where nothing is drawn) are not metered. Bins of an eighth of a
 // stop make a scene lit 2^k times brighter meter exactly k stops higher.
-constexpr int kMeterBins = 384;             // 1/8 stop each, from 2^-24 to 2^24
+constexpr int kMeterLog2Min = -24;  // the bottom of the first bin: darker is black, not metered
+constexpr int kMeterLog2Max = 24;   // the top of the last bin: brighter counts in it
+constexpr int kMeterBinsPerStop = 8;
+constexpr int kMeterBins = (kMeterLog2Max - kMeterLog2Min) * kMeterBinsPerStop;
 constexpr float kMeterLowShare = 0.10f;     // the share of metered pixels left out at the dark end
 constexpr float kMeterHighShare = 0.90f;    // and above this share, at the bright end
 constexpr float kMeterKey = 0.18f;          // what the metered mean luminance shows as, before the tone curve

@@ -117,8 +117,8 @@ dvec3 toneMap(ToneCurve curve, const dvec3& c) {
   throw std::logic_error("tone curve without a formula");
 }
 
-glm::ivec3 displayCode(const dvec3& radiance, double exposure, bool toneMapped, ToneCurve curve) {
-  const dvec3 shown = toneMapped ? toneMap(curve, radiance * exposure) : clamp01(radiance);
+glm::ivec3 displayCode(const dvec3& radiance, double exposure, ToneCurve curve) {
+  const dvec3 shown = toneMap(curve, radiance * exposure);
   glm::ivec3 code;
   for (int i = 0; i < 3; ++i) code[i] = int(std::lround(std::clamp(srgbEncode(shown[i]), 0.0, 1.0) * 255.0));
   return code;

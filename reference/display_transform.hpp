@@ -24,8 +24,7 @@ dvec3 toneMap(ToneCurve curve, const dvec3& color);
 // AgX's sigmoid on log2-encoded input in [0,1] (Blender's AgX Base: fulcrum (10 / 16.5, 0.18^(1/2.4)), slope 2.4,
 // powers 1.5), exposed for the tests of its definition.
 double agxSigmoid(double x);
-// Exposure, the tone curve (a clamp when `toneMap` is false, as Blinn-Phong frames get) and sRGB encoding to the
-// 8-bit code each channel shows.
-glm::ivec3 displayCode(const dvec3& radiance, double exposure, bool toneMap, ToneCurve curve);
+// Exposure, the tone curve and sRGB encoding to the 8-bit code each channel shows (the reference's model is PBR).
+glm::ivec3 displayCode(const dvec3& radiance, double exposure, ToneCurve curve);
 
 }  // namespace pbr::reference

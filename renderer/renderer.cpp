@@ -198,10 +198,9 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   const bool antiAliased = options.aa == AntiAliasing::Fxaa && (!debug || source == DebugSource::ClusterGrid);
   const bool metered = options.autoExposure && options.model == ShadingModel::Pbr && !replacesDisplay;
   if (metered) {
-    if (!scene_.exposureMeter) scene_.exposureMeter = std::make_unique<ExposureMeter>(scene_.programs);
     passes.push_back({"exposure", {R::Radiance}, {R::Exposure}, [this, &t, options] {
                         const float initialEv100 = float(ev100FromExposure(options.exposure));
-                        scene_.exposureMeter->meter(t.hdr, options.adaptSeconds, initialEv100);
+                        exposureMeter().meter(t.hdr, options.adaptSeconds, initialEv100);
                       }});
   }
   if (!replacesDisplay) {
@@ -211,7 +210,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         const Texture& display = antiAliased ? t.beforeAntiAliasing() : t.ldr;
                         scene_.post.render(t.hdr, display,
                                            {options.exposure, options.model == ShadingModel::Pbr, options.toneCurve,
-                                            metered ? scene_.exposureMeter.get() : nullptr});
+                                            metered ? &exposureMeter() : nullptr});
                       }});
   }
   if (antiAliased) {
@@ -320,10 +319,12 @@ void Renderer::renderFrame(const FrameOptions& requested, Profiler& profiler, co
   lastMetered_ = std::any_of(passes.begin(), passes.end(), [](const FramePass& p) { return p.name == "exposure"; });
 }
 
-void Renderer::restartExposure(float exposure) {
+ExposureMeter& Renderer::exposureMeter() {
   if (!scene_.exposureMeter) scene_.exposureMeter = std::make_unique<ExposureMeter>(scene_.programs);
-  scene_.exposureMeter->reset(float(ev100FromExposure(exposure)));
+  return *scene_.exposureMeter;
 }
+
+void Renderer::restartExposure(float exposure) { exposureMeter().reset(float(ev100FromExposure(exposure))); }
 
 std::optional<MeteredExposure> Renderer::meteredExposure() const {
   if (!lastMetered_) return std::nullopt;

@@ -12,8 +12,8 @@
 #include "core/shader_library.hpp"
 #include "core/shadow_maps.hpp"
 #include "core/uniform_buffer.hpp"
-#include "debug/debug_channel.hpp"
 #include "core/tone_curve.hpp"
+#include "debug/debug_channel.hpp"
 #include "renderer/culling_choice.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
@@ -153,6 +153,8 @@ class Renderer {
   // `options` with culling Auto replaced by this frame's choice (cullingChoice_), which its passes then time.
   FrameOptions resolveCulling(const FrameOptions& options);
   void markCulling(CullingChoice::Mark at);
+  // The automatic exposure's meter, made by the first frame or restart that needs it.
+  ExposureMeter& exposureMeter();
 
   const Scene& sceneData_;
   RendererConfig config_;

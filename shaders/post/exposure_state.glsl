@@ -7,7 +7,5 @@ layout(std430, binding = EXPOSURE_SSBO) buffer ExposureState {
   uint metered;
   uint bins[METER_BINS];
 } meter;
-
-// Bin i holds log2 luminance in [METER_LOG2_MIN + i / 8, METER_LOG2_MIN + (i + 1) / 8).
-const float METER_LOG2_MIN = -24.0;
-const float METER_BINS_PER_STOP = 8.0;
+// Bin i holds log2 luminance in [METER_LOG2_MIN + i / METER_BINS_PER_STOP, ... + (i + 1) / METER_BINS_PER_STOP),
+// both defines of ExposureMeter::defines(); the post pass reads the state but not the bins.
