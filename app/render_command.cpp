@@ -58,10 +58,11 @@ const std::vector<OptionSpec>& renderOptions() {
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
-      {"--assign-shape", "auto|invocation|workgroup",
+      {"--assign-shape", "auto|invocation|workgroup|cluster",
        "how the clustered light assignment spreads its work: four lights and one list per invocation (llvmpipe's "
-       "shape), a workgroup per light and per list (a GPU's), or per pass the one the two frames after a light "
-       "count's first time faster on this machine",
+       "shape), a workgroup per light and per list (a GPU's for few large lights), an invocation per cluster testing "
+       "batches of lights and a workgroup per list (a GPU's for few lights and clusters), or per pass the one the "
+       "frames after a light count's first time fastest on this machine",
        toString(renderer.clusters.lightPass), ""},
       {"--aa", "none|fxaa",
        "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
@@ -262,6 +263,7 @@ int runRender(const std::vector<std::string>& commandLine) {
   clusterConfig.tileSize = args.getInt("--tile", 8, 512);
   clusterConfig.slices = args.getInt("--slices", 1, 256);
   clusterConfig.lightPass = clusterConfig.fill = parseAssignShape(args.get("--assign-shape"));
+  if (clusterConfig.fill == AssignShape::Cluster) clusterConfig.fill = AssignShape::Workgroup;
   const bool stats = args.has("--stats");
   const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
   const ShadowSettings shadows = readShadowSettings(args);

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
+
+#include <glm/vec4.hpp>
 
 #include "core/debug_group.hpp"
 #include "lighting/blended_programs.hpp"
@@ -17,10 +20,15 @@ namespace {
 // 323-353 to 233-295 ms and the 65,536-light one from 46-50 to 34-46 ms (8: 232-334 ms), A B A B.
 constexpr uint32_t kLightsPerInvocation = 4;
 
-ShaderDefines lightPassDefines(bool spotLights, bool count, bool mark, bool stats, bool big, bool everyLight) {
-  return concat(LightClusters::lightPassPermutation(spotLights, count, mark, stats, big, everyLight),
-                lightingBindingDefines());
+using LightPassBuild = LightClusters::LightPassBuild;
+
+ShaderDefines lightPassDefines(bool spotLights, bool count, bool mark, bool stats, LightPassBuild build) {
+  return concat(LightClusters::lightPassPermutation(spotLights, count, mark, stats, build), lightingBindingDefines());
 }
+
+// Lights per dispatch of the per-cluster light pass: each invocation loops over all of them (and a batch loop
+// over a 64th as many), within llvmpipe's 65535 iterations.
+constexpr uint32_t kPerClusterChunkLights = 32768;
 
 ShaderDefines fillDefines(bool workgroupPerSlot) {
   return concat({{"WORKGROUP_PER_SLOT", workgroupPerSlot ? "1" : "0"}}, lightingBindingDefines());
@@ -59,6 +67,7 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       programs_(programs),
       occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
       activateProgram_(programs.compute("lighting/cluster_activate.comp", lightingBindingDefines())),
+      compactProgram_(programs.compute("lighting/cluster_compact.comp", lightingBindingDefines())),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
@@ -78,7 +87,7 @@ LightClusters::~LightClusters() {
 size_t LightClusters::bytes() const {
   size_t total = status_.size();
   for (const auto* b : {&headers_, &cursors_, &occupancy_, &boxes_, &clusterSlots_, &slotClusters_, &indices_,
-                        &visible_, &slotMasks_[0], &slotMasks_[1], &bigLights_}) {
+                        &visible_, &slotMasks_[0], &slotMasks_[1], &bigLights_, &occupied_}) {
     total += *b ? (*b)->size() : 0;
   }
   return total;
@@ -227,7 +236,7 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   const auto mark = [this, trialing](AssignShapeTrials::Mark at) {
     if (trialing) trials_.mark(at);
   };
-  if (trialing) trials_.beginFrame(count, newGrid);
+  if (trialing) trials_.beginFrame(count, expectedActive_, newGrid);
   ensureLightBuffers(count);
   planMasks(count, expectedActive_);
   const uint32_t clusters = blockData_.counts.y;
@@ -259,13 +268,15 @@ void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   }
   const uint32_t windows = std::max(1u, (count + windowLights_ - 1) / windowLights_);
   if (trialing && trials_.trialFrame()) {
-    // Compiled before the timestamps, so that neither shape's time holds a compilation: the counting (and, in one
-    // window, marking) pass and the windows' marking passes, in both shapes.
+    // Compiled before the timestamps, so that no shape's time holds a compilation: the counting (and, in one
+    // window, marking) pass and the windows' marking passes, in every shape tried.
     for (const bool windowPass : {false, windows > 1}) {
-      for (const auto& [big, every] : {std::pair{false, false}, {true, false}, {true, true}}) {
+      for (const LightPassBuild build : {LightPassBuild::Inline, LightPassBuild::Queued, LightPassBuild::EveryLight,
+                                         LightPassBuild::PerCluster}) {
+        if (build == LightPassBuild::PerCluster && !trials_.triesClusterLightPass()) continue;
         programs_.compute("lighting/cluster_lights.comp",
                           lightPassDefines(lights.hasSpotLights(), !windowPass, windowPass || windows == 1,
-                                           stats && !windowPass, big, every));
+                                           stats && !windowPass, build));
       }
     }
   }
@@ -343,27 +354,50 @@ void LightClusters::measureOccupancy(const FrameBlock& f, const UniformBuffer<Fr
   occupy(f, frame, depth, blended);
 }
 
-std::vector<ViewSpaceBox> LightClusters::occupiedBoxes() const {
+std::vector<ViewSpaceBox> LightClusters::occupiedBoxes() {
   const uint32_t clusters = blockData_.counts.y, tiles = dims_.x * dims_.y;
-  std::vector<uint32_t> words(size_t(clusters) * kOccupancyWords);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(occupancy_->id(), 0, GLsizeiptr(words.size() * sizeof(uint32_t)), words.data());
-  // cluster_occupancy.comp's encoding: the minimum corner as ordered bits, the maximum as their complement; all
-  // ones where no pixel is (clusters.glsl, orderedFloat).
+  const uint64_t bytes = 16 + uint64_t(clusters) * 32;
+  if (!occupied_ || occupied_->size() < bytes) {
+    occupied_ = std::make_unique<Buffer>("clusters.occupied", bytes, nullptr, 0);
+  }
+  const uint32_t zero = 0;
+  glClearNamedBufferSubData(occupied_->id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  block_.bind(lighting_binding::kClusterUbo.index);
+  occupancy_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterOccupancySsbo.index);
+  occupied_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kOccupiedClustersSsbo.index);
+  {
+    const DebugGroup group("cluster compact");
+    compactProgram_.use();
+    glDispatchCompute(groupsFor(clusters, 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
+  uint32_t count = 0;
+  glGetNamedBufferSubData(occupied_->id(), 0, sizeof count, &count);
+  count = std::min(count, clusters);
+  std::vector<glm::uvec4> entries(size_t(count) * 2);
+  if (count > 0) {
+    glGetNamedBufferSubData(occupied_->id(), 16, GLsizeiptr(entries.size() * sizeof(glm::uvec4)), entries.data());
+  }
+  // cluster_occupancy.comp's encoding: the minimum corner as ordered bits, the maximum as their complement
+  // (clusters.glsl, orderedFloat).
   const auto decode = [](uint32_t u) {
     const uint32_t bits = (u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u;
     float x;
     std::memcpy(&x, &bits, sizeof x);
     return x;
   };
-  std::vector<ViewSpaceBox> boxes;
-  for (uint32_t c = 0; c < clusters; ++c) {
-    const uint32_t* w = &words[size_t(c) * kOccupancyWords];
-    if (w[0] == 0xFFFFFFFFu) continue;
-    boxes.push_back({{decode(w[0]), decode(w[1]), decode(w[2])}, {decode(~w[3]), decode(~w[4]), decode(~w[5])},
-                     c % tiles});
+  std::vector<std::pair<uint32_t, ViewSpaceBox>> boxes;
+  boxes.reserve(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::uvec4 &a = entries[2 * i], &b = entries[2 * i + 1];
+    boxes.push_back({a.x, {{decode(a.y), decode(a.z), decode(a.w)}, {decode(~b.x), decode(~b.y), decode(~b.z)},
+                           a.x % tiles}});
   }
-  return boxes;
+  std::sort(boxes.begin(), boxes.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+  std::vector<ViewSpaceBox> out;
+  out.reserve(boxes.size());
+  for (const auto& entry : boxes) out.push_back(entry.second);
+  return out;
 }
 
 void LightClusters::activate() {
@@ -394,11 +428,14 @@ void LightClusters::setWindow(uint32_t begin, uint32_t end) {
   block_.update(blockData_);
 }
 
-ShaderDefines LightClusters::lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big,
-                                                  bool everyLight) {
+ShaderDefines LightClusters::lightPassPermutation(bool spotLights, bool count, bool mark, bool stats,
+                                                  LightPassBuild build) {
+  const bool big = build == LightPassBuild::Queued || build == LightPassBuild::EveryLight;
   return {{"SPOT_LIGHTS", spotLights ? "1" : "0"}, {"LIGHT_COUNT", count ? "1" : "0"},
           {"LIGHT_MARK", mark ? "1" : "0"},        {"ASSIGN_STATS", stats ? "1" : "0"},
-          {"BIG_LIGHTS", big ? "1" : "0"},          {"EVERY_LIGHT", everyLight ? "1" : "0"},
+          {"BIG_LIGHTS", big ? "1" : "0"},
+          {"EVERY_LIGHT", build == LightPassBuild::EveryLight ? "1" : "0"},
+          {"PER_CLUSTER", build == LightPassBuild::PerCluster ? "1" : "0"},
           {"LIGHTS_PER_INVOCATION", std::to_string(kLightsPerInvocation)}};
 }
 
@@ -418,24 +455,43 @@ bool LightClusters::settled(uint32_t lights) const {
 std::string LightClusters::shapeSummary() const {
   std::string out = std::string("light pass ") + toString(lightPassShape()) + ", fill " + toString(fillShape());
   if (config_.lightPass != AssignShape::Automatic && config_.fill != AssignShape::Automatic) return out + " (forced)";
-  if (!trials_.decided()) return out + " (timing both shapes: the invocation shape until both are measured)";
-  char measured[160];
+  if (!trials_.decided()) return out + " (timing the shapes: the invocation shape until all are measured)";
   const auto l = trials_.lightPassMs(), f = trials_.fillMs();
-  if (l[1] < 0.0) {
-    std::snprintf(measured, sizeof measured, " (timed here, invocation / workgroup: light pass %.3f ms / not tried "
-                  "over %u lights, fill %.3f / %.3f ms)", l[0], AssignShapeTrials::kMaxWorkgroupLightPass, f[0], f[1]);
-  } else {
-    std::snprintf(measured, sizeof measured, " (timed here, invocation / workgroup: light pass %.3f / %.3f ms, fill "
-                  "%.3f / %.3f ms)", l[0], l[1], f[0], f[1]);
+  char light[3][48];
+  for (size_t i = 0; i < 3; ++i) std::snprintf(light[i], sizeof light[i], "%.3f", l[i]);
+  if (!trials_.triesWorkgroupLightPass()) {
+    std::snprintf(light[1], sizeof light[1], "not tried over %u lights", AssignShapeTrials::kMaxWorkgroupLightPass);
   }
+  if (!trials_.triesClusterLightPass()) {
+    std::snprintf(light[2], sizeof light[2], "not tried over %llu tests",
+                  static_cast<unsigned long long>(AssignShapeTrials::kMaxPerClusterTests));
+  }
+  char measured[256];
+  std::snprintf(measured, sizeof measured,
+                " (timed here, invocation / workgroup / cluster: light pass %s / %s / %s ms, fill %.3f / %.3f ms)",
+                light[0], light[1], light[2], f[0], f[1]);
   return out + measured;
 }
 
 void LightClusters::dispatchLights(bool spotLights, bool count, bool mark, bool stats, uint32_t begin, uint32_t end) {
   const DebugGroup group(count ? "cluster lights" : "cluster lights (window)");
+  if (lightPassShape() == AssignShape::Cluster) {
+    const Program& perCluster = programs_.compute(
+        "lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, LightPassBuild::PerCluster));
+    perCluster.use();
+    for (uint32_t first = begin; first < end; first += std::min(end - first, kPerClusterChunkLights)) {
+      const uint32_t last = first + std::min(end - first, kPerClusterChunkLights);
+      for (uint64_t slot = 0; slot < slotCapacity_; slot += uint64_t(kMaxGroups) * 64) {
+        glProgramUniform4ui(perCluster.id(), 0, first, last, uint32_t(slot), 0);
+        glDispatchCompute(groupsFor(std::min<uint64_t>(slotCapacity_ - slot, uint64_t(kMaxGroups) * 64), 64), 1, 1);
+      }
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    return;
+  }
   if (lightPassShape() == AssignShape::Workgroup) {
-    const Program& perLight =
-        programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true, true));
+    const Program& perLight = programs_.compute(
+        "lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, LightPassBuild::EveryLight));
     perLight.use();
     for (uint32_t first = begin; first < end; first += std::min(end - first, kMaxGroups)) {
       const uint32_t groups = std::min(end - first, kMaxGroups);
@@ -447,12 +503,14 @@ void LightClusters::dispatchLights(bool spotLights, bool count, bool mark, bool 
   }
   const uint32_t reset[4] = {0, 1, 1, 0};
   glNamedBufferSubData(bigLights_->id(), 0, sizeof reset, reset);
-  const Program& inline_ = programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, false, false));
+  const Program& inline_ = programs_.compute("lighting/cluster_lights.comp",
+                                             lightPassDefines(spotLights, count, mark, stats, LightPassBuild::Inline));
   inline_.use();
   glProgramUniform4ui(inline_.id(), 0, begin, end, 0, 0);
   glDispatchCompute(groupsFor(end - begin, 64 * kLightsPerInvocation), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  programs_.compute("lighting/cluster_lights.comp", lightPassDefines(spotLights, count, mark, stats, true, false)).use();
+  programs_.compute("lighting/cluster_lights.comp",
+                    lightPassDefines(spotLights, count, mark, stats, LightPassBuild::Queued)).use();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bigLights_->id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -470,7 +528,7 @@ void LightClusters::dispatchScan(bool stats) {
 // runs its (empty) fill. The fill leaves the window's masks zero.
 void LightClusters::fillWindow(uint32_t windowLights, bool first, bool last) {
   const DebugGroup group("cluster fill");
-  const bool perSlot = fillShape() == AssignShape::Workgroup;
+  const bool perSlot = fillShape() != AssignShape::Invocation;  // a cluster's fill is its slot's workgroup
   const Program& program = programs_.compute("lighting/cluster_fill.comp", fillDefines(perSlot));
   program.use();
   const uint32_t chunks = std::max(1u, (windowLights + kAssignChunkLights - 1) / kAssignChunkLights);

@@ -71,8 +71,9 @@ class LightClusters {
   void measureOccupancy(const FrameBlock& frameData, const UniformBuffer<FrameBlock>& frame, const Texture& depth,
                         const BlendedSurfaces* blended);
   // The boxes of the surface points each occupied cluster holds, as the last assign or measureOccupancy measured
-  // them, with their screen tiles, in view space. Waits for the GPU (a read-back of 24 bytes per cluster).
-  std::vector<ViewSpaceBox> occupiedBoxes() const;
+  // them, with their screen tiles, in view space, in cluster order. Waits for the GPU: the occupied clusters are
+  // compacted on it (cluster_compact.comp), and read back as their count, then 32 bytes each.
+  std::vector<ViewSpaceBox> occupiedBoxes();
   // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
   void bindForLighting() const;
 
@@ -88,10 +89,12 @@ class LightClusters {
   // index list, or holds no surface, reads as empty. Waits for the GPU: for tests and tools.
   std::vector<std::vector<uint32_t>> readLists() const;
 
-  // The defines of the light pass (cluster_lights.comp) for these choices, without the binding defines: `big` the
-  // workgroup-per-light build, `everyLight` that build over a range of lights rather than the queued ones.
-  static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, bool big,
-                                            bool everyLight);
+  // The light pass's builds (cluster_lights.comp): four lights an invocation, queueing the large ones; a workgroup
+  // per queued light (BIG_LIGHTS); a workgroup per light of a range (BIG_LIGHTS, EVERY_LIGHT); an invocation per
+  // cluster slot (PER_CLUSTER).
+  enum class LightPassBuild { Inline, Queued, EveryLight, PerCluster };
+  // The defines of the light pass for these choices, without the binding defines.
+  static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, LightPassBuild build);
   // The shapes the passes take this frame: as configured, or as the trials choose.
   AssignShape lightPassShape() const;
   AssignShape fillShape() const;
@@ -134,7 +137,7 @@ class LightClusters {
 
   ClusterConfig config_;
   ProgramCache& programs_;
-  const Program &occupancyProgram_, &activateProgram_, &scanProgram_, &scanStatsProgram_;
+  const Program &occupancyProgram_, &activateProgram_, &compactProgram_, &scanProgram_, &scanStatsProgram_;
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
@@ -143,6 +146,7 @@ class LightClusters {
   std::unique_ptr<Buffer> headers_, cursors_, occupancy_, boxes_, clusterSlots_, slotClusters_, indices_, visible_;
   std::array<std::unique_ptr<Buffer>, 2> slotMasks_;  // shaders/lighting/slot_masks.glsl
   std::unique_ptr<Buffer> bigLights_;
+  std::unique_ptr<Buffer> occupied_;  // cluster_compact.comp's list, made on the first occupiedBoxes of a grid
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   uint32_t slotCapacity_ = 0;   // clusters with masks (slots); more active ones are shaded by brute force
   uint32_t windowLights_ = 0;   // lights per mask window

@@ -13,9 +13,9 @@ ShaderDefines lightingBindingDefines() {
       {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo,
        kLightSsbo, kClusterSsbo, kLightIndexSsbo, kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo,
        kLightingStatsSsbo, kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
-       kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kBaseColorUnit, kNormalUnit,
-       kMaterialUnit, kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit,
-       kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo,
+       kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo,
+       kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kRadianceImage, kPartialRadianceImage, kPairCountImage,
+       kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo,
        kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit,
        kOitRevealageUnit, kLayerNodeSsbo});
   return defines;

@@ -27,6 +27,8 @@ constexpr BindingPoint kClusterCursorSsbo{"CLUSTER_CURSOR_SSBO", BindingKind::St
 constexpr BindingPoint kSlotMasksSsbo{"SLOT_MASKS_SSBO", BindingKind::StorageBuffer, 12};
 constexpr BindingPoint kBigLightsSsbo{"BIG_LIGHTS_SSBO", BindingKind::StorageBuffer, 13};
 constexpr BindingPoint kSlotMasksHighSsbo{"SLOT_MASKS_HIGH_SSBO", BindingKind::StorageBuffer, 14};
+// The occupied clusters compacted for the CPU's read-back (cluster_compact.comp).
+constexpr BindingPoint kOccupiedClustersSsbo{"OCCUPIED_CLUSTERS_SSBO", BindingKind::StorageBuffer, 20};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.
 constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};

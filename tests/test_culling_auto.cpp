@@ -75,7 +75,7 @@ TEST_CASE("culling auto: with every light reaching every pixel it times brute fo
 
 TEST_CASE("culling auto: with many small lights brute force is not even tried, and clustered runs") {
   PBR_REQUIRE_GL();
-  const LightStats s = renderAuto(floorScene(4096, 0.2f, 0.8f, 5), 6);
+  const LightStats s = renderAuto(floorScene(4096, 0.2f, 0.8f, 5), 7);
   REQUIRE(s.decision);
   CAPTURE(s.decision->describe());
   CHECK((s.decision->ran == Culling::Clustered));

@@ -217,11 +217,13 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("lighting/deferred.comp", ibl);
   checkComputeCompiles("lighting/cluster_scan.comp", flagCombinations({"ASSIGN_STATS"}));
   DefineSets lightPass;
-  const std::vector<std::string> lightPassFlags = {"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS",
-                                                   "BIG_LIGHTS", "EVERY_LIGHT"};
+  const std::vector<std::string> lightPassFlags = {"SPOT_LIGHTS", "LIGHT_COUNT", "LIGHT_MARK", "ASSIGN_STATS"};
+  using Build = pbr::LightClusters::LightPassBuild;
   for (const ShaderDefines& flags : flagCombinations(lightPassFlags)) {
     const auto on = [&](size_t i) { return flags[i].value == "1"; };
-    lightPass.push_back(pbr::LightClusters::lightPassPermutation(on(0), on(1), on(2), on(3), on(4), on(5)));
+    for (const Build build : {Build::Inline, Build::Queued, Build::EveryLight, Build::PerCluster}) {
+      lightPass.push_back(pbr::LightClusters::lightPassPermutation(on(0), on(1), on(2), on(3), build));
+    }
   }
   checkComputeCompiles("lighting/cluster_lights.comp", lightPass);
   checkComputeCompiles("lighting/cluster_occupancy.comp", DefineSets{ShaderDefines{}});

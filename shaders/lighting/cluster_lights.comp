@@ -10,7 +10,12 @@
 // visited by the BIG_LIGHTS build, a workgroup per light sharing its tiles, so that no invocation loops past
 // llvmpipe's limit of 65535 iterations (see deferred.comp). With EVERY_LIGHT that build takes every light of
 // lightRange, one per workgroup, without the inline pass: the parallelism a GPU needs when lights are few and
-// large (LightClusters::lightPassShape).
+// large (LightClusters::lightPassShape). The PER_CLUSTER build turns the loops around, as most GPU clustered
+// renderers do: an invocation per cluster slot, its workgroup preparing 64 lights at a time into shared memory
+// and each invocation testing its cluster against them, with the same tests in the same order of reasoning (the
+// light's tile rectangle and slices, its tile's box, its cluster's box), so that it sets the same bits, gathered
+// into whole mask words before they are written. Cost: lights x clusters holding a surface; the shape for few
+// lights and clusters on a GPU.
 #if BIG_LIGHTS
 layout(local_size_x = 256) in;
 #else
@@ -79,7 +84,7 @@ vec4 gSphere;  // view space
 #if SPOT_LIGHTS
 vec4 gApexRange, gAxisCos;  // the view-space cone (clusters.glsl)
 #endif
-uvec2 gFirst;
+uvec2 gFirst, gLast;
 uint gColumns, gTiles, gSliceFirst, gSliceLast;
 bool gHit;
 
@@ -124,10 +129,9 @@ bool prepareLight(uint light) {
   gApexRange = vec4((frame.view * vec4(pr.xyz, 1.0)).xyz, pr.w * (1.0 + 1e-5));
   gAxisCos = vec4(mat3(frame.view) * axis, cosOuter);
 #endif
-  uvec2 last;
-  if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, last)) return false;
-  gColumns = last.x - gFirst.x + 1u;
-  gTiles = gColumns * (last.y - gFirst.y + 1u);
+  if (!(gSphere.w > 0.0) || !tileRectangle(gSphere, gFirst, gLast)) return false;
+  gColumns = gLast.x - gFirst.x + 1u;
+  gTiles = gColumns * (gLast.y - gFirst.y + 1u);
   float nearDepth = -gSphere.z - gSphere.w, farDepth = -gSphere.z + gSphere.w;
   gSliceFirst = nearDepth > 0.0 ? clampSlice(floor(sliceCoordinate(nearDepth) - sliceMargin())) : 0u;
   gSliceLast = clampSlice(floor(sliceCoordinate(farDepth) + sliceMargin()));
@@ -179,8 +183,101 @@ void finishLight() {
 #endif
 }
 
+#if PER_CLUSTER
+layout(std430, binding = SLOT_CLUSTERS_SSBO) readonly buffer SlotClusters {
+  uint activeCount;
+  uint slotClusters[];
+};
+
+// A batch of prepared lights (prepareLight's results), one per invocation of the workgroup; a light that reaches
+// nothing has an empty slice range.
+shared vec4 sSphere[64];
+shared uvec4 sTiles[64];   // first x, first y, last x, last y
+shared uvec2 sSlices[64];  // first, last
+#if SPOT_LIGHTS
+shared vec4 sApexRange[64], sAxisCos[64];
+#endif
+
+// The mask word a cluster's invocation is gathering bits for (~0u: none yet), flushed as visitCluster writes it.
+uint gWord = ~0u, gBits = 0u;
+void flushWord(uint slot) {
+#if LIGHT_MARK
+  if (gBits == 0u) return;
+  bool high = slotIsHigh(slot);
+  uint previous = orSlotWord(high, slotMaskBase(slot) + gWord, gBits);
+  if (previous == 0u) orSlotWord(high, slotSummaryBase(slot) + gWord / 32u, 1u << (gWord % 32u));
+  gBits = 0u;
+#endif
+}
+
+// Per cluster slot, lights lightRange.x to lightRange.y in batches of 64; slots from lightRange.z on.
+void perCluster() {
+  uint slotted = min(activeCount, slotCapacity());
+  if (lightRange.z + gl_WorkGroupID.x * gl_WorkGroupSize.x >= slotted) return;  // the whole workgroup
+  uint slot = lightRange.z + gl_GlobalInvocationID.x;
+  bool mine = slot < slotted;
+  uint cluster = mine ? slotClusters[slot] : 0u;
+  uint tile = cluster % tileCount(), slice = cluster / tileCount();
+  uvec2 tileXY = uvec2(tile % clusterGrid.dims.x, tile / clusterGrid.dims.x);
+  uint box = 2u * tileBoxIndex(tile);
+  vec3 tileLo = boxes[box].xyz, tileHi = boxes[box + 1u].xyz;
+  vec3 lo = boxes[2u * cluster].xyz, hi = boxes[2u * cluster + 1u].xyz;
+  uint hits = 0u;
+  for (uint first = lightRange.x; first < lightRange.y; first += gl_WorkGroupSize.x) {
+    barrier();  // the previous batch is read
+    uint i = gl_LocalInvocationIndex;
+    bool reaches = first + i < lightRange.y && prepareLight(first + i);
+    sSphere[i] = gSphere;
+    sTiles[i] = uvec4(gFirst, gLast);
+    sSlices[i] = reaches ? uvec2(gSliceFirst, gSliceLast) : uvec2(1u, 0u);
+#if SPOT_LIGHTS
+    sApexRange[i] = gApexRange;
+    sAxisCos[i] = gAxisCos;
+#endif
+    barrier();
+    if (!mine) continue;
+    uint batch = min(gl_WorkGroupSize.x, lightRange.y - first);
+    for (uint j = 0u; j < batch; ++j) {
+      uvec4 rect = sTiles[j];
+      uvec2 slices = sSlices[j];
+      if (slice < slices.x || slice > slices.y || any(lessThan(tileXY, rect.xy)) || any(greaterThan(tileXY, rect.zw))) {
+        continue;
+      }
+      vec4 sphere = sSphere[j];
+      if (!sphereIntersectsAabb(sphere.xyz, sphere.w, tileLo, tileHi)) continue;
+#if SPOT_LIGHTS
+      if (!coneIntersectsAabb(sApexRange[j], sAxisCos[j], tileLo, tileHi)) continue;
+#endif
+      if (!sphereIntersectsAabb(sphere.xyz, sphere.w, lo, hi)) continue;
+#if SPOT_LIGHTS
+      if (!coneIntersectsAabb(sApexRange[j], sAxisCos[j], lo, hi)) continue;
+#endif
+      ++hits;
+#if LIGHT_COUNT && ASSIGN_STATS
+      lightVisible[first + j] = 1u;
+#endif
+#if LIGHT_MARK
+      uint bit = first + j - clusterGrid.window.x;
+      if (bit / 32u != gWord) {
+        flushWord(slot);
+        gWord = bit / 32u;
+      }
+      gBits |= 1u << (bit % 32u);
+#endif
+    }
+  }
+  if (!mine) return;
+  flushWord(slot);
+#if LIGHT_COUNT
+  if (hits != 0u) atomicAdd(headers[cluster].count, hits);
+#endif
+}
+#endif
+
 void main() {
-#if BIG_LIGHTS
+#if PER_CLUSTER
+  perCluster();
+#elif BIG_LIGHTS
   gHit = false;
 #if EVERY_LIGHT
   if (!prepareLight(lightRange.x + gl_WorkGroupID.x)) return;
