@@ -55,6 +55,11 @@ const std::vector<OptionSpec>& renderOptions() {
       transparencyOption(),
       toneMapOption(),
       shadowAtlasOption(),
+      {"--shadow-draws", "auto|per-view|per-light",
+       "how the shadow casters are drawn, the same depths either way: a draw per caster and view, or per caster and "
+       "run of a light's views with each view's viewport chosen in the vertex shader (fewer draws to record; needs "
+       "GL_ARB_shader_viewport_layer_array), or per-light on a GPU that has it and per-view on a CPU rasterizer",
+       toString(ShadowSettings{}.draws), ""},
       {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
@@ -172,6 +177,9 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 "(%.0f MiB, %.1f %% used)\n",
                 h.shadowedLights, h.viewsRendered, h.viewsSkipped, atlas, atlas,
                 double(shadowAtlasBytes(atlas)) / (1 << 20), 100.0 * double(h.texelsUsed) / (double(atlas) * atlas));
+    std::printf("shadows: CPU in the last frame: %.2f ms reading the occupied clusters back (waiting for the GPU), "
+                "%.2f ms planning, %.2f ms recording %u draws (%s)\n",
+                h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view");
     if (h.cascadeTexelMax > 0.0f) {
       std::printf("shadows: directional cascades' texels %.3g-%.3g scene units (metres) across\n",
                   double(h.cascadeTexelMin), double(h.cascadeTexelMax));
@@ -266,7 +274,8 @@ int runRender(const std::vector<std::string>& commandLine) {
   if (clusterConfig.fill == AssignShape::Cluster) clusterConfig.fill = AssignShape::Workgroup;
   const bool stats = args.has("--stats");
   const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
-  const ShadowSettings shadows = readShadowSettings(args);
+  ShadowSettings shadows = readShadowSettings(args);
+  shadows.draws = parseShadowDraws(args.get("--shadow-draws"));
   std::optional<DebugChannel> debug;
   if (args.has("--debug")) debug = parseDebugChannel(args.get("--debug"));
   // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.

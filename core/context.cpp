@@ -24,6 +24,16 @@ const char* toString(EglPlatform platform) {
   return "?";
 }
 
+bool glHasExtension(const char* name) {
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const auto* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+    if (extension && std::strcmp(extension, name) == 0) return true;
+  }
+  return false;
+}
+
 bool isSoftwareRenderer(const std::string& r) {
   return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
 }

@@ -44,6 +44,9 @@ class Context {
   ContextInfo info_;
 };
 
+// Whether the current context offers the GL extension `name`.
+bool glHasExtension(const char* name);
+
 // Mesa's CPU rasterizers (llvmpipe, softpipe) by their GL_RENDERER string.
 bool isSoftwareRenderer(const std::string& glRenderer);
 

@@ -58,4 +58,9 @@ void GpuMesh::draw() const {
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
 }
 
+void GpuMesh::drawInstanced(int instances) const {
+  glBindVertexArray(vao_.id());
+  glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, instances);
+}
+
 }  // namespace pbr

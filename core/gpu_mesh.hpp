@@ -19,6 +19,8 @@ class GpuMesh {
   // `label` names its buffers and vertex array ("mesh 3" -> "mesh 3.vertices", ...).
   GpuMesh(const MeshData& data, const std::string& label);
   void draw() const;
+  // `instances` copies at once (gl_InstanceID 0 to instances - 1).
+  void drawInstanced(int instances) const;
 
  private:
   Buffer vertices_;

@@ -21,6 +21,22 @@ const char* toString(ShadowFilter filter) {
   return "?";
 }
 
+ShadowDraws parseShadowDraws(const std::string& name) {
+  for (const ShadowDraws d : {ShadowDraws::Auto, ShadowDraws::PerView, ShadowDraws::PerLight}) {
+    if (name == toString(d)) return d;
+  }
+  throw std::invalid_argument("unknown shadow draws '" + name + "' (expected auto, per-view or per-light)");
+}
+
+const char* toString(ShadowDraws draws) {
+  switch (draws) {
+    case ShadowDraws::Auto: return "auto";
+    case ShadowDraws::PerView: return "per-view";
+    case ShadowDraws::PerLight: return "per-light";
+  }
+  return "?";
+}
+
 const char* shadowFilterDefine(ShadowFilter filter) {
   switch (filter) {
     case ShadowFilter::Hard: return "SHADOW_FILTER_HARD";

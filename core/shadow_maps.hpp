@@ -51,6 +51,8 @@ struct ShadowCasterView {
   // A texel's world size per unit of the view's w (the distance along a perspective view's axis; an orthographic
   // view's w is 1): how coarse a caster's tessellation may be in this view.
   float texelWorld = 0.0f;
+  // The shadowed light it belongs to (ShadowViewPlan::light): a light's views are drawn together.
+  uint32_t light = 0;
 };
 
 // A point or spot light's entry in `lightViews`: 0 without shadows; else its first view + 1 in bits 0-25, log2 of
@@ -95,10 +97,19 @@ const char* shadowFilterDefine(ShadowFilter filter);
 constexpr int kDefaultShadowAtlas = 4096;
 constexpr int kMinShadowAtlas = 256;
 constexpr int kMaxShadowAtlas = 16384;
+// How the casters' draws are issued (the same depths either way): `PerView`, a draw per caster and view;
+// `PerLight`, a draw per caster and run of a light's views seeing it, each instance choosing its view's viewport
+// in the vertex shader (GL_ARB_shader_viewport_layer_array), fewer draws for the CPU to record; `Auto`, PerLight
+// on a GPU with the extension, PerView on a CPU rasterizer, which rasterizes per-vertex viewports the slower.
+enum class ShadowDraws { Auto, PerView, PerLight };
+ShadowDraws parseShadowDraws(const std::string& name);  // "auto", "per-view", "per-light"
+const char* toString(ShadowDraws draws);
+
 struct ShadowSettings {
   ShadowMode mode = ShadowMode::Auto;
   ShadowFilter filter = ShadowFilter::Pcf3x3;
   int atlasSize = kDefaultShadowAtlas;
+  ShadowDraws draws = ShadowDraws::Auto;
 };
 
 // The constants above as defines for shadow_sample.glsl.

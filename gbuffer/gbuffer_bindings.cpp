@@ -6,8 +6,8 @@ namespace pbr {
 
 ShaderDefines gbufferBindingDefines() {
   using namespace gbuffer_binding;
-  return bindingDefines({kFrameUbo, kObjectUbo, kBaseColorMapUnit, kMetallicRoughnessMapUnit, kNormalMapUnit,
-                         kOcclusionMapUnit, kEmissiveMapUnit});
+  return bindingDefines({kFrameUbo, kObjectUbo, kShadowViewsUbo, kBaseColorMapUnit, kMetallicRoughnessMapUnit,
+                         kNormalMapUnit, kOcclusionMapUnit, kEmissiveMapUnit});
 }
 
 }  // namespace pbr

@@ -5,8 +5,10 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include <glm/mat2x3.hpp>
 #include <glm/matrix.hpp>
@@ -74,12 +76,14 @@ constexpr std::array<int, 3> kSphereLodSegments = {8, 16, 32};
 // The defines of the depth permutation a caster draws with (shaders/gbuffer/shadow_depth.*): ALPHA_MASK for an
 // alpha-masked material, BASE_COLOR_MAP where its alpha comes from a texture (read through TEXCOORD_1 with UV1),
 // VERTEX_COLORS where the vertex colours' alpha multiplies it.
-ShaderDefines depthPermutation(bool masked, bool maskTexture, bool vertexColors, bool uv1) {
+ShaderDefines depthPermutation(bool masked, bool maskTexture, bool vertexColors, bool uv1,
+                               bool viewportFromVertex) {
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   return concat({{"ALPHA_MASK", flag(masked)},
                  {"BASE_COLOR_MAP", flag(maskTexture)},
                  {"VERTEX_COLORS", flag(vertexColors)},
-                 {"UV1", flag(uv1)}},
+                 {"UV1", flag(uv1)},
+                 {"VIEWPORT_FROM_VERTEX", flag(viewportFromVertex)}},
                 gbufferBindingDefines());
 }
 
@@ -335,50 +339,109 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
+size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
+                                bool viewportFromVertex) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
-  // Each draw's depth program, looked up once; the shadow views' matrices are set on each distinct one per view.
-  if (depthPrograms_.empty()) {
+  // Each draw's depth program for this way of drawing, looked up once.
+  std::vector<const Program*>& depthPrograms = depthPrograms_[viewportFromVertex ? 1 : 0];
+  if (depthPrograms.empty()) {
     for (const Draw& d : draws_) {
-      const Program* p = &cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
-                                          depthPermutation(d.castsCutOut, d.cutOutTexture, d.cutOutColors,
-                                                           d.cutOutUv1));
-      depthPrograms_.push_back(p);
-      if (std::find(distinctDepthPrograms_.begin(), distinctDepthPrograms_.end(), p) == distinctDepthPrograms_.end()) {
-        distinctDepthPrograms_.push_back(p);
-      }
+      depthPrograms.push_back(&cache_.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",
+                                               depthPermutation(d.castsCutOut, d.cutOutTexture, d.cutOutColors,
+                                                                d.cutOutUv1, viewportFromVertex)));
     }
   }
-  size_t drawn = 0;
-  for (const ShadowCasterView& v : views) {
-    glViewport(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
-    for (const Program* p : distinctDepthPrograms_) {
-      glProgramUniformMatrix4fv(p->id(), 0, 1, GL_FALSE, &v.viewProjection[0][0]);
+  // The views in groups of one light's consecutive views, at most kViewsPerDraw, each group's view-projections in a
+  // block of its own within one buffer, at the driver's offset alignment.
+  std::vector<std::pair<size_t, size_t>> groups;  // first view, views
+  for (size_t v = 0; v < views.size(); ++v) {
+    if (groups.empty() || views[v].light != views[groups.back().first].light ||
+        groups.back().second == kViewsPerDraw) {
+      groups.push_back({v, 0});
     }
-    const FrustumPlanes planes = frustumPlanes(v.viewProjection);
-    const glm::mat4& m = v.viewProjection;
-    const glm::vec4 wRow(m[0][3], m[1][3], m[2][3], m[3][3]);
-    const Program* bound = nullptr;
-    for (size_t i = 0; i < draws_.size(); ++i) {
-      const Draw& d = draws_[i];
-      if (outsideFrustum(planes, d.bounds)) continue;
-      if (v.reach.w > 0.0f && !overlapsSphere(d.bounds, glm::vec3(v.reach), v.reach.w)) continue;
-      if (depthPrograms_[i] != bound) depthPrograms_[i]->use();
-      bound = depthPrograms_[i];
-      if (d.cutOutTexture) {
-        const GLuint unit = gbuffer_binding::kBaseColorMapUnit.index;
-        glBindTextureUnit(unit, d.textures[unit]);
-        glBindSampler(unit, d.samplers[unit]);
+    ++groups.back().second;
+  }
+  GLint alignment = 256;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  const size_t blockBytes = kViewsPerDraw * sizeof(glm::mat4);
+  const size_t stride = (blockBytes + size_t(alignment) - 1) / size_t(alignment) * size_t(alignment);
+  std::vector<unsigned char> blocks(groups.size() * stride);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    for (size_t i = 0; i < groups[g].second; ++i) {
+      std::memcpy(&blocks[g * stride + i * sizeof(glm::mat4)], &views[groups[g].first + i].viewProjection[0][0],
+                  sizeof(glm::mat4));
+    }
+  }
+  if (!blocks.empty()) {
+    if (!shadowViews_ || shadowViews_->size() < blocks.size()) {
+      shadowViews_ = std::make_unique<Buffer>("gbuffer.shadowViews", blocks.size(), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    glNamedBufferSubData(shadowViews_->id(), 0, GLsizeiptr(blocks.size()), blocks.data());
+  }
+
+  size_t drawn = 0;
+  std::vector<const GpuMesh*> meshes(kViewsPerDraw);
+  std::vector<FrustumPlanes> planes(kViewsPerDraw);
+  std::vector<glm::vec4> wRows(kViewsPerDraw);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const auto [first, count] = groups[g];
+    glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kShadowViewsUbo.index, shadowViews_->id(),
+                      GLintptr(g * stride), GLsizeiptr(blockBytes));
+    for (size_t i = 0; i < count; ++i) {
+      const ShadowCasterView& v = views[first + i];
+      if (viewportFromVertex) {
+        glViewportIndexedf(GLuint(i), float(v.viewport.x), float(v.viewport.y), float(v.viewport.z),
+                           float(v.viewport.w));
       }
-      glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
+      planes[i] = frustumPlanes(v.viewProjection);
+      const glm::mat4& m = v.viewProjection;
+      wRows[i] = glm::vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+    }
+    const Program* bound = nullptr;
+    for (size_t d = 0; d < draws_.size(); ++d) {
+      const Draw& draw = draws_[d];
+      // The tessellation each view draws the caster with; none where the view cannot see it.
+      bool any = false;
+      for (size_t i = 0; i < count; ++i) {
+        const ShadowCasterView& v = views[first + i];
+        const bool seen = !outsideFrustum(planes[i], draw.bounds) &&
+                          !(v.reach.w > 0.0f && !overlapsSphere(draw.bounds, glm::vec3(v.reach), v.reach.w));
+        meshes[i] = seen ? &casterMesh(draw, v, wRows[i]) : nullptr;
+        any = any || seen;
+      }
+      if (!any) continue;
+      if (depthPrograms[d] != bound) depthPrograms[d]->use();
+      bound = depthPrograms[d];
+      if (draw.cutOutTexture) {
+        const GLuint unit = gbuffer_binding::kBaseColorMapUnit.index;
+        glBindTextureUnit(unit, draw.textures[unit]);
+        glBindSampler(unit, draw.samplers[unit]);
+      }
+      glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), draw.blockOffset,
                         sizeof(ObjectBlock));
-      casterMesh(d, v, wRow).draw();
-      ++drawn;
+      // Runs of consecutive views drawing the same tessellation: one instanced draw each, or without the viewport
+      // from the vertex shader one draw per view.
+      for (size_t i = 0; i < count;) {
+        size_t end = i + 1;
+        if (viewportFromVertex) {
+          while (end < count && meshes[end] == meshes[i]) ++end;
+        }
+        if (meshes[i]) {
+          if (!viewportFromVertex) {
+            const glm::ivec4& r = views[first + i].viewport;
+            glViewport(r.x, r.y, r.z, r.w);
+          }
+          glProgramUniform1ui(bound->id(), 0, GLuint(i));
+          meshes[i]->drawInstanced(int(end - i));
+          ++drawn;
+        }
+        i = end;
+      }
     }
   }
   glBindSampler(gbuffer_binding::kBaseColorMapUnit.index, 0);

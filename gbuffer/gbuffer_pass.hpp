@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/blended_surfaces.hpp"
@@ -28,9 +29,15 @@ class GBufferPass {
   void updatePose(const Scene& scene, const std::vector<int>& changedMeshes);
 
   // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z, both faces: a plane or
-  // an open mesh casts from either side), once per view into its square, objects outside the view's frustum left
-  // out. The depth programs are compiled on first use. Returns the draws made.
-  size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views);
+  // an open mesh casts from either side), into each view's square, objects outside the view's frustum left out.
+  // A light's consecutive views are drawn together, up to kViewsPerDraw, their matrices in one block; with
+  // `viewportFromVertex` (GL_ARB_shader_viewport_layer_array, ShadowDraws::PerLight) a caster takes one instanced
+  // draw per run of them that sees it with one tessellation, each instance choosing its view's viewport in the
+  // vertex shader; without it, a draw per view. The depth programs are compiled on first use. Returns the draws
+  // made.
+  size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views, bool viewportFromVertex);
+  // Views one shadow draw may cover: GL's least number of viewports (shaders/gbuffer/shadow_depth.vert).
+  static constexpr size_t kViewsPerDraw = 16;
   // Whether the scene has BLEND objects, which the G-buffer leaves out and drawBlended draws.
   bool hasBlended() const { return opaqueDraws_ < draws_.size(); }
   // Whether the G-buffer holds unlit surfaces (hasUnlitSurface), whose pixels the lighting pass leaves unlit.
@@ -83,8 +90,9 @@ class GBufferPass {
 
   ProgramCache& cache_;
   std::vector<const Program*> programs_;  // one per permutation the scene uses, owned by the cache
-  std::vector<const Program*> depthPrograms_;  // per draw, once shadows are first drawn
-  std::vector<const Program*> distinctDepthPrograms_;
+  // Per draw, once shadows are first drawn: [0] a draw per view, [1] the viewport from the vertex shader.
+  std::array<std::vector<const Program*>, 2> depthPrograms_;
+  std::unique_ptr<Buffer> shadowViews_;  // renderDepth's blocks of view-projections
   std::vector<GpuMesh> meshes_;
   std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
   std::vector<GpuTexture> textures_;

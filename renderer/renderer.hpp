@@ -150,6 +150,9 @@ class Renderer {
   // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
   BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);
+  // Whether the shadow casters are drawn a light's views at once (ShadowDraws); throws where PerLight is asked of a
+  // driver without the extension it needs.
+  bool shadowDrawsPerLight(ShadowDraws draws);
   // `options` with culling Auto replaced by this frame's choice (cullingChoice_), which its passes then time.
   FrameOptions resolveCulling(const FrameOptions& options);
   void markCulling(CullingChoice::Mark at);
@@ -168,6 +171,9 @@ class Renderer {
   const std::vector<PointLight>* lights_;  // the frame's point and spot lights: the scene's or lightsSet_
   std::optional<std::pair<ShadowMode, bool>> shadowedCache_;
   bool lastShadowed_ = false;
+  double shadowReadBackMs_ = 0.0;  // the last shadow pass's occupancy read-back and receivers, CPU wall-clock
+  bool shadowDrawsPerLight_ = false;        // the last shadow pass's ShadowDraws, resolved
+  std::optional<bool> viewportFromVertex_;  // GL_ARB_shader_viewport_layer_array, asked once
   bool lastMetered_ = false;  // the last frame ran the automatic exposure's meter
   FrameOptions lastOptions_;  // as the last frame ran them: culling Auto resolved
   CullingChoice cullingChoice_;

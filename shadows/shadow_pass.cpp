@@ -1,6 +1,7 @@
 #include "shadows/shadow_pass.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -26,8 +27,11 @@ ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL
 }
 
 void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters) {
+  const auto start = std::chrono::steady_clock::now();
   ShadowPlan plan = planShadows(inputs);
+  const auto planned = std::chrono::steady_clock::now();
   stats_ = plan.stats;
+  stats_.planMs = std::chrono::duration<double, std::milli>(planned - start).count();
   ownersCurrent_ = false;
   if (!atlas_ || atlas_->width() != inputs.atlasSize) {
     framebuffer_.reset();
@@ -66,7 +70,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     const ShadowViewPlan& v = plan.views[i];
     squares[i] = packShadowSquare(v.origin, v.size);
     if (v.size > 0) {
-      casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld});
+      casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld, v.light});
     }
   }
   ensureBuffer(views_, "shadows.views", bytes.size());
@@ -92,7 +96,8 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     }
     glDisable(GL_SCISSOR_TEST);
   }
-  if (!casterViews.empty()) drawCasters(framebuffer_->id(), casterViews);
+  if (!casterViews.empty()) stats_.draws = uint32_t(drawCasters(framebuffer_->id(), casterViews));
+  stats_.recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planned).count();
   lastViews_ = std::move(plan.views);  // kept for ownerMap, not copied
 }
 

@@ -11,7 +11,8 @@ namespace pbr {
 
 // Draws the scene's casters' depth into `framebuffer`, once per view: the renderer hands in the geometry pass's
 // depth drawing, so that this pass knows no other.
-using DrawShadowCasters = std::function<void(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
+// Draws the casters into the views' squares; returns the draw calls made.
+using DrawShadowCasters = std::function<size_t(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
 
 // The frame's shadow maps: plans them (planShadows), renders the planned squares into one depth atlas and uploads
 // what the lighting pass reads (ShadowMaps). The atlas is allocated on the first shadowed frame, at the size the

@@ -67,10 +67,9 @@ ShadowPlan planShadows(const ShadowInputs& in) {
                            : cascadeSplits(in.camera, in.receivers.nearDepth(), in.receivers.farDepth(), kCascades);
   // Whether a perspective view from the light may hold a visible receiver; the widest border the view can have, at
   // the least size, is conservative for every size.
-  const auto holdsReceiver = [&](const PointLight& l, const glm::vec3& axis, float tanHalf) {
-    const ShadowViewPlan widest =
-        perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels);
-    return in.receivers.meets(glm::vec4(l.position, l.radius), frustumPlanes(widest.viewProjection));
+  const auto widestPlanes = [&](const PointLight& l, const glm::vec3& axis, float tanHalf) {
+    return frustumPlanes(
+        perspectiveView(l.position, axis, tanHalf, l.radius, kMinShadowView, kShadowBorderTexels).viewProjection);
   };
 
   std::vector<Request> requests;
@@ -90,15 +89,24 @@ ShadowPlan planShadows(const ShadowInputs& in) {
     const bool spotView = l.spot && l.spot->outerAngle <= kMaxSpotViewHalfAngle;
     Request r{spotView ? Request::Spot : Request::Cube, uint32_t(i), importance,
               ceilPow2(importance * (spotView ? 2.0f : 1.0f), kMinShadowView, maxView), 0, {}};
+    const glm::vec4 sphere(l.position, l.radius);
     if (spotView) {
-      r.visible.push_back(holdsReceiver(l, l.spot->direction, std::tan(l.spot->outerAngle)));
+      r.visible.push_back(in.receivers.meets(sphere, widestPlanes(l, l.spot->direction, std::tan(l.spot->outerAngle))));
     } else {
-      for (const glm::vec3& axis : kFaceAxes) {
-        // A wide spot light's faces outside its cone (beyond the face's corner angle, atan(sqrt 2)) see nothing lit.
-        const bool inCone = !l.spot || std::acos(std::clamp(glm::dot(axis, l.spot->direction), -1.0f, 1.0f)) <
-                                           l.spot->outerAngle + 0.9553166f;
-        r.visible.push_back(inCone && holdsReceiver(l, axis, 1.0f));
+      // A wide spot light's faces outside its cone (beyond the face's corner angle, atan(sqrt 2)) see nothing lit.
+      std::vector<FrustumPlanes> faces;
+      std::vector<size_t> faceOf;
+      for (size_t f = 0; f < kFaceAxes.size(); ++f) {
+        const glm::vec3& axis = kFaceAxes[f];
+        if (!l.spot ||
+            std::acos(std::clamp(glm::dot(axis, l.spot->direction), -1.0f, 1.0f)) < l.spot->outerAngle + 0.9553166f) {
+          faces.push_back(widestPlanes(l, axis, 1.0f));
+          faceOf.push_back(f);
+        }
       }
+      const uint32_t met = in.receivers.meetsViews(sphere, faces);
+      r.visible.assign(kFaceAxes.size(), false);
+      for (size_t k = 0; k < faces.size(); ++k) r.visible[faceOf[k]] = (met >> k & 1u) != 0u;
     }
     requests.push_back(r);
   }

@@ -48,6 +48,11 @@ struct ShadowStats {
   uint64_t texelsUsed = 0;       // atlas texels of the rendered views
   // World size of a texel of the rendered cascades, finest and coarsest (0 without one).
   float cascadeTexelMin = 0.0f, cascadeTexelMax = 0.0f;
+  // The pass's CPU side in the last frame, wall-clock ms: reading the occupied clusters back (a wait for the GPU)
+  // and building the receivers, planning, and recording the clears and draws; and the draw calls recorded.
+  double readBackMs = 0.0, planMs = 0.0, recordMs = 0.0;
+  uint32_t draws = 0;
+  bool drawsPerLight = false;  // ShadowDraws::PerLight ran
 };
 
 // The frame's shadow views and, per light, which views it owns: what the GPU buffers are made from (the header, whose

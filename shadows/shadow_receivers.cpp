@@ -55,6 +55,32 @@ bool ShadowReceivers::meets(const glm::vec4& sphere, const FrustumPlanes& planes
   return false;
 }
 
+uint32_t ShadowReceivers::meetsViews(const glm::vec4& sphere, const std::vector<FrustumPlanes>& views) const {
+  const glm::vec3 centre(sphere);
+  const uint32_t all = views.size() >= 32 ? ~0u : (1u << views.size()) - 1u;
+  uint32_t met = 0;
+  for (const Tile& tile : tiles_) {
+    if (!overlapsSphere(tile.box, centre, sphere.w)) continue;
+    uint32_t open = 0;  // the views not met yet that the tile is not wholly outside of
+    for (size_t v = 0; v < views.size(); ++v) {
+      if ((met >> v & 1u) == 0u && !outsideFrustum(views[v], tile.box)) open |= 1u << v;
+    }
+    for (const Cluster& c : tile.clusters) {
+      if (open == 0u) break;
+      if (!overlapsSphere(c.box, centre, sphere.w)) continue;
+      for (uint32_t bits = open; bits != 0u; bits &= bits - 1u) {
+        const int v = __builtin_ctz(bits);
+        if (!outsideFrustum(views[size_t(v)], c.box)) {
+          met |= 1u << v;
+          open &= ~(1u << v);
+        }
+      }
+    }
+    if (met == all) break;
+  }
+  return met;
+}
+
 bool ShadowReceivers::holdsDepth(float begin, float end) const {
   for (const Tile& tile : tiles_) {
     for (const Cluster& c : tile.clusters) {

@@ -26,6 +26,8 @@ class ShadowReceivers {
 
   // Whether an occupied cluster's box meets the sphere (centre xyz, radius w) and is not wholly outside `planes`.
   bool meets(const glm::vec4& sphere, const FrustumPlanes& planes) const;
+  // meets for several views of one sphere (at most 32), in one pass over the clusters: bit i for views[i].
+  uint32_t meetsViews(const glm::vec4& sphere, const std::vector<FrustumPlanes>& views) const;
   // Whether an occupied cluster's view depths overlap [begin, end].
   bool holdsDepth(float begin, float end) const;
 

@@ -271,7 +271,8 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
     }
   }
   // The shadow casters' depth permutations (GBufferPass::renderDepth).
-  for (const ShaderDefines& defines : flagCombinations({"ALPHA_MASK", "BASE_COLOR_MAP", "VERTEX_COLORS", "UV1"})) {
+  for (const ShaderDefines& defines :
+       flagCombinations({"ALPHA_MASK", "BASE_COLOR_MAP", "VERTEX_COLORS", "UV1", "VIEWPORT_FROM_VERTEX"})) {
     const std::string described = describeDefines(defines);
     CAPTURE(described);
     CHECK_NOTHROW(shaders.graphics("gbuffer/shadow_depth.vert", "gbuffer/shadow_depth.frag",

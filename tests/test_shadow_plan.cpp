@@ -296,3 +296,41 @@ TEST_CASE("shadow plan: with the clusters' receivers, only views that hold an oc
     CHECK(plan.stats.cascadeTexelMax == doctest::Approx(std::max(plan.views[0].texelWorld, plan.views[3].texelWorld)));
   }
 }
+
+TEST_CASE("shadow receivers: meetsViews finds, in one pass, the views meets finds one by one") {
+  // Clusters in 24 tiles over a slab of view space, and lights around and inside them with their six cube faces.
+  std::vector<pbr::ViewSpaceBox> boxes;
+  uint32_t seed = 12345u;
+  const auto next = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 24);
+  };
+  for (uint32_t tile = 0; tile < 24; ++tile) {
+    for (int c = 0; c < 6; ++c) {
+      const glm::vec3 lo(-12.0f + 24.0f * next(), -3.0f + 6.0f * next(), -30.0f + 28.0f * next());
+      boxes.push_back({lo, lo + glm::vec3(0.2f + next(), 0.2f + next(), 0.2f + next()), tile});
+    }
+  }
+  const pbr::ShadowReceivers receivers(boxes, glm::mat4(1.0f));
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  size_t met = 0, missed = 0;
+  for (int l = 0; l < 200; ++l) {
+    const glm::vec4 sphere(-14.0f + 28.0f * next(), -4.0f + 8.0f * next(), -32.0f + 32.0f * next(),
+                           0.5f + 6.0f * next());
+    std::vector<pbr::FrustumPlanes> faces;
+    for (const glm::vec3& axis : axes) {
+      faces.push_back(pbr::frustumPlanes(
+          pbr::perspectiveView(glm::vec3(sphere), axis, 1.0f, sphere.w, pbr::kMinShadowView, pbr::kShadowBorderTexels)
+              .viewProjection));
+    }
+    const uint32_t bits = receivers.meetsViews(sphere, faces);
+    for (size_t f = 0; f < faces.size(); ++f) {
+      const bool one = receivers.meets(sphere, faces[f]);
+      CHECK(((bits >> f & 1u) != 0u) == one);
+      (one ? met : missed) += 1;
+    }
+  }
+  // Both outcomes occur often enough to be tested.
+  CHECK(met > 100);
+  CHECK(missed > 100);
+}

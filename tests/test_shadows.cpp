@@ -331,10 +331,10 @@ TEST_CASE("shadows: lights that do not cast leave the frame as without shadows, 
   CHECK(o.hdr.pixels != n.hdr.pixels);
 }
 
-TEST_CASE("shadows: clustered frames equal brute force with point, spot and directional lights casting") {
-  PBR_REQUIRE_GL();
-  const pbr::ShaderLibrary shaders;
-  const glm::ivec2 size{128, 72};
+namespace {
+
+// The box under a sun, a sphere, and twelve point and spot lights around them, nine of them casting.
+pbr::Scene castingLightsScene() {
   pbr::Scene scene = boxScene({-0.4f, -1.0f, -0.3f}, 5.0f);
   scene.camera.position = {2.0f, 4.0f, 5.0f};
   scene.camera.up = {0.0f, 1.0f, 0.0f};
@@ -352,6 +352,16 @@ TEST_CASE("shadows: clustered frames equal brute force with point, spot and dire
     }
     scene.lights.push_back(l);
   }
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("shadows: clustered frames equal brute force with point, spot and directional lights casting") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{128, 72};
+  const pbr::Scene scene = castingLightsScene();
   for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
     CAPTURE(std::string(pbr::toString(model)));
     pbr::FrameOptions clustered, brute;
@@ -363,6 +373,42 @@ TEST_CASE("shadows: clustered frames equal brute force with point, spot and dire
     CHECK(c.hdr.pixels == b.hdr.pixels);
     CHECK(c.ldr.pixels == b.ldr.pixels);
   }
+}
+
+TEST_CASE("shadows: a caster drawn into all of a light's views at once shades as when drawn view by view") {
+  PBR_REQUIRE_GL();
+  // GBufferPass::renderDepth: instanced over runs of a light's views, each instance choosing its viewport in the
+  // vertex shader (ShadowDraws::PerLight), or a draw per view. Cube faces, a spot view, a sun's cascades, a sphere
+  // at several tessellations and an alpha-masked cut-out: the same depths either way.
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{160, 90};
+  pbr::Scene scene = castingLightsScene();
+  pbr::Material masked = grey(0.7f);
+  masked.alphaMode = pbr::AlphaMode::Mask;
+  masked.baseColor = glm::vec4(0.7f, 0.7f, 0.7f, 0.3f);  // under the cut-off: casts nothing
+  scene.addShape(pbr::Shape::Box, glm::translate(glm::mat4(1.0f), {1.0f, 1.5f, -1.0f}), masked);
+  for (int i = 0; i < 4; ++i) {
+    scene.addShape(pbr::Shape::Sphere, glm::translate(glm::mat4(1.0f), {-2.0f + 1.2f * float(i), 0.3f, 1.5f}),
+                   grey(0.4f));
+  }
+  pbr::FrameOptions perLightOptions, perViewOptions;
+  perLightOptions.shadows.draws = pbr::ShadowDraws::PerLight;
+  perViewOptions.shadows.draws = pbr::ShadowDraws::PerView;
+  const pbr::RenderedFrames layered = pbr::renderOffscreen(shaders, scene, size, perLightOptions, 1);
+  const pbr::RenderedFrames perView = pbr::renderOffscreen(shaders, scene, size, perViewOptions, 1);
+  CHECK(layered.stats.shadows.drawsPerLight);
+  CHECK_FALSE(perView.stats.shadows.drawsPerLight);
+  CHECK(layered.stats.shadows.viewsRendered > 12);
+  CHECK(perView.stats.shadows.viewsRendered == layered.stats.shadows.viewsRendered);
+  // Fewer draws: a caster seen by several of a light's views takes one.
+  CHECK(layered.stats.shadows.draws < perView.stats.shadows.draws);
+  CHECK(layered.hdr.pixels == perView.hdr.pixels);
+  const pbr::RenderedFrames unshadowed = [&] {
+    pbr::FrameOptions none;
+    none.shadows.mode = pbr::ShadowMode::None;
+    return pbr::renderOffscreen(shaders, scene, size, none, 1);
+  }();
+  CHECK(layered.hdr.pixels != unshadowed.hdr.pixels);
 }
 
 TEST_CASE("shadows: a spot and a point light over a sphere agree with the reference's ray-traced visibility") {
