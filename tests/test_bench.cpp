@@ -157,6 +157,11 @@ TEST_CASE("bench: a tiny sweep writes CSV and JSON with every column filled and 
     const double efficiency = std::stod(row.at("culling_efficiency"));
     CHECK(efficiency >= 0.0);
     CHECK(efficiency <= 1.0);
+    // The lighting pass's median over its evaluated pairs, in ns, from the row's own columns.
+    const double pairs = std::stod(row.at("pairs_evaluated"));
+    REQUIRE(pairs > 0.0);
+    CHECK(std::stod(row.at("lighting_ns_per_pair")) ==
+          doctest::Approx(std::stod(row.at("lighting_median_ms")) * 1e6 / pairs).epsilon(1e-3));
   }
 
   const Json json = Json::parse(pbr::test::readFile(dir.file("bench.json")));
@@ -176,6 +181,10 @@ TEST_CASE("bench: a tiny sweep writes CSV and JSON with every column filled and 
     REQUIRE(c.at("frames").size() == 2);
     for (const Json& f : c.at("frames")) CHECK(f.at("passes_ms").at("lighting") >= 0.0);
     CHECK(c.at("light_stats").at("lights") == c.at("lights"));
+    CHECK(c.at("light_stats").at("lighting_ns_per_pair").get<double>() ==
+          doctest::Approx(c.at("passes").at("lighting").at("median_ms").get<double>() * 1e6 /
+                          c.at("light_stats").at("pairs_evaluated").get<double>())
+              .epsilon(1e-9));
     CHECK(c.at("memory_bytes").at("total") > 0);
   }
 }

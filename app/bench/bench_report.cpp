@@ -16,6 +16,17 @@ namespace pbr {
 
 namespace {
 
+// The lighting pass's median over the pairs it evaluated (PairCounts::evaluated, counted in the stats frame), in ns:
+// the cost per pair a scene pays, fixed per-pixel work included; negative without a lighting pass or pairs.
+double lightingNsPerPair(const BenchResult& r) {
+  const PassSummary* lighting = r.pass("lighting");
+  if (!lighting || r.stats.pairs.evaluated == 0) return -1.0;
+  return lighting->ms.median * 1e6 / double(r.stats.pairs.evaluated);
+}
+
+// A measured value, or "-" where there is none.
+std::string orDash(double value, int decimals) { return value < 0.0 ? "-" : fixedDecimals(value, decimals); }
+
 using Json = nlohmann::ordered_json;
 using Record = std::vector<std::pair<std::string, std::string>>;
 
@@ -144,6 +155,7 @@ Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
       {"pairs_evaluated", measured(std::to_string(s.pairs.evaluated))},
       {"pairs_contributing", measured(std::to_string(s.pairs.contributing))},
       {"culling_efficiency", measured(fixedDecimals(s.cullingEfficiency(), 5))},
+      {"lighting_ns_per_pair", measured(orDash(lightingNsPerPair(r), 6))},
       {"gbuffer_bytes", measured(std::to_string(r.memory.gbuffer))},
       {"cluster_bytes", measured(std::to_string(r.memory.clusters))},
       {"light_bytes", measured(std::to_string(r.memory.lights))},
@@ -227,7 +239,9 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
                                {"shadow_views_skipped", s.shadows.viewsSkipped},
                                {"pairs_evaluated", s.pairs.evaluated},
                                {"pairs_contributing", s.pairs.contributing},
-                               {"culling_efficiency", s.cullingEfficiency()}}
+                               {"culling_efficiency", s.cullingEfficiency()},
+                               {"lighting_ns_per_pair", lightingNsPerPair(r) < 0.0 ? Json(nullptr)
+                                                                                   : Json(lightingNsPerPair(r))}}
                         : Json(nullptr);
   j["memory_bytes"] = ok ? Json{{"gbuffer", r.memory.gbuffer},
                                 {"clusters", r.memory.clusters},
@@ -296,7 +310,8 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
   const std::vector<std::string> passes = reportedPasses(report.results);
   std::vector<std::string> header = {"lights", "culling", "model"};
   header.insert(header.end(), passes.begin(), passes.end());
-  for (const char* h : {"frame", "p10-p90", "cpu", "lights/cluster", "efficiency", "GPU MiB", "CPU use"}) {
+  for (const char* h :
+       {"frame", "p10-p90", "cpu", "lights/cluster", "efficiency", "ns/pair", "GPU MiB", "CPU use"}) {
     header.push_back(h);
   }
 
@@ -318,6 +333,7 @@ void printBenchTable(std::ostream& out, const BenchReport& report) {
                                     std::to_string(r.stats.maxPerCluster) + ")"
                               : "-");
       row.push_back(fixedDecimals(r.stats.cullingEfficiency(), 3));
+      row.push_back(orDash(lightingNsPerPair(r), lightingNsPerPair(r) < 0.1 ? 4 : 2));
       row.push_back(fixedDecimals(static_cast<double>(r.memory.total()) / (1 << 20), 1));
       row.push_back(fixedDecimals(r.processCpuShare * 100.0, 0) + "%");
     }
