@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -95,6 +96,15 @@ void checkShapesAgree(const Scene& scene, glm::ivec2 size, bool mixed) {
   if (!scene.lights.empty()) CHECK(listed > 0);
 }
 
+// After `frames` frames with automatic shapes: what the shapes' summary says, and the clusters' status.
+std::pair<std::string, ClusterStatus> trialled(const Scene& scene, glm::ivec2 size, int frames) {
+  const ShaderLibrary shaders;
+  Renderer renderer(shaders, scene, size.x, size.y, RendererConfig{ClusterConfig{}});
+  Profiler profiler(TimingMode::Serializing);
+  for (int frame = 0; frame < frames; ++frame) renderer.renderFrame({}, profiler);
+  return {renderer.clusters().shapeSummary(), renderer.clusters().readStatus()};
+}
+
 }  // namespace
 
 TEST_CASE("assignment shapes: every combination lists and shades as brute force, 0 to 4,096 lights, spots included") {
@@ -176,12 +186,7 @@ TEST_CASE("assignment shapes: automatic shapes time each shape on the frames aft
 
 TEST_CASE("assignment shapes: over 65,536 lights the automatic choice keeps an invocation's four lights untried") {
   PBR_REQUIRE_GL();
-  const Scene scene = shapeScene(70000, 8, 0.2f, 1.5f, 0.0f);
-  const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, 24, 14, RendererConfig{ClusterConfig{}});
-  Profiler profiler(TimingMode::Serializing);
-  for (int frame = 0; frame < 6; ++frame) renderer.renderFrame({}, profiler);
-  const std::string summary = renderer.clusters().shapeSummary();
+  const std::string summary = trialled(shapeScene(70000, 8, 0.2f, 1.5f, 0.0f), {24, 14}, 6).first;
   CAPTURE(summary);
   CHECK(summary.rfind("light pass invocation, ", 0) == 0);
   CHECK(summary.find("not tried over 65536 lights") != std::string::npos);
@@ -192,14 +197,8 @@ TEST_CASE("assignment shapes: over 65,536 lights the automatic choice keeps an i
 
 TEST_CASE("assignment shapes: the cluster light pass is not tried where lights x occupied clusters is large") {
   PBR_REQUIRE_GL();
-  const Scene scene = shapeScene(8192, 4, 0.5f, 4.0f, 0.0f);
-  const ShaderLibrary shaders;
-  Renderer renderer(shaders, scene, 640, 360, RendererConfig{ClusterConfig{}});
-  Profiler profiler(TimingMode::Serializing);
-  for (int frame = 0; frame < 7; ++frame) renderer.renderFrame({}, profiler);
-  const ClusterStatus status = renderer.clusters().readStatus();
+  const auto [summary, status] = trialled(shapeScene(8192, 4, 0.5f, 4.0f, 0.0f), {640, 360}, 7);
   REQUIRE(uint64_t(status.activeClusters) * 8192 > AssignShapeTrials::kMaxPerClusterTests);
-  const std::string summary = renderer.clusters().shapeSummary();
   CAPTURE(summary);
   CHECK(summary.find("not tried over 4194304 tests") != std::string::npos);
   CHECK(summary.find("light pass cluster") == std::string::npos);
