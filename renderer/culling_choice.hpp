@@ -39,11 +39,11 @@ struct CullingCounts {
 // Brute force is then tried on two frames in a row (the first may compile its program), and clustered run on two
 // more, so that both are timed at the same GPU clocks (which rise over a GPU's first frames); each path keeps its
 // fastest frame. No trial is made where even an eighth of a listed pair's cost per brute-force pair would make brute
-// force the slower (a listed pair measured at 1.5-3x a brute-force one, docs/performance.md) and a trial frame could
-// take long (CullingDecision). Then each frame runs the cheaper prediction, keeping the path it ran while the two lie
-// within 5 %. The path not running is timed again 8 frames later (its first time may have been taken while a GPU's
-// clocks rose), then every 240 frames while predicted within 2x of the running one. A change of shading model,
-// variant, shadows or frame size starts again.
+// force the slower (a listed pair measured at 1.4-1.6x a brute-force one on helmet-grid, on llvmpipe and an H100,
+// docs/performance.md) and a trial frame could take long (CullingDecision). Then each frame runs the cheaper
+// prediction, keeping the path it ran while the two lie within 5 %. The path not running is timed again 8 frames
+// later (its first time may have been taken while a GPU's clocks rose), then every 240 frames while predicted within
+// 2x of the running one. A change of shading model, variant, shadows or frame size starts again.
 class CullingChoice {
  public:
   enum Mark { ClusterBegin, ClusterEnd, LightingBegin, LightingEnd };
