@@ -60,7 +60,10 @@ const std::vector<OptionSpec>& renderOptions() {
        "run of a light's views with each view's viewport chosen in the vertex shader (fewer draws to record; needs "
        "GL_ARB_shader_viewport_layer_array), or per-light on a GPU that has it and per-view on a CPU rasterizer",
        toString(ShadowSettings{}.draws), ""},
-      {"--tile", "PX", "cluster screen-tile size in pixels", std::to_string(renderer.clusters.tileSize), ""},
+      {"--tile", "auto|PX",
+       "cluster screen-tile side in pixels, or auto: " + std::to_string(renderer.clusters.tileSize) +
+           ", and half of it timed against it where lists are long, keeping the faster on this machine",
+       "auto", ""},
       {"--slices", "S", "cluster depth slices, exponential between near and far",
        std::to_string(renderer.clusters.slices), ""},
       {"--assign-shape", "auto|invocation|workgroup|cluster",
@@ -134,7 +137,9 @@ void printWarmUp(const WarmUpReport& w) {
   if (w.listSizingFrames) {
     std::printf(" (%d of them to size the light-index list to the measured demand)", w.listSizingFrames);
   }
-  if (w.cullingFrames) std::printf(" (%d of them until culling auto had timed both paths)", w.cullingFrames);
+  if (w.cullingFrames) {
+    std::printf(" (%d of them timing culling auto's paths or the grid's tile sides)", w.cullingFrames);
+  }
   std::printf("\n");
   if (w.overflowedClusters) {
     std::printf("warm-up: the light-index list or the light masks reached their limit: %u clusters are shaded by "
@@ -162,6 +167,7 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 s.nonEmptyClusters, s.averagePerNonEmpty(), s.maxPerCluster,
                 static_cast<unsigned long long>(s.indexEntries));
     std::printf("assignment: %s\n", renderer.clusters().shapeSummary().c_str());
+    if (!renderer.tileSummary().empty()) std::printf("grid: %s\n", renderer.tileSummary().c_str());
     if (s.overflowedClusters) {
       std::printf("clusters: %u clusters did not fit the light index list or the light masks and were shaded by "
                   "brute force\n", s.overflowedClusters);
@@ -260,7 +266,7 @@ int runRender(const std::vector<std::string>& commandLine) {
                                                      std::string(toString(model)));
     variant.visibility = parseVisibility(args.get("--visibility"));
   }
-  RendererConfig rendererConfig;
+  RendererConfig rendererConfig = measuredGrid();
   rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format"));
   rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer"));
   SceneParams sceneParams = sceneFileParams(args);
@@ -268,7 +274,10 @@ int runRender(const std::vector<std::string>& commandLine) {
   applySceneShapeOptions(args, sceneParams);
   const Culling culling = parseCulling(args.get("--culling"));
   ClusterConfig& clusterConfig = rendererConfig.clusters;
-  clusterConfig.tileSize = args.getInt("--tile", 8, 512);
+  if (args.get("--tile") != "auto") {
+    clusterConfig.tileTrial = false;
+    clusterConfig.tileSize = args.getInt("--tile", 8, 512);
+  }
   clusterConfig.slices = args.getInt("--slices", 1, 256);
   clusterConfig.lightPass = clusterConfig.fill = parseAssignShape(args.get("--assign-shape"));
   if (clusterConfig.fill == AssignShape::Cluster) clusterConfig.fill = AssignShape::Workgroup;

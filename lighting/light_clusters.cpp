@@ -71,6 +71,7 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
       status_("clusters.status", sizeof(ClusterStatus), nullptr, 0) {
+  setTileSize(config_.tileSize);
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   maxBlockBytes_ = static_cast<uint64_t>(std::max<GLint64>(maxBlock, 4));
@@ -95,7 +96,8 @@ size_t LightClusters::bytes() const {
 
 void LightClusters::rebuildGrid(const FrameBlock& f) {
   const uint32_t w = static_cast<uint32_t>(f.viewport.x), h = static_cast<uint32_t>(f.viewport.y);
-  const uint32_t tile = static_cast<uint32_t>(std::max(config_.tileSize, 1));
+  const uint32_t tile = static_cast<uint32_t>(std::max(tileSize_, 1));
+  builtTile_ = tileSize_;
   dims_ = glm::uvec3((w + tile - 1) / tile, (h + tile - 1) / tile, static_cast<uint32_t>(std::max(config_.slices, 1)));
   const uint32_t clusters = dims_.x * dims_.y * dims_.z;
   const float nearPlane = f.clip.x, farPlane = f.clip.y;
@@ -228,7 +230,7 @@ void LightClusters::growTo(uint32_t demand) {
 
 void LightClusters::assign(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame, const LightBuffer& lights,
                            const Texture& depth, const BlendedSurfaces* blended, bool stats) {
-  const bool newGrid = !headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_;
+  const bool newGrid = !headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_ || builtTile_ != tileSize_;
   if (newGrid) rebuildGrid(f);
   growFromPastDemand();
   const uint32_t count = lights.count();
@@ -350,7 +352,7 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
 
 void LightClusters::measureOccupancy(const FrameBlock& f, const UniformBuffer<FrameBlock>& frame,
                                      const Texture& depth, const BlendedSurfaces* blended) {
-  if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_) rebuildGrid(f);
+  if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_ || builtTile_ != tileSize_) rebuildGrid(f);
   occupy(f, frame, depth, blended);
 }
 
@@ -439,6 +441,8 @@ ShaderDefines LightClusters::lightPassPermutation(bool spotLights, bool count, b
           {"LIGHTS_PER_INVOCATION", std::to_string(kLightsPerInvocation)}};
 }
 
+void LightClusters::setTileSize(int pixels) { tileSize_ = std::max(pixels, 1); }
+
 AssignShape LightClusters::lightPassShape() const {
   return config_.lightPass == AssignShape::Automatic ? trials_.lightPass() : config_.lightPass;
 }
@@ -449,7 +453,7 @@ AssignShape LightClusters::fillShape() const {
 
 bool LightClusters::settled(uint32_t lights) const {
   const bool trialing = config_.lightPass == AssignShape::Automatic || config_.fill == AssignShape::Automatic;
-  return headers_ && sizedFor_ == lights && (!trialing || trials_.decided());
+  return headers_ && builtTile_ == tileSize_ && sizedFor_ == lights && (!trialing || trials_.decided());
 }
 
 std::string LightClusters::shapeSummary() const {

@@ -19,7 +19,7 @@
 namespace pbr {
 
 struct ClusterConfig {
-  int tileSize = 64;  // pixels per screen tile side
+  int tileSize = 64;  // pixels per screen tile side (LightClusters::setTileSize changes it per frame)
   // Exponential depth slices between the near and far planes. Thin slices raise culling efficiency, and only
   // slices holding a surface cost assignment work: with 192 slices (and the side-plane test) the stress scene's
   // efficiency rose from 0.256 to 0.532 at 1,024 lights and the frame shortened at 4,096
@@ -31,6 +31,9 @@ struct ClusterConfig {
   // it, or past twice the driver's largest storage block, lights are assigned in windows, each costing another
   // light pass.
   uint64_t maxMaskBytes = 256ull << 20;
+  // Whether the renderer times a grid of half the tile side against it and keeps the faster (TileTrials); the
+  // commands' `--tile auto`.
+  bool tileTrial = false;
   // The assignment passes' shapes: measured per machine (AssignShapeTrials) unless forced.
   AssignShape lightPass = AssignShape::Automatic;
   AssignShape fill = AssignShape::Automatic;
@@ -95,6 +98,9 @@ class LightClusters {
   enum class LightPassBuild { Inline, Queued, EveryLight, PerCluster };
   // The defines of the light pass for these choices, without the binding defines.
   static ShaderDefines lightPassPermutation(bool spotLights, bool count, bool mark, bool stats, LightPassBuild build);
+  // The tile side of the next assign's grid; a change builds the grid again (and sizes its lists, and times its
+  // assignment shapes). The configured side until set.
+  void setTileSize(int pixels);
   // The shapes the passes take this frame: as configured, or as the trials choose.
   AssignShape lightPassShape() const;
   AssignShape fillShape() const;
@@ -141,6 +147,8 @@ class LightClusters {
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};
+  int tileSize_ = 0;   // the side asked for (setTileSize)
+  int builtTile_ = 0;  // the side of the grid built
   glm::vec4 gridKey_{0.0f};  // viewport + projection terms the bounds were built for
   glm::vec4 gridKey2_{0.0f};
   std::unique_ptr<Buffer> headers_, cursors_, occupancy_, boxes_, clusterSlots_, slotClusters_, indices_, visible_;

@@ -299,6 +299,30 @@ FramePass Renderer::debugPass(DebugChannel channel) {
 
 void Renderer::markCulling(CullingChoice::Mark at) {
   if (cullingTimed_) cullingChoice_.mark(at);
+  if (tileTimed_ && at == CullingChoice::ClusterBegin) tileTrials_.mark(TileTrials::Begin);
+  if (tileTimed_ && at == CullingChoice::LightingEnd) tileTrials_.mark(TileTrials::End);
+}
+
+// What the cost of a light-pixel pair depends on: a change starts the measurements again.
+std::string Renderer::costKey(const FrameOptions& options) const {
+  return std::string(toString(options.model)) + "|" + toString(options.variant) + "|" +
+         toString(options.shadows.mode) + "|" + toString(options.shadows.filter) + "|" +
+         std::to_string(options.shadows.atlasSize) + "|" + std::to_string(width()) + "x" + std::to_string(height());
+}
+
+bool Renderer::tileTrialsPending() const { return tileTrialsRan_ && !tileTrials_.decided(); }
+
+void Renderer::chooseTile(const FrameOptions& options) {
+  tileTimed_ = false;
+  tileTrialsRan_ = false;
+  // Frames with a debug channel keep the grid as it is: the cluster views show it, the others time nothing.
+  if (!config_.clusters.tileTrial || options.culling == Culling::None || options.debug) return;
+  LightClusters& clusters = targets_->clusters;
+  const uint32_t lights = scene_.lights.count();
+  clusters.setTileSize(tileTrials_.tile(costKey(options) + "|" + std::to_string(lights), config_.clusters.tileSize,
+                                        clusters.settled(lights), clusters.recentListLength()));
+  tileTimed_ = tileTrials_.timing();
+  tileTrialsRan_ = true;
 }
 
 FrameOptions Renderer::resolveCulling(const FrameOptions& options) {
@@ -311,20 +335,18 @@ FrameOptions Renderer::resolveCulling(const FrameOptions& options) {
     resolved.culling = Culling::Clustered;
     return resolved;
   }
-  // What the cost of a light-pixel pair depends on: a change starts the measurements again.
-  const std::string key = std::string(toString(options.model)) + "|" + toString(options.variant) + "|" +
-                          toString(options.shadows.mode) + "|" + toString(options.shadows.filter) + "|" +
-                          std::to_string(options.shadows.atlasSize) + "|" +
-                          std::to_string(width()) + "x" + std::to_string(height());
   const CullingCounts counts{scene_.lights.count(), uint64_t(width()) * uint64_t(height()),
                              targets_->clusters.recentListLength()};
-  resolved.culling = cullingChoice_.choose(key, counts, targets_->clusters.settled(scene_.lights.count()));
+  // Frames run clustered while the grid's tile side is being timed.
+  const bool settled = targets_->clusters.settled(scene_.lights.count()) && !tileTrialsPending();
+  resolved.culling = cullingChoice_.choose(costKey(options), counts, settled);
   lastDecision_ = cullingChoice_.decision();
   cullingTimed_ = true;
   return resolved;
 }
 
 void Renderer::renderFrame(const FrameOptions& requested, Profiler& profiler, const FrameCapture& capture) {
+  chooseTile(requested);
   const FrameOptions options = resolveCulling(requested);
   const PassList passes = passList(options, capture);
   std::optional<CapturedFrame> captured;
@@ -358,8 +380,9 @@ WarmUpReport Renderer::warmUp(const FrameOptions& options, Profiler& profiler, i
   WarmUpReport report;
   for (; report.frames < frames; ++report.frames) renderFrame(options, profiler);
   // Timed frames should not be the trials of culling auto (a brute-force trial can cost many clustered frames).
-  constexpr int kMaxCullingFrames = 32;
-  while (lastDecision_ && !cullingChoice_.decided() && report.cullingFrames < kMaxCullingFrames) {
+  constexpr int kMaxCullingFrames = 40;
+  while (((lastDecision_ && !cullingChoice_.decided()) || tileTrialsPending()) &&
+         report.cullingFrames < kMaxCullingFrames) {
     renderFrame(options, profiler);
     ++report.frames;
     ++report.cullingFrames;
@@ -402,6 +425,12 @@ LightStats Renderer::lightStats() const {
   const Buffer* lists = targets_->layerListsIfMade();
   if (lastOptions_.transparency == Transparency::Exact && lists) s.droppedLayers = readDroppedLayers(*lists);
   return s;
+}
+
+RendererConfig measuredGrid() {
+  RendererConfig config;
+  config.clusters.tileTrial = true;
+  return config;
 }
 
 }  // namespace pbr

@@ -15,6 +15,7 @@
 #include "core/tone_curve.hpp"
 #include "debug/debug_channel.hpp"
 #include "renderer/culling_choice.hpp"
+#include "renderer/tile_trials.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
 #include "renderer/renderer_config.hpp"
@@ -76,7 +77,7 @@ struct FrameCapture {
 struct WarmUpReport {
   int frames = 0;            // untimed frames rendered
   int listSizingFrames = 0;  // of those, frames added because a cluster's light list did not fit yet
-  int cullingFrames = 0;     // of those, frames added until culling auto had timed what it compares
+  int cullingFrames = 0;     // of those, frames added until culling auto and the tile side's trial had timed theirs
   uint32_t overflowedClusters = 0;  // clusters still shaded by brute force after warm-up (list or masks at their limit)
 };
 
@@ -106,10 +107,10 @@ class Renderer {
   PassList passList(const FrameOptions& options, const FrameCapture& capture = {});
   void renderFrame(const FrameOptions& options, Profiler& profiler, const FrameCapture& capture = {});
   // After at least one frame: renders `frames` more untimed frames, then, with culling auto, more until it has
-  // timed both paths (at most 32), then, with clustered culling, more until every cluster's light
-  // list fits (each grows the list at once to the measured demand), so that no timed frame pays for a list sized
-  // a frame late. Stops early when the list has reached its memory limit: the report says how many clusters
-  // still fall back to brute force.
+  // timed both paths, and while the grid's tile side is being timed (at most 40), then, with clustered culling,
+  // more until every cluster's light list fits (each grows the list at once to the measured demand), so that no
+  // timed frame pays for a list sized a frame late. Stops early when the list has reached its memory limit: the
+  // report says how many clusters still fall back to brute force.
   WarmUpReport warmUp(const FrameOptions& options, Profiler& profiler, int frames);
 
   // Marks the `frame`-th frame this renderer renders (counting every renderFrame from 1, warm-up frames included)
@@ -126,6 +127,8 @@ class Renderer {
 
   // Reads the GPU counters of the last frame; waits for the GPU.
   LightStats lightStats() const;
+  // The cluster grid's tile side and why (TileTrials::summary); empty where the side is not timed.
+  std::string tileSummary() const { return config_.clusters.tileTrial ? tileTrials_.summary() : std::string(); }
   // What the automatic exposure applied to the last frame; waits for the GPU. None unless it ran that frame.
   std::optional<MeteredExposure> meteredExposure() const;
   // The automatic exposure adapts from `exposure` on the next frames, as after a switch from a fixed exposure.
@@ -156,6 +159,10 @@ class Renderer {
   // `options` with culling Auto replaced by this frame's choice (cullingChoice_), which its passes then time.
   FrameOptions resolveCulling(const FrameOptions& options);
   void markCulling(CullingChoice::Mark at);
+  // The cluster grid's tile side for this frame (TileTrials, with ClusterConfig::tileTrial), set on the clusters.
+  void chooseTile(const FrameOptions& options);
+  bool tileTrialsPending() const;
+  std::string costKey(const FrameOptions& options) const;
   // The automatic exposure's meter, made by the first frame or restart that needs it.
   ExposureMeter& exposureMeter();
 
@@ -179,6 +186,9 @@ class Renderer {
   CullingChoice cullingChoice_;
   std::optional<CullingDecision> lastDecision_;
   bool cullingTimed_ = false;  // this frame's cluster and lighting passes mark cullingChoice_
+  TileTrials tileTrials_;
+  bool tileTimed_ = false;      // this frame's cluster and lighting passes mark tileTrials_
+  bool tileTrialsRan_ = false;  // this frame's tile side came from tileTrials_
   int framesRendered_ = 0;
   int captureFrame_ = 0;
   const FrameCapturer* capturer_ = nullptr;

@@ -17,4 +17,7 @@ struct RendererConfig {
   std::string sizeOption = "--size";       // the option the frame size came from, named when it is too large
 };
 
+// The commands' configuration: the cluster grid's tile side timed on this machine (ClusterConfig::tileTrial).
+RendererConfig measuredGrid();
+
 }  // namespace pbr

@@ -85,7 +85,7 @@ TEST_CASE("cli help: each default the help states is the value the code starts f
       {"render",
        {{"--model", pbr::toString(frame.model)},
         {"--culling", pbr::toString(pbr::kCommandCulling)},
-        {"--tile", std::to_string(renderer.clusters.tileSize)},
+        {"--tile", pbr::measuredGrid().clusters.tileTrial ? "auto" : std::to_string(renderer.clusters.tileSize)},
         {"--slices", std::to_string(renderer.clusters.slices)},
         {"--hdr-format", pbr::toString(renderer.hdrFormat)},
         {"--gbuffer", pbr::toString(renderer.gbuffer)},

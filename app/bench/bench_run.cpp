@@ -43,7 +43,7 @@ TimedFrames timeFrames(Renderer& renderer, const FrameOptions& options, Profiler
 }
 
 BenchRun::BenchRun(const ShaderLibrary& shaders, const Scene& scene, const BenchConfig& config, TimingMode timing)
-    : renderer_(std::make_unique<Renderer>(shaders, scene, config.size.x, config.size.y)),
+    : renderer_(std::make_unique<Renderer>(shaders, scene, config.size.x, config.size.y, measuredGrid())),
       profiler_(std::make_unique<Profiler>(timing)) {
   result_.config = config;
   options_.model = config.model;

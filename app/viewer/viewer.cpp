@@ -36,7 +36,7 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
       profiler_(chooseTimingMode(options.timing, window_.info().renderer)),
       movedLights_(scene_.lights) {
   const glm::ivec2 size = window_.framebufferSize();
-  renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+  renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y, measuredGrid());
   attachPresentSource();
   pendingSize_ = size;
   installCallbacks();
@@ -271,11 +271,11 @@ std::string Viewer::setEnvironment(const std::string& choice) {
   renderer_.reset();
   std::string error;
   try {
-    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y, measuredGrid());
   } catch (const std::exception& e) {
     error = e.what();
     scene_.environment = previous;
-    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y);
+    renderer_ = std::make_unique<Renderer>(shaders_, scene_, size.x, size.y, measuredGrid());
   }
   attachPresentSource();
   renderer_->setLights(movedLights_);
