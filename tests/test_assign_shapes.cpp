@@ -21,24 +21,6 @@ using namespace pbr;
 // culling tests, spot lights included.
 namespace {
 
-// The culling tests' scene (cluster_test_scene.hpp) and its lights.
-Scene shapeScene(int lights, uint64_t seed, float radiusMin, float radiusMax, float spotShare) {
-  Scene s = test::clusterScene();
-  RandomLightSpec spec;
-  spec.count = lights;
-  spec.seed = seed;
-  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
-  spec.boundsMax = {12.0f, 4.0f, 8.0f};
-  spec.radiusMin = radiusMin;
-  spec.radiusMax = radiusMax;
-  // Sums of up to a million lights stay well inside half floats.
-  spec.powerMin = 40.0f / float(std::max(lights, 1));
-  spec.powerMax = 400.0f / float(std::max(lights, 1));
-  spec.spotShare = spotShare;
-  s.lights = makeRandomLights(spec);
-  return s;
-}
-
 struct Shaded {
   std::vector<std::vector<uint32_t>> lists;
   test::RenderedFrame frame;
@@ -109,17 +91,17 @@ std::pair<std::string, ClusterStatus> trialled(const Scene& scene, glm::ivec2 si
 
 TEST_CASE("assignment shapes: every combination lists and shades as brute force, 0 to 4,096 lights, spots included") {
   PBR_REQUIRE_GL();
-  checkShapesAgree(shapeScene(0, 1, 0.5f, 4.0f, 0.0f), {160, 90}, true);
-  checkShapesAgree(shapeScene(1, 2, 6.0f, 6.0f, 0.0f), {160, 90}, true);
+  checkShapesAgree(test::litClusterScene(0, 1, 0.5f, 4.0f, 0.0f), {160, 90}, true);
+  checkShapesAgree(test::litClusterScene(1, 2, 6.0f, 6.0f, 0.0f), {160, 90}, true);
   // Few and large: each light reaches most tiles, the case a workgroup per light is for.
-  checkShapesAgree(shapeScene(256, 3, 8.0f, 20.0f, 0.5f), {160, 90}, true);
-  checkShapesAgree(shapeScene(4096, 4, 0.5f, 4.0f, 0.3f), {160, 90}, true);
+  checkShapesAgree(test::litClusterScene(256, 3, 8.0f, 20.0f, 0.5f), {160, 90}, true);
+  checkShapesAgree(test::litClusterScene(4096, 4, 0.5f, 4.0f, 0.3f), {160, 90}, true);
 }
 
 TEST_CASE("assignment shapes: 65,536 lights, and masks over their budget in windows, list as the other shape") {
   PBR_REQUIRE_GL();
-  checkShapesAgree(shapeScene(65536, 5, 0.3f, 2.0f, 0.2f), {96, 54}, false);
-  const Scene scene = shapeScene(3000, 6, 0.5f, 4.0f, 0.0f);
+  checkShapesAgree(test::litClusterScene(65536, 5, 0.3f, 2.0f, 0.2f), {96, 54}, false);
+  const Scene scene = test::litClusterScene(3000, 6, 0.5f, 4.0f, 0.0f);
   const auto lists = [&scene](const ClusterConfig& config) {
     const ShaderLibrary shaders;
     Renderer renderer(shaders, scene, 160, 90, RendererConfig{config});
@@ -145,12 +127,12 @@ TEST_CASE("assignment shapes: 65,536 lights, and masks over their budget in wind
 
 TEST_CASE("assignment shapes: 1,048,576 lights on a small frame list as the other shape and shade as brute force") {
   PBR_REQUIRE_GL();
-  checkShapesAgree(shapeScene(1 << 20, 7, 0.2f, 1.5f, 0.1f), {24, 14}, false);
+  checkShapesAgree(test::litClusterScene(1 << 20, 7, 0.2f, 1.5f, 0.1f), {24, 14}, false);
 }
 
 TEST_CASE("assignment shapes: automatic shapes time each shape on the frames after the first, exact on every frame") {
   PBR_REQUIRE_GL();
-  const Scene scene = shapeScene(256, 3, 8.0f, 20.0f, 0.5f);
+  const Scene scene = test::litClusterScene(256, 3, 8.0f, 20.0f, 0.5f);
   FrameOptions options;
   options.culling = Culling::None;
   const test::RenderedFrame reference = test::renderScene(scene, {160, 90}, options, 1);
@@ -186,7 +168,7 @@ TEST_CASE("assignment shapes: automatic shapes time each shape on the frames aft
 
 TEST_CASE("assignment shapes: over 65,536 lights the automatic choice keeps an invocation's four lights untried") {
   PBR_REQUIRE_GL();
-  const std::string summary = trialled(shapeScene(70000, 8, 0.2f, 1.5f, 0.0f), {24, 14}, 6).first;
+  const std::string summary = trialled(test::litClusterScene(70000, 8, 0.2f, 1.5f, 0.0f), {24, 14}, 6).first;
   CAPTURE(summary);
   CHECK(summary.rfind("light pass invocation, ", 0) == 0);
   CHECK(summary.find("not tried over 65536 lights") != std::string::npos);
@@ -197,7 +179,7 @@ TEST_CASE("assignment shapes: over 65,536 lights the automatic choice keeps an i
 
 TEST_CASE("assignment shapes: the cluster light pass is not tried where lights x occupied clusters is large") {
   PBR_REQUIRE_GL();
-  const auto [summary, status] = trialled(shapeScene(8192, 4, 0.5f, 4.0f, 0.0f), {640, 360}, 7);
+  const auto [summary, status] = trialled(test::litClusterScene(8192, 4, 0.5f, 4.0f, 0.0f), {640, 360}, 7);
   REQUIRE(uint64_t(status.activeClusters) * 8192 > AssignShapeTrials::kMaxPerClusterTests);
   CAPTURE(summary);
   CHECK(summary.find("not tried over 4194304 tests") != std::string::npos);

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <string>
 
-#include "core/builtin_scenes.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cluster_test_scene.hpp"
 #include "tests/gl_test_context.hpp"
@@ -15,21 +14,6 @@ using namespace pbr;
 // finer grid is timed against the configured one and the faster kept, every frame equal to brute force; with short
 // lists the finer grid is not tried.
 namespace {
-
-Scene litScene(int lights, float radiusMin, float radiusMax) {
-  Scene s = test::clusterScene();
-  RandomLightSpec spec;
-  spec.count = lights;
-  spec.seed = 11;
-  spec.boundsMin = {-12.0f, 0.05f, -30.0f};
-  spec.boundsMax = {12.0f, 4.0f, 8.0f};
-  spec.radiusMin = radiusMin;
-  spec.radiusMax = radiusMax;
-  spec.powerMin = 40.0f / float(lights);
-  spec.powerMax = 400.0f / float(lights);
-  s.lights = makeRandomLights(spec);
-  return s;
-}
 
 struct Trial {
   std::string summary;
@@ -65,7 +49,7 @@ Trial runTrial(const Scene& scene, glm::ivec2 size, int tile, int frames) {
 TEST_CASE("tile trials: with long lists the half side is timed and the faster kept, every frame exact") {
   PBR_REQUIRE_GL();
   const glm::ivec2 size{192, 108};
-  const Trial t = runTrial(litScene(2048, 3.0f, 6.0f), size, 32, 24);
+  const Trial t = runTrial(test::litClusterScene(2048, 11, 3.0f, 6.0f, 0.0f), size, 32, 24);
   CAPTURE(t.summary);
   REQUIRE(t.summary.find("timed here") != std::string::npos);
   int chosen = 0, base = 0, fine = 0;
@@ -82,7 +66,7 @@ TEST_CASE("tile trials: with long lists the half side is timed and the faster ke
 
 TEST_CASE("tile trials: with short lists the half side is not tried") {
   PBR_REQUIRE_GL();
-  const Trial t = runTrial(litScene(64, 0.5f, 1.5f), {192, 108}, 32, 8);
+  const Trial t = runTrial(test::litClusterScene(64, 11, 0.5f, 1.5f, 0.0f), {192, 108}, 32, 8);
   CAPTURE(t.summary);
   CHECK(t.listLength < TileTrials::kMinListLength);
   CHECK(t.summary.find("32-pixel tiles (16-pixel ones not tried: ") == 0);
