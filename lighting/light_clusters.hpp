@@ -101,6 +101,7 @@ class LightClusters {
   // The tile side of the next assign's grid; a change builds the grid again (and sizes its lists, and times its
   // assignment shapes). The configured side until set.
   void setTileSize(int pixels);
+  int tileSize() const { return builtTile_; }  // the side of the grid last built
   // The shapes the passes take this frame: as configured, or as the trials choose.
   AssignShape lightPassShape() const;
   AssignShape fillShape() const;

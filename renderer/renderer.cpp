@@ -407,6 +407,7 @@ LightStats Renderer::lightStats() const {
     const ClusterStatus status = clusters.readStatus();
     const glm::uvec3 d = clusters.dims();
     s.clusters = d.x * d.y * d.z;
+    s.tileSize = uint32_t(clusters.tileSize());
     s.activeClusters = status.activeClusters;
     s.nonEmptyClusters = status.nonEmpty;
     s.maxPerCluster = status.maxPerCluster;

@@ -52,6 +52,7 @@ struct LightStats {
   uint32_t lights = 0;
   uint32_t visibleLights = 0;       // lights touching at least one cluster (frustum-culled survivors)
   uint32_t clusters = 0;
+  uint32_t tileSize = 0;            // the cluster grid's tile side in pixels (--tile auto times it)
   uint32_t activeClusters = 0;     // clusters holding a surface: the only ones given lights
   uint32_t nonEmptyClusters = 0;
   uint32_t maxPerCluster = 0;

@@ -176,6 +176,7 @@ void Overlay::lightStatistics(Viewer& viewer) {
   if (s.culling == Culling::Clustered) {
     if (viewer.frameOptions().stats) row("visible lights", "%.0f", double(s.visibleLights));
     row("clusters", "%.0f", double(s.clusters));
+    row("  tile side", "%.0f px", double(s.tileSize));
     row("  with a surface", "%.0f", double(s.activeClusters));
     row("  with lights", "%.0f", double(s.nonEmptyClusters));
     row("lights per cluster", "%.2f (mean)", s.averagePerNonEmpty());
@@ -195,6 +196,9 @@ void Overlay::lightStatistics(Viewer& viewer) {
       row("  cascade texels from", "%.3g m", double(s.shadows.cascadeTexelMin));
       row("  to", "%.3g m", double(s.shadows.cascadeTexelMax));
     }
+    row("  draws", s.shadows.drawsPerLight ? "%.0f (per light)" : "%.0f (per view)", double(s.shadows.draws));
+    row("  CPU: plan", "%.2f ms", s.shadows.planMs);
+    row("  CPU: recording", "%.2f ms", s.shadows.recordMs);
     if (s.shadows.shrunkLights) row("  shrunk (atlas full)", "%.0f", double(s.shadows.shrunkLights));
     if (s.shadows.unshadowedLights) row("  no map (atlas full)", "%.0f", double(s.shadows.unshadowedLights));
   }
