@@ -143,6 +143,7 @@ Record csvRecord(const BenchResult& r, const std::vector<std::string>& passes) {
   const Record stats = {
       {"surviving_lights", cluster(std::to_string(s.visibleLights))},
       {"clusters", cluster(std::to_string(s.clusters))},
+      {"tile_size", cluster(std::to_string(s.tileSize))},
       {"active_clusters", cluster(std::to_string(s.activeClusters))},
       {"non_empty_clusters", cluster(std::to_string(s.nonEmptyClusters))},
       {"avg_lights_per_cluster", cluster(fixedDecimals(s.averagePerNonEmpty(), 3))},
@@ -228,6 +229,7 @@ Json configJson(const BenchResult& r, const std::vector<std::string>& passes) {
   j["light_stats"] = ok ? Json{{"lights", s.lights},
                                {"surviving_lights", cluster(s.visibleLights)},
                                {"clusters", cluster(s.clusters)},
+                               {"tile_size", cluster(s.tileSize)},
                                {"active_clusters", cluster(s.activeClusters)},
                                {"non_empty_clusters", cluster(s.nonEmptyClusters)},
                                {"avg_lights_per_cluster", cluster(s.averagePerNonEmpty())},
