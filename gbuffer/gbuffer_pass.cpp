@@ -20,11 +20,12 @@ namespace pbr {
 
 namespace {
 
-GLsizeiptr alignedStride() {
+// `bytes` rounded up to the driver's uniform-buffer offset alignment: the stride of blocks bound by range.
+GLsizeiptr alignedStride(size_t bytes) {
   GLint align = 256;
   glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
   const GLsizeiptr a = align > 0 ? align : 256;
-  return (static_cast<GLsizeiptr>(sizeof(ObjectBlock)) + a - 1) / a * a;
+  return (static_cast<GLsizeiptr>(bytes) + a - 1) / a * a;
 }
 
 bool mirrors(const glm::mat4& transform) { return glm::determinant(glm::mat3(transform)) < 0.0f; }
@@ -123,7 +124,8 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
 
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     : cache_(programs),
-      blockStride_(alignedStride()),
+      blockStride_(alignedStride(sizeof(ObjectBlock))),
+      shadowViewStride_(alignedStride(kViewsPerDraw * sizeof(glm::mat4))),
       objectBlocks_("gbuffer.objectBlocks", static_cast<size_t>(blockStride_) * scene.objects.size(),
                     packObjectBlocks(scene, blockStride_).data()) {
   meshes_.reserve(scene.meshes.size());
@@ -366,10 +368,8 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
     }
     ++groups.back().second;
   }
-  GLint alignment = 256;
-  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
   const size_t blockBytes = kViewsPerDraw * sizeof(glm::mat4);
-  const size_t stride = (blockBytes + size_t(alignment) - 1) / size_t(alignment) * size_t(alignment);
+  const size_t stride = static_cast<size_t>(shadowViewStride_);
   std::vector<unsigned char> blocks(groups.size() * stride);
   for (size_t g = 0; g < groups.size(); ++g) {
     for (size_t i = 0; i < groups[g].second; ++i) {

@@ -101,6 +101,7 @@ class GBufferPass {
   bool unlit_ = false;
   std::vector<ShaderDefines> blendedPermutations_;
   GLsizeiptr blockStride_;
+  GLsizeiptr shadowViewStride_;  // renderDepth's blocks of view-projections, at the offset alignment
   Buffer objectBlocks_;
   WorldBounds bounds_;
 };

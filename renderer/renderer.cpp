@@ -73,15 +73,18 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
 }
 
 bool Renderer::shadowDrawsPerLight(ShadowDraws draws) {
-  if (!viewportFromVertex_) viewportFromVertex_ = glHasExtension("GL_ARB_shader_viewport_layer_array");
+  if (!viewportFromVertex_) {
+    viewportFromVertex_ = glHasExtension("GL_ARB_shader_viewport_layer_array");
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    softwareRenderer_ = isSoftwareRenderer(renderer ? renderer : "");
+  }
   if (draws == ShadowDraws::PerLight && !*viewportFromVertex_) {
     throw std::runtime_error("--shadow-draws per-light: the driver lacks GL_ARB_shader_viewport_layer_array");
   }
   if (draws != ShadowDraws::Auto) return draws == ShadowDraws::PerLight;
   // A CPU rasterizer draws per view: llvmpipe took 450-485 ms instead of 265-298 for the default scene's 1,275
   // views with the viewports chosen per vertex (docs/shadows.md), where a GPU records fewer draws that way.
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return *viewportFromVertex_ && !isSoftwareRenderer(renderer ? renderer : "");
+  return *viewportFromVertex_ && !softwareRenderer_;
 }
 
 BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {

@@ -182,6 +182,7 @@ class Renderer {
   double shadowReadBackMs_ = 0.0;  // the last shadow pass's occupancy read-back and receivers, CPU wall-clock
   bool shadowDrawsPerLight_ = false;        // the last shadow pass's ShadowDraws, resolved
   std::optional<bool> viewportFromVertex_;  // GL_ARB_shader_viewport_layer_array, asked once
+  bool softwareRenderer_ = false;           // a CPU rasterizer (isSoftwareRenderer), asked with it
   bool lastMetered_ = false;  // the last frame ran the automatic exposure's meter
   FrameOptions lastOptions_;  // as the last frame ran them: culling Auto resolved
   CullingChoice cullingChoice_;
