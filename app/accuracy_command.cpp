@@ -15,6 +15,7 @@
 #include "app/bench/chart_script.hpp"
 #include "app/accuracy/brdf_slice.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/accuracy/error_map.hpp"
 #include "app/accuracy/shadow_cost.hpp"
@@ -28,62 +29,6 @@
 namespace pbr {
 
 namespace {
-
-std::string ladderNames() {
-  std::string names;
-  for (const AccuracyVariant& v : accuracyLadder()) names += (names.empty() ? "" : ", ") + v.name;
-  return names;
-}
-
-const std::vector<OptionSpec>& accuracyOptions() {
-  static const PairCostSettings cost;
-  static const reference::ReferenceOptions referenceDefaults;
-  static const std::vector<OptionSpec> specs = {
-      {"--scenes", "LIST",
-       "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle; textures are removed",
-       "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80", ""},
-      {"--variants", "LIST", "comma-separated variants or all: " + ladderNames(), "all", ""},
-      {"--size", "WxH", "frame size of the compared frames in pixels", sizeText({320, 180}), ""},
-      {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(cost.size), ""},
-      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
-       std::to_string(cost.lights), ""},
-      {"--rounds", "R",
-       "timing rounds, each timing every variant (and then every shadow row, then every transparency row) once, in "
-       "turn", "9", ""},
-      {"--no-cost", "",
-       "skip the timings: cost per pair and the shadow and transparency rows' pass times (the chart needs them)"},
-      {"--shadow-rows", "LIST",
-       "shadow settings measured on --shadow-scene with the exact variant: unshadowed, FILTER or FILTER:ATLAS "
-       "(hard, pcf3x3, poisson16; a power-of-two atlas, 256 to 16384, else 4096), or none",
-       kDefaultShadowRows, ""},
-      {"--shadow-scene", "NAME", "the shadow rows' scene, built-in or a file; its lights cast as it says",
-       "shadow-trio", ""},
-      {"--shadow-cost-size", "WxH", "frame size at which the shadow rows' shadow and lighting passes are timed",
-       sizeText({640, 360}), ""},
-      {"--transparency-rows", "LIST",
-       "orderings of BLEND surfaces measured on --transparency-scene with the exact variant and no shadows: sorted, "
-       "oit, exact, or none",
-       kDefaultTransparencyRows, ""},
-      toneMapOption(),
-      {"--transparency-scene", "NAME", "the transparency rows' scene, built-in or a file, with BLEND materials",
-       "transparency", ""},
-      {"--transparency-cost-size", "WxH", "frame size at which the transparency rows' transparency pass and frame "
-       "are timed", sizeText({640, 360}), ""},
-      {"--out-dir", "DIR", "where accuracy.csv, accuracy.png and the error maps go", "out/accuracy", ""},
-      {"--brdf-slices", "", "also write per-variant BRDF error slices over (n.v angle) x (roughness)"},
-      {"--brdf-slice-size", "AxR", "BRDF slice grid: view angles x roughness values", sizeText({90, 64}), ""},
-      {"--no-chart", "", "skip the chart (drawn by scripts/plot_accuracy.py with python3-matplotlib)"},
-      {"--threads", "N", "reference renderer threads, 0 for all", std::to_string(referenceDefaults.threads), ""},
-      timingOption(),
-      eglPlatformOption(),
-      allowOutsideUrisOption(),
-      strictOption(),
-      gltfSceneOption(),
-      animationOption(),
-      timeOption(),
-  };
-  return specs;
-}
 
 std::vector<std::string> splitList(const std::string& list) {
   std::vector<std::string> out;
@@ -157,7 +102,7 @@ void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant
 }  // namespace
 
 int runAccuracy(const std::vector<std::string>& argv) {
-  const auto& specs = accuracyOptions();
+  const auto& specs = commandOptions(Command::Accuracy);
   Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr accuracy [options]",

@@ -132,7 +132,23 @@ std::vector<std::string> wrapWords(const std::string& text, size_t width) {
 
 std::string Args::helpText(const std::string& usage, const std::string& summary, const std::vector<OptionSpec>& specs) {
   std::ostringstream out;
-  out << "usage: " << usage << "\n\n" << summary << "\n\noptions:\n";
+  out << "usage: " << usage << "\n\n";
+  // The summary's long lines wrapped as the descriptions are: a list item ("  name   text") continues under its
+  // text, a paragraph at the margin.
+  std::istringstream summaryLines(summary);
+  for (std::string line; std::getline(summaryLines, line);) {
+    if (line.size() <= kHelpWidth) {
+      out << line << "\n";
+      continue;
+    }
+    size_t indent = 0;
+    if (line[0] == ' ') indent = line.find_first_not_of(' ', line.find(' ', line.find_first_not_of(' ')));
+    if (indent == std::string::npos || indent >= kHelpWidth / 2) indent = 0;
+    const std::vector<std::string> lines = wrapWords(line.substr(indent), kHelpWidth - indent);
+    out << line.substr(0, indent) << lines.front() << "\n";
+    for (size_t i = 1; i < lines.size(); ++i) out << std::string(indent, ' ') << lines[i] << "\n";
+  }
+  out << "\noptions:\n";
   const std::string indent(kDescriptionColumn, ' ');
   for (const OptionSpec& s : specs) {
     std::string left = "  " + s.name + (s.metavar.empty() ? "" : " " + s.metavar);

@@ -19,6 +19,7 @@
 #include "app/bench/bench_shard.hpp"
 #include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
@@ -28,65 +29,6 @@
 namespace pbr {
 
 namespace {
-
-template <typename T, typename Text>
-std::string listText(const std::vector<T>& items, Text text) {
-  std::string out;
-  for (const T& item : items) out += (out.empty() ? "" : ",") + std::string(text(item));
-  return out;
-}
-
-const std::vector<OptionSpec>& benchOptions() {
-  static const BenchSettings sweep;
-  static const PairCostSettings pairCost;
-  static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene to measure", sweep.scene, ""},
-      {"--lights", "LIST", "comma-separated light counts",
-       listText(sweep.lights, [](int n) { return std::to_string(n); }), ""},
-      {"--culling", "LIST",
-       "culling modes: none, clustered, auto (per frame, whichever the times measured here predict cheaper; the "
-       "table shows which ran)",
-       listText(sweep.culling, [](Culling c) { return toString(c); }), ""},
-      {"--model", "LIST", "shading models: pbr, blinn-phong",
-       listText(sweep.models, [](ShadingModel m) { return toString(m); }), ""},
-      {"--size", "WxH", "frame size in pixels, of the sweep and of --pair-cost", sizeText(sweep.size), ""},
-      {"--warmup", "K", "untimed frames per configuration, at least 1: the first estimates its time",
-       std::to_string(sweep.warmup), ""},
-      {"--frames", "K", "timed frames per configuration", std::to_string(sweep.frames), ""},
-      {"--max-seconds", "S",
-       "skip a configuration estimated (first warm-up frame x its frames) to take over S seconds",
-       numberText(sweep.maxSeconds), ""},
-      {"--constant-density", "",
-       "scale light radii by sqrt(L0/lights), L0 the smallest of --lights, holding lights x radius^2 (the light "
-       "density) constant"},
-      spotShareOption(),
-      shadowModeOption(),
-      toneMapOption(),
-      shadowFilterOption(),
-      shadowAtlasOption(),
-      {"--pair-cost", "LIST",
-       "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
-       "brute force, lights reaching every pixel, at --size"},
-      {"--pair-lights", "N", "lights of the --pair-cost frame", std::to_string(pairCost.lights), ""},
-      {"--rounds", "R", "--pair-cost rounds, each timing every variant once, in turn", std::to_string(pairCost.rounds),
-       ""},
-      {"--csv", "F.csv", "write the results as CSV, and the run's provenance and settings beside it in "
-                         "F.provenance.txt"},
-      {"--json", "F.json", "write the results, every timed frame included, as JSON"},
-      {"--trace", "F.json", "write the timed frames as a Chrome trace (Perfetto, chrome://tracing)"},
-      {"--shard", "K/N",
-       "measure only the K-th of N disjoint parts of the sweep (1 <= K <= N), for N processes or machines; "
-       "pbr bench-merge joins their --json reports", "", "the whole sweep"},
-      timingOption(),
-      eglPlatformOption(),
-      allowOutsideUrisOption(),
-      strictOption(),
-      gltfSceneOption(),
-      animationOption(),
-      timeOption(),
-  };
-  return specs;
-}
 
 std::vector<std::string> splitList(const std::string& option, const std::string& text) {
   std::vector<std::string> items;
@@ -205,7 +147,7 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
 }  // namespace
 
 int runBench(const std::vector<std::string>& argv) {
-  const auto& specs = benchOptions();
+  const auto& specs = commandOptions(Command::Bench);
   const Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr bench [options]",

@@ -7,6 +7,7 @@
 #include "app/bench/bench_merge.hpp"
 #include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/file_clash.hpp"
 #include "core/output_file.hpp"
 #include "core/provenance.hpp"
@@ -14,20 +15,6 @@
 namespace pbr {
 
 namespace {
-
-const std::vector<OptionSpec>& mergeOptions() {
-  static const std::vector<OptionSpec> specs = {
-      {"--csv", "F.csv", "write the merged sweep as CSV (and F.provenance.txt), as pbr bench --csv writes it"},
-      {"--json", "F.json", "write the merged sweep as JSON, as pbr bench --json writes it"},
-      {"--trace", "F.json",
-       "write the shards' timed frames as one Chrome trace, a process per shard on its own timeline (shards "
-       "written by a pbr that records pass start times)"},
-      {"--allow-mixed", "",
-       "merge shards measured on different renderers or builds (or, with a CPU rasterizer, CPUs); by default "
-       "they are refused, their times not being comparable"},
-  };
-  return specs;
-}
 
 void writeOutput(const Args& args, const std::string& option, void (*write)(std::ostream&, const BenchReport&),
                  const BenchReport& report) {
@@ -40,7 +27,7 @@ void writeOutput(const Args& args, const std::string& option, void (*write)(std:
 }  // namespace
 
 int runBenchMerge(const std::vector<std::string>& argv) {
-  const auto& specs = mergeOptions();
+  const auto& specs = commandOptions(Command::BenchMerge);
   const Args args(specs, argv, true);
   if (args.helpRequested()) {
     std::cout << Args::helpText(

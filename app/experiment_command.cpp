@@ -5,6 +5,7 @@
 #include "app/args.hpp"
 #include "app/bench/chart_script.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/experiments/experiments.hpp"
 #include "app/scene_source.hpp"
@@ -14,18 +15,6 @@
 namespace pbr {
 
 namespace {
-
-const std::vector<OptionSpec>& experimentOptions() {
-  static const std::vector<OptionSpec> specs = {
-      {"--out", "DIR", "folder for the images, NAME.csv and the chart NAME.png", "out/experiments", ""},
-      {"--size", "WxH", "frame size (fresnel: made odd, one pixel more or, at 16384, one less)", sizeText({640, 360}),
-       ""},
-      {"--frames", "K", "triangles: timed frames per configuration after one warm-up", "5", ""},
-      {"--scene", "NAME|FILE", "tonemap: the scene of the strip, built-in or a file", "default", ""},
-      eglPlatformOption(),
-  };
-  return specs;
-}
 
 void printTable(const ExperimentTable& t) {
   std::printf("%-16s", t.xLabel.c_str());
@@ -50,15 +39,17 @@ void writeChart(const std::string& csv, const std::string& png, const Experiment
 }  // namespace
 
 int runExperiment(const std::vector<std::string>& argv) {
-  const auto& specs = experimentOptions();
+  const auto& specs = commandOptions(Command::Experiment);
   const bool wantsHelp = argv.empty() || argv[0] == "--help" || argv[0] == "-h";
   if (wantsHelp) {
     std::cout << Args::helpText("pbr experiment NAME [options]",
                                 "Reproduces a Blinn-Phong vs PBR comparison; NAME is one of:\n"
-                                "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 degrees\n"
+                                "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 degrees; --size "
+                                "made odd\n"
                                 "  saturation  fully saturated pixels of a wall under 1..10 co-located lights\n"
-                                "  triangles   frame time of both models under 100 lights as triangles grow\n"
-                                "  tonemap     every tone curve: a grey ramp's display values, and one frame "
+                                "  triangles   frame time of both models under 100 lights as triangles grow; --frames each, "
+                                "after a warm-up\n"
+                                "  tonemap     every tone curve: a grey ramp's display values, and one frame of --scene "
                                 "side by side",
                                 specs);
     return argv.empty() ? 2 : 0;
@@ -69,7 +60,7 @@ int runExperiment(const std::vector<std::string>& argv) {
   }
   Args args(specs, std::vector<std::string>(argv.begin() + 1, argv.end()));
   if (args.helpRequested()) return runExperiment({"--help"});
-  const std::string outDir = args.get("--out");
+  const std::string outDir = args.get("--out-dir");
   const glm::ivec2 size = args.getSize("--size");
   const int frames = args.getInt("--frames", 1, 1000);
   const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
@@ -80,7 +71,7 @@ int runExperiment(const std::vector<std::string>& argv) {
   } else if (args.has("--scene")) {
     throw UsageError("--scene applies only to the tonemap experiment");
   }
-  makeOutputFolder("--out", outDir);  // before the experiment runs, so that a bad folder fails at once
+  makeOutputFolder("--out-dir", outDir);  // before the experiment runs, so that a bad folder fails at once
   auto context = createHeadlessContext(platform);
   std::printf("renderer: %s | %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str(),
               context->info().platform.c_str());

@@ -7,6 +7,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
@@ -21,50 +22,8 @@
 
 namespace pbr {
 
-namespace {
-
-// The command shadows as 'pbr render' does by default; the library's default is none (ReferenceOptions::shadows).
-const ShadowMode kShadows = ShadowSettings{}.mode;
-
-const std::vector<OptionSpec>& referenceOptions() {
-  static const reference::ReferenceOptions referenceDefaults;
-  static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME", "scene lit by point lights, without an environment", "sphere-grid", ""},
-      lightsOption("the scene's"),
-      viewAngleOption(),
-      spotShareOption(),
-      {"--size", "WxH", "frame size in pixels", sizeText({640, 360}), ""},
-      {"--hdr", "F.exr|F.pfm", "where to write the linear radiance (this or --out is required)"},
-      {"--out", "F.png|F.jpg",
-       "where to write the display image, made on the CPU in double precision: exposure, the tone curve, exact sRGB "
-       "encoding, 8 bits (reference/display_transform.hpp)"},
-      toneMapOption(),
-      {"--exposure", "X", "exposure multiplier before the tone curve", "", "the scene's, 1"},
-      ev100Option(),
-      {"--threads", "N", "worker threads, 0 for every hardware thread", std::to_string(referenceDefaults.threads), ""},
-      {"--geometry", "G", "meshes (the triangles the GPU rasterizes) or analytic (the exact shapes)",
-       toString(referenceDefaults.geometry), ""},
-      {"--shadows", "none|on|auto",
-       "which lights cast shadows, traced to each light: auto as the scene says (glTF lights, JSON spot and "
-       "directional lights, and those with \"shadows\": true), on every light, none; as 'pbr render'",
-       toString(kShadows), ""},
-      {"--variant", "study|K=V,...", "BRDF forms: study (Hammon, Schlick, Lambert (1 - F(v.h))) or "
-                                     "visibility=exact|hammon|separable, ndf=ggx, fresnel=exact|schlick|schlick-sg, "
-                                     "diffuse=lambert-1-f|lambert-1-f-vh|lambert", "",
-       toString(referenceDefaults.forms)},
-      allowOutsideUrisOption(),
-      strictOption(),
-      gltfSceneOption(),
-      animationOption(),
-      timeOption(),
-  };
-  return specs;
-}
-
-}  // namespace
-
 int runReference(const std::vector<std::string>& argv) {
-  const auto& specs = referenceOptions();
+  const auto& specs = commandOptions(Command::Reference);
   Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr reference --hdr F.exr|--out F.png [options]",
@@ -75,7 +34,10 @@ int runReference(const std::vector<std::string>& argv) {
                                 "Textures are ignored: material factors only, and alpha-masked cut-outs "
                                 "cast solid shadows. The default mesh geometry "
                                 "makes the difference to 'pbr render' shading alone; against --geometry analytic "
-                                "it is the tessellation's error.",
+                                "it is the tessellation's error. The --out image is made on the CPU too, in double "
+                                "precision: exposure, the tone curve, exact sRGB encoding, 8 bits "
+                                "(reference/display_transform.hpp). Scenes are lit by their point, spot and "
+                                "directional lights, without an environment.",
                                 specs);
     return 0;
   }

@@ -7,6 +7,7 @@
 #include "app/bench/bench_report.hpp"
 #include "app/bench/bench_run.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/frame_notes.hpp"
@@ -24,100 +25,6 @@
 namespace pbr {
 
 namespace {
-
-const std::vector<OptionSpec>& renderOptions() {
-  static const FrameOptions frame;
-  static const RendererConfig renderer;
-  static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME|FILE", "built-in scene (" + builtinSceneList() + ") or scene file (.json, .gltf, .glb)",
-       "default", ""},
-      {"--model", "MODEL", "shading model: pbr or blinn-phong", toString(frame.model), ""},
-      {"--visibility", "V", "PBR Smith visibility: exact (height-correlated), hammon or separable", "",
-       std::string(toString(frame.variant.visibility)) + ", or --variant's"},
-      {"--variant", "K=V,...|study", "shading variant, PBR: visibility=exact|hammon|separable, ndf=ggx|beckmann, "
-                                     "fresnel=schlick|exact|schlick-sg, diffuse=lambert-1-f|lambert|burley|"
-                                     "lambert-1-f-vh; or, alone, study: the PBR model "
-                                     "of the Blinn-Phong-vs-PBR study, GGX, Hammon's visibility, Schlick Fresnel "
-                                     "and Lambert weighted by (1 - F(v.h)); Blinn-Phong: lobe=pow or sg, "
-                                     "the lobe's spherical-Gaussian fit (one exp2 instead of pow)", "",
-       toString(frame.variant) + "," + toString(frame.variant.lobe)},
-      {"--hdr-format", "F", "HDR radiance target: rgba16f, r11g11b10f or rgba32f", toString(renderer.hdrFormat), ""},
-      {"--gbuffer", "P", "G-buffer precision: lean (16 bytes per pixel) or float (unquantised, 44 bytes)",
-       toString(renderer.gbuffer), ""},
-      lightsOption("the scene's; 256 for default"),
-      viewAngleOption(),
-      spotShareOption(),
-      {"--culling", "C",
-       "clustered, none (brute force: every light for every pixel) or auto (per frame, whichever the times "
-       "measured here predict cheaper)", toString(kCommandCulling), ""},
-      shadowModeOption(),
-      shadowFilterOption(),
-      transparencyOption(),
-      toneMapOption(),
-      shadowAtlasOption(),
-      {"--shadow-draws", "auto|per-view|per-light",
-       "how the shadow casters are drawn, the same depths either way: a draw per caster and view, or per caster and "
-       "run of a light's views with each view's viewport chosen in the vertex shader (fewer draws to record; needs "
-       "GL_ARB_shader_viewport_layer_array), or per-light on a GPU that has it and per-view on a CPU rasterizer",
-       toString(ShadowSettings{}.draws), ""},
-      {"--tile", "auto|PX",
-       "cluster screen-tile side in pixels, or auto: " + std::to_string(renderer.clusters.tileSize) +
-           ", and half of it timed against it where lists are long, keeping the faster on this machine",
-       "auto", ""},
-      {"--slices", "S", "cluster depth slices, exponential between near and far",
-       std::to_string(renderer.clusters.slices), ""},
-      {"--assign-shape", "auto|invocation|workgroup|cluster",
-       "how the clustered light assignment spreads its work: four lights and one list per invocation (llvmpipe's "
-       "shape), a workgroup per light and per list (a GPU's for few large lights), an invocation per cluster testing "
-       "batches of lights and a workgroup per list (a GPU's for few lights and clusters), or per pass the one the "
-       "frames after a light count's first time fastest on this machine",
-       toString(renderer.clusters.lightPass), ""},
-      {"--aa", "none|fxaa",
-       "anti-aliasing of the display image (the PNG), after tone mapping: FXAA 3.11 or none; --hdr captures are "
-       "never filtered", toString(kDisplayAntiAliasing), ""},
-      {"--debug", "CHANNEL",
-       "a debug channel with its legend in place of the frame: " + debugChannelNames() +
-           " (efficiency: contributing / evaluated light-pixel pairs per pixel; shadows: the light casting lights "
-           "bring over what they would unshadowed, 0 black, with the shadow atlas inset; clusters and slices need "
-           "--culling clustered)",
-       "", "none, the frame itself"},
-      {"--stats", "",
-       "count light statistics on the GPU (visible lights, culling efficiency) in an untimed extra frame"},
-      {"--size", "WxH", "frame size in pixels", sizeText({1280, 720}), ""},
-      {"--exposure", "X|auto",
-       "exposure multiplier before the tone curve, or auto: metered from the frame itself on the GPU (the mean log2 "
-       "luminance between its 10th and 90th percentiles shown as 0.18), reported as EV100; a scene camera's "
-       "exposure keeps priority", "", "the scene's, 1"},
-      ev100Option(),
-      cameraOption(),
-      environmentOption(),
-      environmentIntensityOption(),
-      {"--out", "F.png|F.jpg", "write the final 8-bit sRGB frame as PNG, or JPEG (quality 95)"},
-      {"--hdr", "F.exr|F.pfm", "write linear radiance before exposure as float32 EXR or PFM"},
-      {"--warmup", "K", "untimed frames after the first, more while a cluster's light list does not fit yet", "2", ""},
-      {"--frames", "K", "timed frames: median and spread of each pass over them", "5", ""},
-      {"--capture-frame", "K",
-       "mark the K-th frame rendered for graphics debuggers, counting from 1 over every frame of the run (the first, "
-       "the warm-up, the timed ones and the final capture frame, 1 to --warmup + --frames + 2): captured through "
-       "RenderDoc's in-application API when run under RenderDoc (renderdoccmd capture ...), and always wrapped in a "
-       "debug group and marker 'capture frame K'", "", "none"},
-      {"--json", "F.json", "write the timings (every timed frame), light statistics, provenance and the settings that "
-                           "decided the frame (render_settings) as JSON (pbr bench schema)"},
-      {"--settings", "F.json|F.json#K",
-       "take every option that decides the frame from the render_settings of a report pbr render --json wrote, so "
-       "that it renders the same frame, or from configuration K of a pbr bench report; options given here replace "
-       "the report's",
-       "", "none: the options given here and their defaults"},
-      timingOption(),
-      eglPlatformOption(),
-      allowOutsideUrisOption(),
-      strictOption(),
-      gltfSceneOption(),
-      animationOption(),
-      timeOption(),
-  };
-  return specs;
-}
 
 void printPasses(const std::vector<PassTiming>& passes, double frameMs) {
   for (const PassTiming& p : passes) std::printf("  %-10s %9.3f ms\n", p.name.c_str(), p.ms);
@@ -236,7 +143,7 @@ void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
 }  // namespace
 
 int runRender(const std::vector<std::string>& commandLine) {
-  const auto& specs = renderOptions();
+  const auto& specs = commandOptions(Command::Render);
   // --settings F.json: the report's options, under the ones given here.
   const std::vector<std::string> argv = withSettingsFile(specs, commandLine);
   Args args(specs, argv);

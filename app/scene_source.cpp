@@ -9,40 +9,6 @@
 
 namespace pbr {
 
-OptionSpec allowOutsideUrisOption() {
-  return {"--allow-outside-uris", "",
-          "let glTF models read buffers and images outside their own folder (refused by default)"};
-}
-
-OptionSpec strictOption() {
-  return {"--strict", "", "refuse a scene file holding a key the reader does not know (a misspelt field), and a glTF "
-                          "file deviating from the specification where viewers read it anyway (a byteStride of 0), "
-                          "instead of warning about it"};
-}
-
-OptionSpec animationOption() {
-  return {"--animation", "NAME|INDEX",
-          "pose glTF models by this animation (its name, or its index from 0), at --time", "",
-          "none: the rest pose, nodes as the file places them; the first animation where only --time is given"};
-}
-
-OptionSpec gltfSceneOption() {
-  return {"--gltf-scene", "N", "draw scene N (from 0) of glTF files that hold several", "",
-          "the file's default scene (its \"scene\"), else its first"};
-}
-
-OptionSpec timeOption() {
-  return {"--time", "SECONDS",
-          "the time of the --animation glTF models are posed at, sampled as the file interpolates it (step, "
-          "linear, cubic spline; the ends hold outside its keyframes)", "",
-          "0 with --animation; none without: the rest pose"};
-}
-
-OptionSpec spotShareOption() {
-  return {"--spot-share", "F", "make this share (0-1) of a scene's random lights spot lights, aimed down at random "
-                               "with outer angles of 10-60 degrees", "", "the scene's, 0"};
-}
-
 SceneParams sceneFileParams(const Args& args) {
   SceneParams params;
   params.uris = {args.has("--allow-outside-uris"), args.has("--strict")};
@@ -52,20 +18,6 @@ SceneParams sceneFileParams(const Args& args) {
   if (args.has("--animation")) params.gltfSelection.animation = args.get("--animation");
   if (args.has("--time")) params.gltfSelection.time = args.getFloat("--time", -1e9f, 1e9f);
   return params;
-}
-
-OptionSpec ev100Option() {
-  return {"--ev100", "EV",
-          "physical exposure: the camera's exposure value at ISO 100 (sunny day about 15, indoors 6-8), scaling "
-          "radiance by 1 / (1.2 2^EV) before --exposure", "",
-          "the scene camera's; for a glTF model given alone with lights, what an incident-light meter reads at the "
-          "model; else none"};
-}
-
-OptionSpec cameraOption() {
-  return {"--camera", "N|auto",
-          "view through the scene's glTF camera N (from 0, in node order) or, for a model given alone, auto: "
-          "framed to its bounds", "", "the scene file's camera; a model's first camera, else auto"};
 }
 
 void applyCameraOption(const Args& args, Scene& scene) {
@@ -81,19 +33,6 @@ void applyCameraOption(const Args& args, Scene& scene) {
   }
   const int index = args.getInt("--camera", 0, static_cast<int>(scene.cameras.size()) - 1);
   scene.camera = scene.cameras[static_cast<size_t>(index)];
-}
-
-OptionSpec environmentOption() {
-  return {"--environment", "F.hdr|F.exr|sky|none",
-          "image-based lighting (PBR) and background from a Radiance .hdr or OpenEXR .exr picture or the procedural "
-          "sky, or none, replacing "
-          "the scene's environment", "",
-          "the scene file's; a glTF model, or a scene file that places models and has no \"environment\", gets the "
-          "sky"};
-}
-
-OptionSpec environmentIntensityOption() {
-  return {"--environment-intensity", "X", "radiance multiplier of the environment", "", "the scene's, 1"};
 }
 
 DefaultEnvironment defaultEnvironment(const Args& args) {

@@ -12,8 +12,6 @@ namespace pbr {
 Scene resolveScene(const std::string& nameOrPath, const SceneParams& params);
 std::string builtinSceneList();  // "default, sphere-grid, ...", for help texts and messages
 
-// --ev100, taken with --exposure X|auto by the commands that show frames.
-OptionSpec ev100Option();
 // The exposure a command's frames get once --exposure and --ev100 replace the scene's (Scene::displayExposure).
 // --exposure auto meters each PBR frame (post/exposure_meter.hpp) unless the scene's camera states its exposure,
 // which keeps priority (said in `note`); UsageError with --ev100, which sets what auto would meter.
@@ -25,28 +23,18 @@ struct ExposureChoice {
 ExposureChoice applyExposureOptions(const Args& args, Scene& scene);
 
 // --camera N|auto: one of the glTF cameras of the scene, or the framing of a model given alone.
-OptionSpec cameraOption();
 void applyCameraOption(const Args& args, Scene& scene);
 
 // --environment F.hdr|sky|none and --environment-intensity X, taken by the commands that show frames. Given,
 // --environment decides alone: the loaders then add no default environment (defaultEnvironment says None), and
 // applyEnvironmentOptions puts its choice in the loaded scene and scales whichever environment applies; UsageError
 // for an intensity without an environment.
-OptionSpec environmentOption();
-OptionSpec environmentIntensityOption();
 DefaultEnvironment defaultEnvironment(const Args& args);
 void applyEnvironmentOptions(const Args& args, Scene& scene);
 
-// --allow-outside-uris and --strict, taken by every command that loads scene files, and --spot-share, by those
-// that take --lights; and the scene parameters they set (the other parameters left at their defaults).
-OptionSpec allowOutsideUrisOption();
-OptionSpec strictOption();
-OptionSpec spotShareOption();
-// --gltf-scene, --animation and --time: which scene and moment of its glTF models a scene is drawn at
-// (SceneParams::gltfSelection).
-OptionSpec animationOption();
-OptionSpec gltfSceneOption();
-OptionSpec timeOption();
+// The scene parameters --allow-outside-uris, --strict, --spot-share, and --gltf-scene, --animation and --time
+// (which scene and moment of its glTF models a scene is drawn at, SceneParams::gltfSelection) set; the other
+// parameters are left at their defaults.
 SceneParams sceneFileParams(const Args& args);
 
 }  // namespace pbr

@@ -4,6 +4,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
@@ -13,52 +14,6 @@
 namespace pbr {
 
 namespace {
-
-const std::vector<OptionSpec>& viewOptions() {
-  static const ViewerOptions viewer;
-  static const std::vector<OptionSpec> specs = {
-      {"--scene", "NAME|FILE", "built-in scene or scene file, as for pbr render", viewer.sceneName, ""},
-      lightsOption("the scene's"),
-      viewAngleOption(),
-      spotShareOption(),
-      {"--model", "MODEL", "shading model at start: pbr or blinn-phong (key M switches)", toString(viewer.frame.model),
-       ""},
-      {"--culling", "C",
-       "clustered, none or auto (per frame, whichever the times measured here predict cheaper) at start (key C "
-       "cycles)", toString(kCommandCulling), ""},
-      shadowModeOption(),
-      shadowFilterOption(),
-      transparencyOption(),
-      toneMapOption(),
-      shadowAtlasOption(),
-      {"--aa", "none|fxaa", "anti-aliasing of the shown frame and screenshots, after tone mapping",
-       toString(kDisplayAntiAliasing), ""},
-      {"--exposure", "X|auto",
-       "exposure multiplier at start (keys + and -), or auto: metered from each frame and adapting to it (key X; "
-       "3 EV per second brighter, 1 darker); a scene camera's exposure keeps priority", "", "the scene's, 1"},
-      ev100Option(),
-      cameraOption(),
-      environmentOption(),
-      environmentIntensityOption(),
-      {"--size", "WxH", "window size in pixels", sizeText(viewer.size), ""},
-      {"--paused", "", "start with the light animation, or the glTF animation the scene plays, paused (key P toggles)"},
-      {"--frames", "K", "exit after K frames, writing --screenshot if given (for unattended runs)", "",
-       "run until the window is closed"},
-      {"--screenshot", "F.png|F.jpg", "where F12 and the end of a --frames run save the frame"},
-      {"--screenshot-ui", "", "screenshots show the window with its overlay, not the frame alone"},
-      {"--no-ui", "", "hide the overlay (frame-time graph, light statistics, controls); the title then shows the "
-                      "pass times"},
-      {"--env-dir", "DIR", "folder of .hdr files the overlay offers", "",
-       "the environment's folder, else the asset folder's environments/"},
-      timingOption(),
-      allowOutsideUrisOption(),
-      strictOption(),
-      gltfSceneOption(),
-      animationOption(),
-      timeOption(),
-  };
-  return specs;
-}
 
 // The viewer's keys, a line each, after the options.
 std::string keysText() {
@@ -73,7 +28,7 @@ std::string keysText() {
 }  // namespace
 
 int runView(const std::vector<std::string>& argv) {
-  const auto& specs = viewOptions();
+  const auto& specs = commandOptions(Command::View);
   Args args(specs, argv);
   if (args.helpRequested()) {
     std::cout << Args::helpText("pbr view [options]",
@@ -99,7 +54,7 @@ int runView(const std::vector<std::string>& argv) {
   options.frame.toneCurve = readToneCurve(args);
   options.size = args.getSize("--size");
   options.paused = args.has("--paused");
-  const int frames = args.has("--frames") ? args.getInt("--frames", 1, 1 << 30) : 0;
+  const int frames = args.has("--quit-after") ? args.getInt("--quit-after", 1, 1 << 30) : 0;
   options.screenshot = args.get("--screenshot");
   if (!options.screenshot.empty()) ldrFileFormat(options.screenshot);
   options.screenshotOverlay = args.has("--screenshot-ui");

@@ -23,7 +23,7 @@ TEST_CASE("hostile outputs: an unknown capture extension fails before rendering 
       tinyRender({"--hdr", "/dev/full"}),  // a device says nothing of the format
       tinyRender({"--json", dir.file("f.txt")}),
       {"reference", "--size", "32x18", "--hdr", dir.file("f.png")},
-      {"view", "--frames", "1", "--screenshot", dir.file("f.bmp")},
+      {"view", "--quit-after", "1", "--screenshot", dir.file("f.bmp")},
       {"bench", "--lights", "8", "--frames", "1", "--csv", dir.file("f.json")},
       {"bench", "--lights", "8", "--frames", "1", "--json", dir.file("f.csv")},
       {"bench", "--lights", "8", "--frames", "1", "--trace", dir.file("f.trace")},
@@ -112,7 +112,7 @@ TEST_CASE("hostile arguments: conflicting or malformed choices are refused namin
       {{"accuracy", "--scenes", "fresnel-floor:40:2"}, "the view angle a number (got '40:2')"},
       {{"accuracy", "--scenes", "sphere-grid:40"},
        "--scenes sphere-grid:40: a view angle applies only to fresnel-floor"},
-      {{"view", "--frames", "1", "--env-dir", file}, "--env-dir " + file + ": not a folder"},
+      {{"view", "--quit-after", "1", "--env-dir", file}, "--env-dir " + file + ": not a folder"},
   };
   for (const auto& [args, line] : cases) {
     CAPTURE(line);
@@ -127,7 +127,7 @@ TEST_CASE("hostile arguments: an unreadable scene and an output folder a file is
   const std::string file = dir.write("f.json", "{}");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {tinyRender({"--scene", "/proc/self/mem"}), "pbr render: /proc/self/mem: cannot read: Input/output error"},
-      {{"experiment", "fresnel", "--out", file}, "pbr experiment: --out " + file +
+      {{"experiment", "fresnel", "--out-dir", file}, "pbr experiment: --out-dir " + file +
                                                      ": cannot make the folder: Not a directory"},
       // A name of 5,000 characters: the system's reason, the name's ends kept and the line short.
       {tinyRender({"--scene", std::string(5000, 'a')}),

@@ -251,11 +251,12 @@ TEST_CASE("view: a resized window rebuilds the G-buffer and the cluster grid, an
   CHECK(after.programsCompiled == before.programsCompiled);
 }
 
-// `pbr view --frames 10 --paused` at `size` with `extra` arguments, writing its screenshot to `shot`; false when no
-// window could be opened and PBR_ALLOW_NO_GL=1 allows that.
+// `pbr view --quit-after 10 --paused` at `size` with `extra` arguments, writing its screenshot to `shot`; false when
+// no window could be opened and PBR_ALLOW_NO_GL=1 allows that.
 bool runView(const TempDir& dir, glm::ivec2 size, const std::string& shot, const std::vector<std::string>& extra) {
   const std::string sizeText = std::to_string(size.x) + "x" + std::to_string(size.y);
-  std::vector<std::string> args = {"view", "--frames", "10", "--size", sizeText, "--paused", "--screenshot", shot};
+  std::vector<std::string> args = {"view",     "--quit-after", "10",  "--size", sizeText,
+                                   "--paused", "--screenshot", shot};
   args.insert(args.end(), extra.begin(), extra.end());
   const pbr::test::PbrRun run = runPbr(dir, args);
   if (run.exitCode == 3 && std::getenv("PBR_ALLOW_NO_GL") && std::strcmp(std::getenv("PBR_ALLOW_NO_GL"), "1") == 0) {
@@ -267,7 +268,7 @@ bool runView(const TempDir& dir, glm::ivec2 size, const std::string& shot, const
   return true;
 }
 
-TEST_CASE("view: pbr view --frames runs unattended and writes a screenshot matching pbr render") {
+TEST_CASE("view: pbr view --quit-after runs unattended and writes a screenshot matching pbr render") {
   const TempDir dir;
   // The screenshot is the frame alone whether the overlay is shown or hidden.
   for (const std::vector<std::string>& ui : {std::vector<std::string>{}, {"--no-ui"}}) {
@@ -283,7 +284,7 @@ TEST_CASE("view: an unattended run whose screenshot cannot be written exits 1 na
   // The frame alone, and the window with its overlay (written while the last frame presents).
   for (const std::vector<std::string>& ui : {std::vector<std::string>{}, {"--screenshot-ui"}}) {
     CAPTURE(ui.size());
-    std::vector<std::string> args = {"view", "--frames", "2", "--size", "64x36", "--screenshot", "/dev/full"};
+    std::vector<std::string> args = {"view", "--quit-after", "2", "--size", "64x36", "--screenshot", "/dev/full"};
     args.insert(args.end(), ui.begin(), ui.end());
     const pbr::test::PbrRun run = runPbr(dir, args);
     if (run.exitCode == 3) return;  // no window: the other cases say so

@@ -25,7 +25,7 @@ struct ViewerOptions {
   glm::ivec2 size{1280, 720};  // window size
   FrameOptions frame;          // model, culling, exposure at start
   bool paused = false;         // light animation, or the glTF animation the scene plays
-  std::string screenshot;      // F12 and the end of a --frames run write here; empty: F12 numbers its files
+  std::string screenshot;      // F12 and the end of a --quit-after run write here; empty: F12 numbers its files
   bool screenshotOverlay = false;  // screenshots show the window, overlay included, rather than the frame alone
   std::string timing = "auto";
   bool overlay = true;             // the Dear ImGui overlay (--no-ui hides it)
@@ -98,7 +98,7 @@ class Viewer {
 
   ImageRgba8 screenshot() const;  // the renderer's frame, without the overlay, rows top-down
   void saveScreenshot(const std::string& path) const;
-  // F12 and the end of a --frames run: the frame now, or with screenshotOverlay the window as the next frame
+  // F12 and the end of a --quit-after run: the frame now, or with screenshotOverlay the window as the next frame
   // presents it.
   void takeScreenshot(const std::string& path);
 
@@ -156,7 +156,7 @@ class Viewer {
   int framesRendered_ = 0;
   int screenshotsSaved_ = 0;
   std::string pendingWindowShot_;  // saved from the back buffer once the next frame's overlay is drawn
-  bool unattendedShot_ = false;    // that shot ends a --frames run: a failure is the run's error
+  bool unattendedShot_ = false;    // that shot ends a --quit-after run: a failure is the run's error
   std::string windowShotError_;
   Clock::time_point lastFrame_, lastTitle_, lastStats_;
   PassHistory passHistory_;  // every frame's pass times, warm or not: the graph shows what a change costs
