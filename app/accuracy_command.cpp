@@ -77,10 +77,10 @@ void writeSlices(const ShaderLibrary& shaders, const std::vector<AccuracyVariant
   std::vector<ShadingVariant> done;
   for (const AccuracyVariant& v : variants) {
     // Blinn-Phong is no normalised BRDF, and HDR formats do not change the BRDF: one slice per term choice.
-    if (v.model != ShadingModel::Pbr || std::find(done.begin(), done.end(), v.shading) != done.end()) continue;
-    done.push_back(v.shading);
+    if (v.model() != ShadingModel::Pbr || std::find(done.begin(), done.end(), v.shading()) != done.end()) continue;
+    done.push_back(v.shading());
     for (const auto& [materialName, material] : materials) {
-      const BrdfSlice s = computeBrdfSlice(shaders, v.shading, material, grid.x, grid.y);
+      const BrdfSlice s = computeBrdfSlice(shaders, v.shading(), material, grid.x, grid.y);
       double sum = 0.0, worst = -1.0;
       int wa = 0, wr = 0;
       for (int r = 0; r < s.roughnesses; ++r)
@@ -268,17 +268,12 @@ int runAccuracy(const std::vector<std::string>& argv) {
     }
     for (size_t i = 0; i < variants.size(); ++i) {
       const AccuracyVariant& v = variants[i];
-      FrameOptions options;
-      options.model = v.model;
-      options.variant = v.shading;
+      FrameOptions options = v.settings.frame;
       options.exposure = s.scene.displayExposure();
       options.toneCurve = curve;
-      RendererConfig config;
-      config.hdrFormat = v.hdr;
-      config.gbuffer = v.gbuffer;
-      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, 3, config, mode);
-      writeRow(v.name, s.label, toString(v.model), describeTerms(v.model, v.shading),
-               toString(v.hdr), toString(v.gbuffer), costs.empty() ? nullptr : &costs[i],
+      const RenderedFrames f = renderOffscreen(shaders, s.scene, size, options, 3, v.settings.renderer, mode);
+      writeRow(v.name, s.label, toString(v.model()), describeTerms(v.model(), v.shading()),
+               toString(v.hdr()), toString(v.gbuffer()), costs.empty() ? nullptr : &costs[i],
                measureError(f.hdr, f.ldr, ref, refLdr));
       writePng((dir / ("error-" + v.name + "-" + s.label + ".png")).string(),
                errorMapImage(relativeErrorPerPixel(f.hdr, ref), size.x, size.y, 1e-4, 1.0));
@@ -293,9 +288,9 @@ int runAccuracy(const std::vector<std::string>& argv) {
       const ShadowRow& row = shadowRows[i];
       const ShadowRowResult r = comparison.measure(row);
       const ShadowCost* c = shadowCosts.empty() ? nullptr : &shadowCosts[i];
-      writeCsvRow(row.name, shadowScene.label, toString(exact.model), describeTerms(exact.model, exact.shading),
-                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, shadowCells(row, c, r.agreement),
-                  noTransparencyCells);
+      writeCsvRow(row.name, shadowScene.label, toString(exact.model()),
+                  describeTerms(exact.model(), exact.shading()), toString(exact.hdr()), toString(exact.gbuffer()),
+                  nullptr, r.error, shadowCells(row, c, r.agreement), noTransparencyCells);
       const std::string shadowMs = c ? fixedDecimals(c->shadowMs.median, 2) : "-";
       const std::string lightingMs = c ? fixedDecimals(c->lightingMs.median, 2) : "-";
       const std::string both = msSpread(c ? &c->passesMs : nullptr);
@@ -315,9 +310,9 @@ int runAccuracy(const std::vector<std::string>& argv) {
       const TransparencyRow& row = transparencyRows[i];
       const TransparencyRowResult r = comparison.measure(row);
       const TransparencyCost* c = transparencyCosts.empty() ? nullptr : &transparencyCosts[i];
-      writeCsvRow(row.name, transparencyScene.label, toString(exact.model), describeTerms(exact.model, exact.shading),
-                  toString(exact.hdr), toString(exact.gbuffer), nullptr, r.error, noShadowCells,
-                  transparencyCells(row, c));
+      writeCsvRow(row.name, transparencyScene.label, toString(exact.model()),
+                  describeTerms(exact.model(), exact.shading()), toString(exact.hdr()), toString(exact.gbuffer()),
+                  nullptr, r.error, noShadowCells, transparencyCells(row, c));
       std::printf("%-20s %-12s %25s %22s %10.4g %8.3f %6.0f %8.4f\n", row.name.c_str(),
                   transparencyScene.label.c_str(), msSpread(c ? &c->transparencyMs : nullptr).c_str(),
                   msSpread(c ? &c->frameMs : nullptr).c_str(), r.error.relativeRmse, r.error.meanLevels,

@@ -6,11 +6,16 @@ ShadowSettings readShadowSettings(const Args& args) {
   ShadowSettings s;
   s.mode = parseShadowMode(args.get("--shadows"));
   s.filter = parseShadowFilter(args.get("--shadow-filter"));
-  s.atlasSize = args.getInt("--shadow-atlas", kMinShadowAtlas, kMaxShadowAtlas);
-  if ((s.atlasSize & (s.atlasSize - 1)) != 0) {
-    throw UsageError("--shadow-atlas " + std::to_string(s.atlasSize) + ": expected a power of two (256 to 16384)");
-  }
+  s.atlasSize = readShadowAtlas(args);
   return s;
+}
+
+int readShadowAtlas(const Args& args) {
+  const int size = args.getInt("--shadow-atlas", kMinShadowAtlas, kMaxShadowAtlas);
+  if ((size & (size - 1)) != 0) {
+    throw UsageError("--shadow-atlas " + std::to_string(size) + ": expected a power of two (256 to 16384)");
+  }
+  return size;
 }
 
 Transparency readTransparency(const Args& args) { return parseTransparency(args.get("--transparency")); }

@@ -13,6 +13,7 @@ namespace pbr {
 
 // --shadows, --shadow-filter and --shadow-atlas as settings.
 ShadowSettings readShadowSettings(const Args& args);
+int readShadowAtlas(const Args& args);  // a power of two, checked
 Transparency readTransparency(const Args& args);  // --transparency
 ToneCurve readToneCurve(const Args& args);        // --tonemap
 

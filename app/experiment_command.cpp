@@ -44,13 +44,13 @@ int runExperiment(const std::vector<std::string>& argv) {
   if (wantsHelp) {
     std::cout << Args::helpText("pbr experiment NAME [options]",
                                 "Reproduces a Blinn-Phong vs PBR comparison; NAME is one of:\n"
-                                "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 degrees; --size "
-                                "made odd\n"
+                                "  fresnel     specular reflectance of a floor at view angles 0, 40, 65, 80 "
+                                "degrees; --size made odd\n"
                                 "  saturation  fully saturated pixels of a wall under 1..10 co-located lights\n"
-                                "  triangles   frame time of both models under 100 lights as triangles grow; --frames each, "
-                                "after a warm-up\n"
-                                "  tonemap     every tone curve: a grey ramp's display values, and one frame of --scene "
-                                "side by side",
+                                "  triangles   frame time of both models under 100 lights as triangles grow; "
+                                "--frames each, after a warm-up\n"
+                                "  tonemap     every tone curve: a grey ramp's display values, and one frame of "
+                                "--scene side by side",
                                 specs);
     return argv.empty() ? 2 : 0;
   }

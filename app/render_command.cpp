@@ -10,6 +10,7 @@
 #include "app/option_table.hpp"
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
+#include "app/frame_settings.hpp"
 #include "app/frame_notes.hpp"
 #include "app/render_settings.hpp"
 #include "app/scene_source.hpp"
@@ -155,57 +156,22 @@ int runRender(const std::vector<std::string>& commandLine) {
     return 0;
   }
   const std::string sceneName = args.get("--scene");
-  const ShadingModel model = parseShadingModel(args.get("--model"));
-  std::vector<std::string> variantKeys;
-  ShadingVariant variant = parseShadingVariant(args.get("--variant"), &variantKeys);
-  // A term of the other model, or one chosen twice, would be dropped without a word.
-  for (const std::string& key : variantKeys) {
-    if ((key == "lobe") != (model == ShadingModel::BlinnPhong)) {
-      throw UsageError("--variant " + args.get("--variant") + ": " + key + " is a term of the " +
-                       (key == "lobe" ? "blinn-phong" : "pbr") + " model, not of --model " + toString(model));
-    }
-  }
-  if (args.has("--visibility")) {
-    if (std::find(variantKeys.begin(), variantKeys.end(), "visibility") != variantKeys.end()) {
-      throw UsageError("--visibility and --variant " + args.get("--variant") + " both choose the visibility term");
-    }
-    if (model != ShadingModel::Pbr) throw UsageError("--visibility is a term of the pbr model, not of --model " +
-                                                     std::string(toString(model)));
-    variant.visibility = parseVisibility(args.get("--visibility"));
-  }
-  RendererConfig rendererConfig = measuredGrid();
-  rendererConfig.hdrFormat = parseHdrFormat(args.get("--hdr-format"));
-  rendererConfig.gbuffer = parseGBufferPrecision(args.get("--gbuffer"));
-  SceneParams sceneParams = sceneFileParams(args);
-  sceneParams.defaultEnvironment = defaultEnvironment(args);
-  applySceneShapeOptions(args, sceneParams);
-  const Culling culling = parseCulling(args.get("--culling"));
-  ClusterConfig& clusterConfig = rendererConfig.clusters;
-  if (args.get("--tile") != "auto") {
-    clusterConfig.tileTrial = false;
-    clusterConfig.tileSize = args.getInt("--tile", 8, 512);
-  }
-  clusterConfig.slices = args.getInt("--slices", 1, 256);
-  clusterConfig.lightPass = clusterConfig.fill = parseAssignShape(args.get("--assign-shape"));
-  if (clusterConfig.fill == AssignShape::Cluster) clusterConfig.fill = AssignShape::Workgroup;
-  const bool stats = args.has("--stats");
-  const AntiAliasing aa = parseAntiAliasing(args.get("--aa"));
-  ShadowSettings shadows = readShadowSettings(args);
-  shadows.draws = parseShadowDraws(args.get("--shadow-draws"));
-  std::optional<DebugChannel> debug;
-  if (args.has("--debug")) debug = parseDebugChannel(args.get("--debug"));
-  // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.
-  if (debug && needsClusterGrid(*debug) && culling == Culling::None) {
-    throw UsageError(std::string("--debug ") + toString(*debug) + " needs --culling clustered");
-  }
+  // Every option that decides the frame, as --json records it; the renderer's settings are read from that record.
+  const RenderSettings record = renderSettings(specs, args);
+  const FrameSettings settings = frameSettings(record, {measuredGrid(), {}});
+  const FrameOptions& frame = settings.frame;
+  const ShadingModel model = frame.model;
   // Blinn-Phong frames are clamped in LDR: no tone curve or exposure reaches them.
-  const ToneCurve curve = readToneCurve(args);
   if (model != ShadingModel::Pbr && args.has("--tonemap")) {
     throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
   }
   if (model != ShadingModel::Pbr && args.get("--exposure") == "auto") {
     throw UsageError("--exposure auto meters the pbr model's frames; --model blinn-phong frames are clamped");
   }
+  SceneParams sceneParams = sceneFileParams(args);
+  sceneParams.defaultEnvironment = defaultEnvironment(args);
+  applySceneShapeOptions(args, sceneParams);
+  const bool stats = args.has("--stats");
   const glm::ivec2 size = args.getSize("--size");
   const int warmup = args.getInt("--warmup", 0, 100000);
   const int frames = args.getInt("--frames", 1, 100000);
@@ -225,10 +191,12 @@ int runRender(const std::vector<std::string>& commandLine) {
   applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
   const ExposureChoice exposure = applyExposureOptions(args, scene);
+  const std::optional<DebugChannel>& debug = frame.debug;
   const DebugNeeds needs = debug ? debugChannelInfo(*debug).needs : DebugNeeds::Nothing;
-  if (needs == DebugNeeds::ShadowCaster && !anyShadowCaster(scene.lights, scene.directionalLights, shadows.mode)) {
+  const ShadowMode shadowMode = frame.shadows.mode;
+  if (needs == DebugNeeds::ShadowCaster && !anyShadowCaster(scene.lights, scene.directionalLights, shadowMode)) {
     throw UsageError("--debug " + std::string(toString(*debug)) + ": no light of the scene casts shadows under " +
-                     "--shadows " + toString(shadows.mode) + " (--shadows on makes every light cast)");
+                     "--shadows " + toString(shadowMode) + " (--shadows on makes every light cast)");
   }
   if (needs == DebugNeeds::BlendSurface && !hasBlendMaterial(scene)) {
     throw UsageError("--debug " + std::string(toString(*debug)) + ": the scene has no material with alphaMode BLEND");
@@ -250,16 +218,18 @@ int runRender(const std::vector<std::string>& commandLine) {
   if (!exposure.note.empty()) std::printf("note: %s\n", exposure.note.c_str());
   // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
   const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
-                                                                  : std::string(toString(aa));
-  const std::string shownCurve = model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(curve)) : "";
+                                                                  : std::string(toString(frame.aa));
+  const std::string shownCurve =
+      model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(frame.toneCurve)) : "";
   std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s%s\n", scene.name.c_str(), size.x,
               size.y, scene.lights.size(), directional.c_str(), toString(model),
-              (" (" + describeTerms(model, variant) + ")").c_str(), toString(culling), shownAa.c_str(),
+              (" (" + describeTerms(model, frame.variant) + ")").c_str(), toString(frame.culling), shownAa.c_str(),
               shownCurve.c_str());
 
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(timing, info.renderer));
   Profiler precomputeProfiler(profiler.mode());
+  RendererConfig rendererConfig = settings.renderer;
   rendererConfig.precomputeProfiler = &precomputeProfiler;
   const FrameCapturer capturer;  // before the renderer, which holds on to it
   Renderer renderer(shaders, scene, size.x, size.y, rendererConfig);
@@ -273,15 +243,16 @@ int runRender(const std::vector<std::string>& commandLine) {
     renderer.captureFrame(captureFrame, capturer);
     std::printf("%s\n", capturer.describe(captureFrame).c_str());
   }
-  FrameOptions options{model, variant, culling, exposure.exposure, false, debug, aa, shadows, readTransparency(args),
-                       curve};
+  FrameOptions options = frame;
+  options.exposure = exposure.exposure;
   options.autoExposure = exposure.autoExposure;
   renderer.renderFrame(options, profiler);
   printFirstFrame(profiler.takeResults(true).front());
   printWarmUp(renderer.warmUp(options, profiler, warmup));
 
   BenchResult result;
-  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), culling, model, 1.0f, shadows};
+  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), frame.culling, model, 1.0f,
+                   frame.shadows};
   TimedFrames timed = timeFrames(renderer, options, profiler, frames);
   result.frames = std::move(timed.frames);
   result.processCpuShare = timed.processCpuShare;
@@ -320,22 +291,22 @@ int runRender(const std::vector<std::string>& commandLine) {
   if (jsonFile) {
     BenchReport report;
     report.provenance = collectProvenance(info, profiler.mode());
-    report.provenance.set("shading_variant", describeTerms(model, variant));
-    report.provenance.set("tone_curve", model == ShadingModel::Pbr ? toString(curve) : "none (clamped)");
+    report.provenance.set("shading_variant", describeTerms(model, frame.variant));
+    report.provenance.set("tone_curve", model == ShadingModel::Pbr ? toString(frame.toneCurve) : "none (clamped)");
     report.provenance.set("exposure", metered ? "auto" : fixedDecimals(shownExposure, 6));
     if (metered) report.provenance.set("ev100_metered", fixedDecimals(metered->ev100, 3));
     report.settings.scene = scene.name;
     report.settings.size = size;
     report.settings.lights = {result.config.lights};
-    report.settings.culling = {culling};
+    report.settings.culling = {frame.culling};
     report.settings.models = {model};
     report.settings.warmup = warmup;
     report.settings.frames = frames;
     report.settings.maxSeconds = 0.0;
     report.settings.timing = timing;
-    report.settings.shadows = shadows;
+    report.settings.shadows = frame.shadows;
     report.results.push_back(std::move(result));
-    report.renderSettings = renderSettings(specs, args);
+    report.renderSettings = record;
     jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
     std::printf("wrote %s\n", outJson.c_str());
   }

@@ -152,7 +152,7 @@ TEST_CASE("orthographic: a lit scene seen along parallel rays matches the refere
   const auto exact = std::find_if(ladder.begin(), ladder.end(), [](const auto& v) { return v.name == "exact-float"; });
   REQUIRE(exact != ladder.end());
   pbr::FrameOptions o;
-  o.variant = exact->shading;
+  o.variant = exact->shading();
   o.shadows.mode = pbr::ShadowMode::None;
   const glm::ivec2 size{160, 96};
   const pbr::test::RenderedFrame gpu = renderFloat(scene, size, o);

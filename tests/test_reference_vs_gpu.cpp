@@ -53,14 +53,10 @@ std::map<std::string, double> errors(const std::string& sceneSpec) {
   const ImageRgba8 refLdr = displayImage(shaders, ref.radiance, s.scene.exposure);
   std::map<std::string, double> out;
   for (const AccuracyVariant& v : accuracyLadder()) {
-    if (v.model != ShadingModel::Pbr) continue;
-    FrameOptions options;
-    options.variant = v.shading;
+    if (v.model() != ShadingModel::Pbr) continue;
+    FrameOptions options = v.settings.frame;
     options.exposure = s.scene.exposure;
-    RendererConfig config;
-    config.hdrFormat = v.hdr;
-    config.gbuffer = v.gbuffer;
-    const RenderedFrames f = renderOffscreen(shaders, s.scene, kSize, options, 2, config);
+    const RenderedFrames f = renderOffscreen(shaders, s.scene, kSize, options, 2, v.settings.renderer);
     out[v.name] = measureError(f.hdr, f.ldr, ref, refLdr).relativeRmse;
     MESSAGE(sceneSpec << " " << v.name << ": relative RMSE " << out[v.name]);
   }

@@ -130,7 +130,7 @@ TEST_CASE("transparency: a 0.3-alpha pane over a lit sphere matches the referenc
   const auto exact = std::find_if(ladder.begin(), ladder.end(), [](const auto& v) { return v.name == "exact-float"; });
   REQUIRE(exact != ladder.end());
   pbr::FrameOptions o = unshadowed();
-  o.variant = exact->shading;
+  o.variant = exact->shading();
   const pbr::test::RenderedFrame gpu = renderExact(scene, o);
   const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, {});
   const double error = pbr::test::relativeRmse(gpu.hdr, ref.radiance);
@@ -314,7 +314,7 @@ TEST_CASE("transparency: crossing panes, sorted wrong only where they overlap, o
   const auto exact = std::find_if(ladder.begin(), ladder.end(), [](const auto& v) { return v.name == "exact-float"; });
   REQUIRE(exact != ladder.end());
   pbr::FrameOptions o = unshadowed();
-  o.variant = exact->shading;
+  o.variant = exact->shading();
   const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, {});
   o.transparency = pbr::Transparency::Sorted;
   const pbr::test::RenderedFrame sorted = renderExact(scene, o);

@@ -11,46 +11,43 @@
 
 namespace pbr {
 
-namespace {
-
-AccuracyVariant pbrVariant(const std::string& name, const std::string& terms, HdrFormat hdr = HdrFormat::Rgba16f,
-                           GBufferPrecision gbuffer = GBufferPrecision::Lean) {
-  return {name, ShadingModel::Pbr, parseShadingVariant(terms), hdr, gbuffer};
+AccuracyVariant::AccuracyVariant(std::string name_, RenderSettings record_)
+    : name(std::move(name_)), record(std::move(record_)), settings(frameSettings(record)) {
+  for (const auto& entry : record) {
+    if (!isFrameSetting(entry.first)) throw std::logic_error("variant " + name + ": " + entry.first + " is no frame setting");
+  }
 }
-
-}  // namespace
 
 PairCostVariant pairCostVariant(const AccuracyVariant& v) {
   PairCostVariant out;
   out.name = v.name;
-  out.options.model = v.model;
-  out.options.variant = v.shading;
-  out.config.hdrFormat = v.hdr;
-  out.config.gbuffer = v.gbuffer;
+  out.options = v.settings.frame;
+  out.config = v.settings.renderer;
   return out;
 }
 
 const std::vector<AccuracyVariant>& accuracyLadder() {
+  const RenderSettings::value_type exactFresnel = {"--variant", "fresnel=exact"};
+  const RenderSettings::value_type rgba32f = {"--hdr-format", "rgba32f"};
   static const std::vector<AccuracyVariant> ladder = {
       // The reference model's terms: only float precision and the ambient integral differ.
-      pbrVariant("exact", "fresnel=exact"),
-      pbrVariant("exact-rgba32f", "fresnel=exact", HdrFormat::Rgba32f),
-      pbrVariant("exact-float", "fresnel=exact", HdrFormat::Rgba32f, GBufferPrecision::Float),
-      pbrVariant("default", ""),
-      pbrVariant("hammon", "visibility=hammon"),
-      pbrVariant("separable", "visibility=separable"),
-      pbrVariant("beckmann", "ndf=beckmann"),
-      pbrVariant("lambert", "diffuse=lambert"),
-      pbrVariant("burley", "diffuse=burley"),
-      pbrVariant("schlick-sg", "fresnel=schlick-sg"),
-      pbrVariant("lambert-1-f-vh", "diffuse=lambert-1-f-vh"),
-      pbrVariant("study", "study"),
-      pbrVariant("r11g11b10f", "", HdrFormat::R11g11b10f),
-      pbrVariant("gbuffer-float", "", HdrFormat::Rgba16f, GBufferPrecision::Float),
-      pbrVariant("fast", "visibility=hammon,diffuse=lambert", HdrFormat::R11g11b10f),
-      {"blinn-phong", ShadingModel::BlinnPhong, {}, HdrFormat::Rgba16f, GBufferPrecision::Lean},
-      {"blinn-phong-sg", ShadingModel::BlinnPhong, parseShadingVariant("lobe=sg"), HdrFormat::Rgba16f,
-       GBufferPrecision::Lean},
+      {"exact", {exactFresnel}},
+      {"exact-rgba32f", {exactFresnel, rgba32f}},
+      {"exact-float", {exactFresnel, rgba32f, {"--gbuffer", "float"}}},
+      {"default", {}},
+      {"hammon", {{"--variant", "visibility=hammon"}}},
+      {"separable", {{"--variant", "visibility=separable"}}},
+      {"beckmann", {{"--variant", "ndf=beckmann"}}},
+      {"lambert", {{"--variant", "diffuse=lambert"}}},
+      {"burley", {{"--variant", "diffuse=burley"}}},
+      {"schlick-sg", {{"--variant", "fresnel=schlick-sg"}}},
+      {"lambert-1-f-vh", {{"--variant", "diffuse=lambert-1-f-vh"}}},
+      {"study", {{"--variant", "study"}}},
+      {"r11g11b10f", {{"--hdr-format", "r11g11b10f"}}},
+      {"gbuffer-float", {{"--gbuffer", "float"}}},
+      {"fast", {{"--variant", "visibility=hammon,diffuse=lambert"}, {"--hdr-format", "r11g11b10f"}}},
+      {"blinn-phong", {{"--model", "blinn-phong"}}},
+      {"blinn-phong-sg", {{"--model", "blinn-phong"}, {"--variant", "lobe=sg"}}},
   };
   return ladder;
 }
@@ -114,17 +111,10 @@ AccuracyScene loadAccuracyScene(const std::string& spec, SceneParams params) {
 
 const AccuracyVariant& exactVariant() { return accuracyLadder().front(); }
 
-RendererConfig exactVariantConfig() {
-  RendererConfig config;
-  config.hdrFormat = exactVariant().hdr;
-  config.gbuffer = exactVariant().gbuffer;
-  return config;
-}
+RendererConfig exactVariantConfig() { return exactVariant().settings.renderer; }
 
 FrameOptions exactVariantOptions(const Scene& scene) {
-  FrameOptions options;
-  options.model = exactVariant().model;
-  options.variant = exactVariant().shading;
+  FrameOptions options = exactVariant().settings.frame;
   options.exposure = scene.displayExposure();
   return options;
 }

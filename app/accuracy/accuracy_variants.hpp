@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "app/accuracy/pair_cost.hpp"
+#include "app/frame_settings.hpp"
+#include "app/render_settings.hpp"
 #include "core/builtin_scenes.hpp"
 #include "core/scene.hpp"
 #include "gbuffer/gbuffer.hpp"
@@ -14,14 +16,18 @@
 
 namespace pbr {
 
-// One rung of the speed/accuracy ladder: a shading model, its PBR terms and the precision of the HDR target and
-// the G-buffer.
+// One rung of the speed/accuracy ladder: a name and the settings it renders with, as pbr render's options take
+// them (`record`: the model, its terms, the precision of the HDR target and the G-buffer), and what they decide
+// over the renderer's defaults (`settings`).
 struct AccuracyVariant {
+  AccuracyVariant(std::string name_, RenderSettings record_);
   std::string name;
-  ShadingModel model = ShadingModel::Pbr;
-  ShadingVariant shading;
-  HdrFormat hdr = HdrFormat::Rgba16f;
-  GBufferPrecision gbuffer = GBufferPrecision::Lean;
+  RenderSettings record;
+  FrameSettings settings;
+  ShadingModel model() const { return settings.frame.model; }
+  const ShadingVariant& shading() const { return settings.frame.variant; }
+  HdrFormat hdr() const { return settings.renderer.hdrFormat; }
+  GBufferPrecision gbuffer() const { return settings.renderer.gbuffer; }
 };
 
 // The variant as the per-pair cost measurement takes it.

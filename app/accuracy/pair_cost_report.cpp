@@ -12,7 +12,7 @@ namespace pbr {
 
 namespace {
 
-std::string terms(const AccuracyVariant& v) { return describeTerms(v.model, v.shading); }
+std::string terms(const AccuracyVariant& v) { return describeTerms(v.model(), v.shading()); }
 
 }  // namespace
 
@@ -33,8 +33,8 @@ void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
   for (size_t i = 0; i < report.costs.size(); ++i) {
     const AccuracyVariant& v = report.variants[i];
     const PairCost& c = report.costs[i];
-    out << v.name << ',' << toString(v.model) << ",\"" << terms(v) << "\"," << toString(v.hdr) << ','
-        << toString(v.gbuffer) << ',' << s.size.x << ',' << s.size.y << ',' << s.lights << ',' << s.rounds << ','
+    out << v.name << ',' << toString(v.model()) << ",\"" << terms(v) << "\"," << toString(v.hdr()) << ','
+        << toString(v.gbuffer()) << ',' << s.size.x << ',' << s.size.y << ',' << s.lights << ',' << s.rounds << ','
         << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ',' << fixedDecimals(c.nsPerPair.p90, 4) << ','
         << fixedDecimals(c.nsPerPair.min, 4) << ',' << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
         << c.pairs << ',' << fixedDecimals(c.transparentNsPerPair.median, 4) << ','
@@ -53,10 +53,10 @@ void writePairCostJson(std::ostream& out, const PairCostReport& report) {
     const AccuracyVariant& v = report.variants[i];
     const PairCost& c = report.costs[i];
     variants.push_back({{"variant", v.name},
-                        {"model", toString(v.model)},
+                        {"model", toString(v.model())},
                         {"terms", terms(v)},
-                        {"hdr_format", toString(v.hdr)},
-                        {"gbuffer", toString(v.gbuffer)},
+                        {"hdr_format", toString(v.hdr())},
+                        {"gbuffer", toString(v.gbuffer())},
                         {"ns_per_pair", {{"median", c.nsPerPair.median},
                                          {"p10", c.nsPerPair.p10},
                                          {"p90", c.nsPerPair.p90},
