@@ -141,6 +141,125 @@ void printPrecomputeTimings(const std::vector<FrameTiming>& frames) {
   }
 }
 
+// What the command line asks of pbr render, read and checked before a scene is loaded or a context made.
+struct RenderRequest {
+  std::string sceneName;
+  RenderSettings record;   // every option that decides the frame, as --json records it
+  FrameSettings settings;  // what the record decides, over the commands' cluster grid (measuredGrid)
+  SceneParams sceneParams;
+  glm::ivec2 size{0};
+  int warmup = 0, frames = 0, captureFrame = 0;
+  bool stats = false;
+  std::string outPng, outHdr, outJson, timing;
+  EglPlatform platform = EglPlatform::Auto;
+};
+
+RenderRequest readRequest(const std::vector<OptionSpec>& specs, const Args& args) {
+  RenderRequest r;
+  r.sceneName = args.get("--scene");
+  r.record = renderSettings(specs, args);
+  r.settings = frameSettings(r.record, {measuredGrid(), {}});
+  // Blinn-Phong frames are clamped in LDR: no tone curve or exposure reaches them.
+  if (r.settings.frame.model != ShadingModel::Pbr && args.has("--tonemap")) {
+    throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
+  }
+  if (r.settings.frame.model != ShadingModel::Pbr && args.get("--exposure") == "auto") {
+    throw UsageError("--exposure auto meters the pbr model's frames; --model blinn-phong frames are clamped");
+  }
+  r.sceneParams = sceneFileParams(args);
+  r.sceneParams.defaultEnvironment = defaultEnvironment(args);
+  applySceneShapeOptions(args, r.sceneParams);
+  r.stats = args.has("--stats");
+  r.size = args.getSize("--size");
+  r.warmup = args.getInt("--warmup", 0, 100000);
+  r.frames = args.getInt("--frames", 1, 100000);
+  r.captureFrame = checkedCaptureFrame(args, r.warmup, r.frames);
+  r.outPng = args.get("--out");
+  r.outHdr = args.get("--hdr");
+  r.outJson = args.get("--json");
+  // Every output's kind is known from its name before anything renders.
+  if (!r.outPng.empty()) ldrFileFormat(r.outPng);
+  if (!r.outHdr.empty()) hdrFileFormat(r.outHdr);
+  if (!r.outJson.empty()) requireExtension(r.outJson, ".json");
+  r.timing = args.get("--timing");
+  r.platform = parseEglPlatform(args.get("--egl-platform"));
+  chooseTimingMode(r.timing, "");  // reject a bad mode before making a context
+  return r;
+}
+
+// A debug channel that shows what the scene lacks would be a blank legend: refused, naming what is missing.
+void checkDebugChannel(const FrameOptions& frame, const Scene& scene) {
+  if (!frame.debug) return;
+  const DebugNeeds needs = debugChannelInfo(*frame.debug).needs;
+  const ShadowMode shadowMode = frame.shadows.mode;
+  if (needs == DebugNeeds::ShadowCaster && !anyShadowCaster(scene.lights, scene.directionalLights, shadowMode)) {
+    throw UsageError("--debug " + std::string(toString(*frame.debug)) + ": no light of the scene casts shadows under " +
+                     "--shadows " + toString(shadowMode) + " (--shadows on makes every light cast)");
+  }
+  if (needs == DebugNeeds::BlendSurface && !hasBlendMaterial(scene)) {
+    throw UsageError("--debug " + std::string(toString(*frame.debug)) +
+                     ": the scene has no material with alphaMode BLEND");
+  }
+}
+
+void printScene(const Scene& scene, glm::ivec2 size, const FrameOptions& frame) {
+  const std::string directional =
+      scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
+  // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
+  const std::optional<DebugChannel>& debug = frame.debug;
+  const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
+                                                                  : std::string(toString(frame.aa));
+  const std::string shownCurve =
+      frame.model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(frame.toneCurve)) : "";
+  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s%s\n", scene.name.c_str(), size.x,
+              size.y, scene.lights.size(), directional.c_str(), toString(frame.model),
+              (" (" + describeTerms(frame.model, frame.variant) + ")").c_str(), toString(frame.culling),
+              shownAa.c_str(), shownCurve.c_str());
+}
+
+// The first frame, the warm-up and the timed frames, printed as they end; the result of the timed ones.
+BenchResult timedRun(Renderer& renderer, const FrameOptions& options, Profiler& profiler, const RenderRequest& r,
+                     const Scene& scene) {
+  renderer.renderFrame(options, profiler);
+  printFirstFrame(profiler.takeResults(true).front());
+  printWarmUp(renderer.warmUp(options, profiler, r.warmup));
+  BenchResult result;
+  result.config = {scene.name, r.size, static_cast<int>(scene.lights.size()), options.culling, options.model, 1.0f,
+                   options.shadows};
+  TimedFrames timed = timeFrames(renderer, options, profiler, r.frames);
+  result.frames = std::move(timed.frames);
+  result.processCpuShare = timed.processCpuShare;
+  result.summarize();
+  result.memory = {renderer.gbuffer().bytes(), renderer.clusters().bytes(), renderer.lights().bytes()};
+  printTimings(result, profiler.mode());
+  return result;
+}
+
+// The --json report: pbr bench's schema with this one configuration, and the record that reproduces the frame.
+BenchReport renderReport(const RenderRequest& r, const Scene& scene, BenchResult result, Provenance provenance,
+                         const std::optional<MeteredExposure>& metered, float shownExposure) {
+  const FrameOptions& frame = r.settings.frame;
+  BenchReport report;
+  report.provenance = std::move(provenance);
+  report.provenance.set("shading_variant", describeTerms(frame.model, frame.variant));
+  report.provenance.set("tone_curve", frame.model == ShadingModel::Pbr ? toString(frame.toneCurve) : "none (clamped)");
+  report.provenance.set("exposure", metered ? "auto" : fixedDecimals(shownExposure, 6));
+  if (metered) report.provenance.set("ev100_metered", fixedDecimals(metered->ev100, 3));
+  report.settings.scene = scene.name;
+  report.settings.size = r.size;
+  report.settings.lights = {result.config.lights};
+  report.settings.culling = {frame.culling};
+  report.settings.models = {frame.model};
+  report.settings.warmup = r.warmup;
+  report.settings.frames = r.frames;
+  report.settings.maxSeconds = 0.0;
+  report.settings.timing = r.timing;
+  report.settings.shadows = frame.shadows;
+  report.results.push_back(std::move(result));
+  report.renderSettings = r.record;
+  return report;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& commandLine) {
@@ -155,117 +274,56 @@ int runRender(const std::vector<std::string>& commandLine) {
                                 specs);
     return 0;
   }
-  const std::string sceneName = args.get("--scene");
-  // Every option that decides the frame, as --json records it; the renderer's settings are read from that record.
-  const RenderSettings record = renderSettings(specs, args);
-  const FrameSettings settings = frameSettings(record, {measuredGrid(), {}});
-  const FrameOptions& frame = settings.frame;
-  const ShadingModel model = frame.model;
-  // Blinn-Phong frames are clamped in LDR: no tone curve or exposure reaches them.
-  if (model != ShadingModel::Pbr && args.has("--tonemap")) {
-    throw UsageError("--tonemap is the pbr model's display transform; --model blinn-phong frames are clamped");
-  }
-  if (model != ShadingModel::Pbr && args.get("--exposure") == "auto") {
-    throw UsageError("--exposure auto meters the pbr model's frames; --model blinn-phong frames are clamped");
-  }
-  SceneParams sceneParams = sceneFileParams(args);
-  sceneParams.defaultEnvironment = defaultEnvironment(args);
-  applySceneShapeOptions(args, sceneParams);
-  const bool stats = args.has("--stats");
-  const glm::ivec2 size = args.getSize("--size");
-  const int warmup = args.getInt("--warmup", 0, 100000);
-  const int frames = args.getInt("--frames", 1, 100000);
-  const int captureFrame = checkedCaptureFrame(args, warmup, frames);
-  const std::string outPng = args.get("--out");
-  const std::string outHdr = args.get("--hdr");
-  const std::string outJson = args.get("--json");
-  // Every output's kind is known from its name before anything renders.
-  if (!outPng.empty()) ldrFileFormat(outPng);
-  if (!outHdr.empty()) hdrFileFormat(outHdr);
-  if (!outJson.empty()) requireExtension(outJson, ".json");
-  const std::string timing = args.get("--timing");
-  const EglPlatform platform = parseEglPlatform(args.get("--egl-platform"));
-  chooseTimingMode(timing, "");  // reject a bad mode before making a context
-
-  Scene scene = resolveScene(sceneName, sceneParams);
+  const RenderRequest r = readRequest(specs, args);
+  const FrameOptions& frame = r.settings.frame;
+  Scene scene = resolveScene(r.sceneName, r.sceneParams);
   applyEnvironmentOptions(args, scene);
   applyCameraOption(args, scene);
   const ExposureChoice exposure = applyExposureOptions(args, scene);
-  const std::optional<DebugChannel>& debug = frame.debug;
-  const DebugNeeds needs = debug ? debugChannelInfo(*debug).needs : DebugNeeds::Nothing;
-  const ShadowMode shadowMode = frame.shadows.mode;
-  if (needs == DebugNeeds::ShadowCaster && !anyShadowCaster(scene.lights, scene.directionalLights, shadowMode)) {
-    throw UsageError("--debug " + std::string(toString(*debug)) + ": no light of the scene casts shadows under " +
-                     "--shadows " + toString(shadowMode) + " (--shadows on makes every light cast)");
-  }
-  if (needs == DebugNeeds::BlendSurface && !hasBlendMaterial(scene)) {
-    throw UsageError("--debug " + std::string(toString(*debug)) + ": the scene has no material with alphaMode BLEND");
-  }
-  checkOutputsApart(sceneInputs(sceneName, scene), {{"--out", outPng}, {"--hdr", outHdr}, {"--json", outJson}});
+  checkDebugChannel(frame, scene);
+  checkOutputsApart(sceneInputs(r.sceneName, scene), {{"--out", r.outPng}, {"--hdr", r.outHdr}, {"--json", r.outJson}});
   // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
   // it is written.
   std::optional<OutputFile> pngFile, hdrFile, jsonFile;
-  if (!outPng.empty()) pngFile.emplace(outPng);
-  if (!outHdr.empty()) hdrFile.emplace(outHdr);
-  if (!outJson.empty()) jsonFile.emplace(outJson);
+  if (!r.outPng.empty()) pngFile.emplace(r.outPng);
+  if (!r.outHdr.empty()) hdrFile.emplace(r.outHdr);
+  if (!r.outJson.empty()) jsonFile.emplace(r.outJson);
 
-  auto context = createHeadlessContext(platform);
+  auto context = createHeadlessContext(r.platform);
   const ContextInfo& info = context->info();
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
-  const std::string directional =
-      scene.directionalLights.empty() ? "" : " + " + std::to_string(scene.directionalLights.size()) + " directional";
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
   if (!exposure.note.empty()) std::printf("note: %s\n", exposure.note.c_str());
-  // A channel other than the cluster views replaces the frame, and the renderer does not filter it.
-  const std::string shownAa = debug && !needsClusterGrid(*debug) ? "none (debug " + std::string(toString(*debug)) + ")"
-                                                                  : std::string(toString(frame.aa));
-  const std::string shownCurve =
-      model == ShadingModel::Pbr ? ", tonemap " + std::string(toString(frame.toneCurve)) : "";
-  std::printf("scene: %s, %dx%d, %zu lights%s, model %s%s, culling %s, aa %s%s\n", scene.name.c_str(), size.x,
-              size.y, scene.lights.size(), directional.c_str(), toString(model),
-              (" (" + describeTerms(model, frame.variant) + ")").c_str(), toString(frame.culling), shownAa.c_str(),
-              shownCurve.c_str());
+  printScene(scene, r.size, frame);
 
   const ShaderLibrary shaders;
-  Profiler profiler(chooseTimingMode(timing, info.renderer));
+  Profiler profiler(chooseTimingMode(r.timing, info.renderer));
   Profiler precomputeProfiler(profiler.mode());
-  RendererConfig rendererConfig = settings.renderer;
+  RendererConfig rendererConfig = r.settings.renderer;
   rendererConfig.precomputeProfiler = &precomputeProfiler;
   const FrameCapturer capturer;  // before the renderer, which holds on to it
-  Renderer renderer(shaders, scene, size.x, size.y, rendererConfig);
+  Renderer renderer(shaders, scene, r.size.x, r.size.y, rendererConfig);
   if (renderer.ibl()) {
     std::printf("environment: %s, IBL precomputation (%s):\n",
                 scene.environment->file.empty() ? "procedural sky" : scene.environment->file.c_str(),
                 describe(precomputeProfiler.mode()));
     printPrecomputeTimings(precomputeProfiler.takeResults(true));
   }
-  if (captureFrame) {
-    renderer.captureFrame(captureFrame, capturer);
-    std::printf("%s\n", capturer.describe(captureFrame).c_str());
+  if (r.captureFrame) {
+    renderer.captureFrame(r.captureFrame, capturer);
+    std::printf("%s\n", capturer.describe(r.captureFrame).c_str());
   }
   FrameOptions options = frame;
   options.exposure = exposure.exposure;
   options.autoExposure = exposure.autoExposure;
-  renderer.renderFrame(options, profiler);
-  printFirstFrame(profiler.takeResults(true).front());
-  printWarmUp(renderer.warmUp(options, profiler, warmup));
-
-  BenchResult result;
-  result.config = {scene.name, size, static_cast<int>(scene.lights.size()), frame.culling, model, 1.0f,
-                   frame.shadows};
-  TimedFrames timed = timeFrames(renderer, options, profiler, frames);
-  result.frames = std::move(timed.frames);
-  result.processCpuShare = timed.processCpuShare;
-  result.summarize();
-  result.memory = {renderer.gbuffer().bytes(), renderer.clusters().bytes(), renderer.lights().bytes()};
-  printTimings(result, profiler.mode());
+  BenchResult result = timedRun(renderer, options, profiler, r, scene);
 
   // Captures and GPU counters come from one more frame that nobody times.
   ImageRgba8 ldr;
   ImageRgbaF hdr;
-  options.stats = stats || !outJson.empty();
+  options.stats = r.stats || jsonFile;
   Profiler untimed(profiler.mode());
-  renderer.renderFrame(options, untimed, {outPng.empty() ? nullptr : &ldr, outHdr.empty() ? nullptr : &hdr});
+  renderer.renderFrame(options, untimed, {pngFile ? &ldr : nullptr, hdrFile ? &hdr : nullptr});
   result.stats = renderer.lightStats();
   printLightStats(result.stats, renderer, options);
   const std::optional<MeteredExposure> metered = renderer.meteredExposure();
@@ -276,39 +334,23 @@ int runRender(const std::vector<std::string>& commandLine) {
   checkGlError("rendering");
 
   if (pngFile) {
-    pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(outPng), ldr); });
-    std::printf("wrote %s\n", outPng.c_str());
+    pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(r.outPng), ldr); });
+    std::printf("wrote %s\n", r.outPng.c_str());
   }
   const float shownExposure = metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
-  const FrameExposure shown{model == ShadingModel::Pbr, shownExposure, metered.has_value()};
-  for (const std::string& note : frameNotes(scene, size, shown, outPng.empty() ? nullptr : &ldr)) {
+  const FrameExposure shown{frame.model == ShadingModel::Pbr, shownExposure, metered.has_value()};
+  for (const std::string& note : frameNotes(scene, r.size, shown, pngFile ? &ldr : nullptr)) {
     std::printf("note: %s\n", note.c_str());
   }
   if (hdrFile) {
-    hdrFile->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(outHdr), hdr); });
-    std::printf("wrote %s\n", outHdr.c_str());
+    hdrFile->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(r.outHdr), hdr); });
+    std::printf("wrote %s\n", r.outHdr.c_str());
   }
   if (jsonFile) {
-    BenchReport report;
-    report.provenance = collectProvenance(info, profiler.mode());
-    report.provenance.set("shading_variant", describeTerms(model, frame.variant));
-    report.provenance.set("tone_curve", model == ShadingModel::Pbr ? toString(frame.toneCurve) : "none (clamped)");
-    report.provenance.set("exposure", metered ? "auto" : fixedDecimals(shownExposure, 6));
-    if (metered) report.provenance.set("ev100_metered", fixedDecimals(metered->ev100, 3));
-    report.settings.scene = scene.name;
-    report.settings.size = size;
-    report.settings.lights = {result.config.lights};
-    report.settings.culling = {frame.culling};
-    report.settings.models = {model};
-    report.settings.warmup = warmup;
-    report.settings.frames = frames;
-    report.settings.maxSeconds = 0.0;
-    report.settings.timing = timing;
-    report.settings.shadows = frame.shadows;
-    report.results.push_back(std::move(result));
-    report.renderSettings = record;
+    const BenchReport report = renderReport(r, scene, std::move(result), collectProvenance(info, profiler.mode()),
+                                            metered, shownExposure);
     jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
-    std::printf("wrote %s\n", outJson.c_str());
+    std::printf("wrote %s\n", r.outJson.c_str());
   }
   return 0;
 }
