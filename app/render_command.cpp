@@ -237,7 +237,8 @@ BenchResult timedRun(Renderer& renderer, const FrameOptions& options, Profiler& 
 
 // The --json report: pbr bench's schema with this one configuration, and the record that reproduces the frame.
 BenchReport renderReport(const RenderRequest& r, const Scene& scene, BenchResult result, Provenance provenance,
-                         const std::optional<MeteredExposure>& metered, float shownExposure) {
+                         const std::optional<MeteredExposure>& metered, float shownExposure,
+                         const std::string& gbufferLayout) {
   const FrameOptions& frame = r.settings.frame;
   BenchReport report;
   report.provenance = std::move(provenance);
@@ -245,6 +246,7 @@ BenchReport renderReport(const RenderRequest& r, const Scene& scene, BenchResult
   report.provenance.set("tone_curve", frame.model == ShadingModel::Pbr ? toString(frame.toneCurve) : "none (clamped)");
   report.provenance.set("exposure", metered ? "auto" : fixedDecimals(shownExposure, 6));
   if (metered) report.provenance.set("ev100_metered", fixedDecimals(metered->ev100, 3));
+  report.provenance.set("gbuffer_layout", gbufferLayout);
   report.settings.scene = scene.name;
   report.settings.size = r.size;
   report.settings.lights = {result.config.lights};
@@ -326,6 +328,8 @@ int runRender(const std::vector<std::string>& commandLine) {
   renderer.renderFrame(options, untimed, {pngFile ? &ldr : nullptr, hdrFile ? &hdr : nullptr});
   result.stats = renderer.lightStats();
   printLightStats(result.stats, renderer, options);
+  const std::string gbufferLayout = renderer.gbuffer().layout.describe(renderer.gbuffer().precision);
+  if (r.stats) std::printf("gbuffer: %s\n", gbufferLayout.c_str());
   const std::optional<MeteredExposure> metered = renderer.meteredExposure();
   if (metered) {
     std::printf("exposure: auto, EV100 %.2f metered from the frame (exposure %.4g, as --ev100 %.2f --exposure 1 "
@@ -348,7 +352,7 @@ int runRender(const std::vector<std::string>& commandLine) {
   }
   if (jsonFile) {
     const BenchReport report = renderReport(r, scene, std::move(result), collectProvenance(info, profiler.mode()),
-                                            metered, shownExposure);
+                                            metered, shownExposure, gbufferLayout);
     jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
     std::printf("wrote %s\n", r.outJson.c_str());
   }

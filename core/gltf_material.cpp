@@ -132,6 +132,8 @@ Material GltfMaterials::convert(int index, const std::string& field) {
     if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) file_.fail(where + ": too large");
   }
 
+  readSpecular(g, name, m);
+
   if (g.alphaMode == "MASK") {
     m.alphaMode = AlphaMode::Mask;
   } else if (g.alphaMode == "BLEND") {
@@ -144,6 +146,37 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   m.doubleSided = g.doubleSided;
   m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
   return m;
+}
+
+void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string& name, Material& m) {
+  const auto number = [&](const tinygltf::Value& v, const std::string& where) {
+    if (!v.IsNumber()) file_.fail(where + ": must be a number");
+    return finite(file_, v.GetNumberAsDouble(), where);
+  };
+  if (const auto ior = g.extensions.find("KHR_materials_ior"); ior != g.extensions.end() && ior->second.Has("ior")) {
+    const std::string where = name + ".extensions.KHR_materials_ior.ior";
+    m.ior = number(ior->second.Get("ior"), where);
+    if (m.ior != 0.0f && !(m.ior >= 1.0f)) file_.fail(where + ": must be 0 or at least 1");
+  }
+  const auto specular = g.extensions.find("KHR_materials_specular");
+  if (specular == g.extensions.end()) return;
+  const tinygltf::Value& s = specular->second;
+  const std::string where = name + ".extensions.KHR_materials_specular";
+  if (s.Has("specularFactor")) {
+    m.specular = std::clamp(number(s.Get("specularFactor"), where + ".specularFactor"), 0.0f, 1.0f);
+  }
+  if (s.Has("specularColorFactor")) {
+    const tinygltf::Value& c = s.Get("specularColorFactor");
+    if (!c.IsArray() || c.ArrayLen() != 3) file_.fail(where + ".specularColorFactor: must have 3 components");
+    for (int i = 0; i < 3; ++i) {
+      // Not a unit factor: the colour may exceed 1, the product with F0 being clamped (dielectricSpecular).
+      m.specularColor[i] = number(c.Get(i), where + ".specularColorFactor");
+      if (m.specularColor[i] < 0.0f) file_.fail(where + ".specularColorFactor: must not be negative");
+    }
+  }
+  for (const char* map : {"specularTexture", "specularColorTexture"}) {
+    if (s.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
+  }
 }
 
 int GltfMaterials::texture(int index, bool srgb, const std::string& field) {

@@ -195,6 +195,23 @@ bool readsTexCoord1(const Material& m) {
          (m.emissiveTexture >= 0 && m.emissiveTexCoord == 1);
 }
 
+glm::vec4 dielectricSpecular(const Material& m) {
+  // KHR_materials_ior: F0 = ((ior - 1) / (ior + 1))^2; KHR_materials_specular: times the colour, clamped to 1,
+  // times the strength, which is also F90. In double, as a quotient of squares, so that ior 1.5 gives 0.04.
+  const double ior = m.ior;
+  const double f0 = (ior - 1.0) * (ior - 1.0) / ((ior + 1.0) * (ior + 1.0));
+  const glm::dvec3 color = glm::min(f0 * glm::dvec3(m.specularColor), glm::dvec3(1.0)) * double(m.specular);
+  return glm::vec4(glm::vec3(color), m.specular);
+}
+
+bool hasDielectricSpecular(const Material& m) { return dielectricSpecular(m) != glm::vec4(glm::vec3(0.04f), 1.0f); }
+
+bool hasSpecularMaterial(const Scene& scene, bool blended) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
+    return (o.material.alphaMode == AlphaMode::Blend) == blended && hasDielectricSpecular(o.material);
+  });
+}
+
 bool hasUnlitSurface(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
     return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;

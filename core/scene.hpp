@@ -73,7 +73,18 @@ struct Material {
   bool doubleSided = false;  // drawn without back-face culling, the normal flipped on back faces
   // KHR_materials_unlit: the base colour (with its alpha) is the surface's radiance, and no light is reflected.
   bool unlit = false;
+  // KHR_materials_ior and KHR_materials_specular: the dielectric part's index of refraction (1 or more, or 0 for
+  // F0 1), specular strength (specularFactor) and F0 colour (specularColorFactor, linear, may exceed 1).
+  float ior = 1.5f;
+  float specular = 1.0f;
+  glm::vec3 specularColor{1.0f};
 };
+
+// The dielectric part's F0 colour (rgb) and F90 (a) of KHR_materials_specular: min(((ior - 1) / (ior + 1))^2
+// specularColor, 1) specular and specular; the core material's 0.04 and 1 (exactly: ior 1.5 gives 0.25 / 6.25).
+glm::vec4 dielectricSpecular(const Material& material);
+// Whether a material's dielectric reflects other than the core material's F0 0.04 and F90 1.
+bool hasDielectricSpecular(const Material& material);
 
 // Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.
 enum class Shape { Plane, Sphere, Box, Mesh };
@@ -191,6 +202,10 @@ struct Scene {
 bool hasBlendMaterial(const Scene& scene);
 // Whether an opaque or MASK object's material is unlit: the deferred pass then reads the G-buffer's unlit flag.
 bool hasUnlitSurface(const Scene& scene);
+// Whether the material of an object, among the BLEND ones (`blended`) or the others, sets KHR_materials_ior or
+// _specular to other than the core material's: the G-buffer then holds each pixel's dielectric F0 and F90
+// (gbuffer/README.md), or the transparency pass shades with them.
+bool hasSpecularMaterial(const Scene& scene, bool blended);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
 bool readsTexCoord1(const Material& material);
 

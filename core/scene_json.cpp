@@ -149,6 +149,12 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   m.emissive = f["emissive"].vec3OrNumber(R::atLeast(0.0), m.emissive);
   m.doubleSided = f["double_sided"].boolean(m.doubleSided);
   m.unlit = f["unlit"].boolean(m.unlit);
+  // KHR_materials_ior and KHR_materials_specular's factors, under the names of the other fields.
+  const JsonField ior = f["ior"];
+  m.ior = ior.number(R::atLeast(0.0), m.ior);
+  if (m.ior > 0.0f && m.ior < 1.0f) ior.fail("must be 0 or at least 1 (an index of refraction)");
+  m.specular = f["specular"].number(R::closed(0.0, 1.0), m.specular);
+  m.specularColor = f["specular_color"].vec3OrNumber(R::atLeast(0.0), m.specularColor);
   m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
   const JsonField mode = f["alpha_mode"];
   if (mode.present()) {

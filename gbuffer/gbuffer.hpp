@@ -1,8 +1,10 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "core/gl_objects.hpp"
+#include "core/scene.hpp"
 
 namespace pbr {
 
@@ -18,25 +20,44 @@ struct GBufferFormats {
 };
 GBufferFormats gbufferFormats(GBufferPrecision precision);
 
+// The channels a scene's materials need beyond the core metal-rough ones (gbuffer/README.md): chosen when the scene
+// loads, so that a scene whose materials use no extension keeps the 16-byte layout and its programs.
+struct GBufferLayout {
+  bool specular = false;  // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
+  int extraBytesPerPixel(GBufferPrecision precision) const;
+  // "base colour, normal, material, depth" and the extra channels, with bytes per pixel: "lean, 16 bytes per pixel
+  // (base colour, normal, material, depth)", "lean + specular, 24 bytes per pixel (...)".
+  std::string describe(GBufferPrecision precision) const;
+  bool operator==(const GBufferLayout& o) const { return specular == o.specular; }
+};
+GBufferLayout gbufferLayout(const Scene& scene);
+// The internal format of the specular channel (RGBA16F lean, RGBA32F float).
+GLenum specularFormat(GBufferPrecision precision);
+
 // The G-buffer's attachments (layout and bytes per pixel in gbuffer/README.md). `radiance` is the frame's HDR
 // target, attached as colour attachment 3: the geometry pass writes emitted radiance there and the lighting pass
 // adds reflected light on top, so emission needs no attachment of its own. It must outlive the G-buffer.
 struct GBuffer {
-  GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean);
+  GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean,
+          GBufferLayout layout = {});
 
   static constexpr int kBytesPerPixel = 4 + 4 + 4 + 4;
   static constexpr int kFloatBytesPerPixel = 16 + 8 + 16 + 4;
   size_t bytes() const {
     return static_cast<size_t>(width) * static_cast<size_t>(height) *
-           (precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel);
+           ((precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel) +
+            layout.extraBytesPerPixel(precision));
   }
 
   int width, height;
   GBufferPrecision precision;
+  GBufferLayout layout;
   Texture baseColor;  // GL_SRGB8_ALPHA8 (float: GL_RGBA32F, linear)
   Texture normal;     // GL_RG16, octahedral (float: GL_RG32F)
   Texture material;   // GL_RGBA8, roughness + metalness + occlusion (float: GL_RGBA32F)
   Texture depth;      // GL_DEPTH_COMPONENT32F, reversed Z
+  // GL_RGBA16F dielectric F0 / 0.04 and F90 (float: GL_RGBA32F), colour attachment 4: with layout.specular only.
+  std::optional<Texture> specular;
   Framebuffer framebuffer;
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -61,6 +62,7 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     unsigned uv1Maps = 0;
     for (const auto& [unit, second] : secondSet) uv1Maps |= second ? 1u << unit : 0u;
     b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, static_cast<float>(uv1Maps), 0.0f, 0.0f);
+    b.dielectric = dielectricSpecular(m);
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
     b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
     b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
@@ -133,6 +135,9 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   textures_.reserve(scene.textures.size());
   for (const TextureData& t : scene.textures) textures_.emplace_back(t);
 
+  // Every G-buffer draw writes the channels the scene's layout has.
+  layout_ = gbufferLayout(scene);
+  const ShaderDefines layoutDefines = {{"MATERIAL_SPECULAR", layout_.specular ? "1" : "0"}};
   std::map<std::string, size_t> programIndex, blendedIndex;  // by the permutation's define list
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
@@ -154,7 +159,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
       auto it = programIndex.find(key);
       if (it == programIndex.end()) {
         programs_.push_back(&programs.graphics("gbuffer/gbuffer.vert", "gbuffer/gbuffer.frag",
-                                               concat(defines, gbufferBindingDefines())));
+                                               concat(concat(defines, layoutDefines), gbufferBindingDefines())));
         it = programIndex.emplace(key, programs_.size() - 1).first;
       }
       d.program = it->second;
@@ -215,6 +220,7 @@ void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changed
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {
+  if (!(target.layout == layout_)) throw std::logic_error("G-buffer pass: the target's layout is not the scene's");
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
   glViewport(0, 0, target.width, target.height);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -225,6 +231,7 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glEnable(GL_FRAMEBUFFER_SRGB);
   const float zeros[4] = {0, 0, 0, 0};
   const float farDepth = 0.0f;
+  // The specular channel is read only where depth says a surface was drawn: it needs no clearing.
   for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, zeros);
   glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
 

@@ -42,6 +42,9 @@ class GBufferPass {
   bool hasBlended() const { return opaqueDraws_ < draws_.size(); }
   // Whether the G-buffer holds unlit surfaces (hasUnlitSurface), whose pixels the lighting pass leaves unlit.
   bool hasUnlit() const { return unlit_; }
+  // The channels the scene's materials need (gbufferLayout), which every G-buffer program writes: the target
+  // render() draws into must have them.
+  const GBufferLayout& layout() const { return layout_; }
   // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
   // the program `program` makes from this pass's vertex shader and the object's permutation; BackToFront orders
   // them as seen by `camera`.
@@ -99,6 +102,7 @@ class GBufferPass {
   std::vector<Draw> draws_;  // the opaque and masked first, then the blended
   size_t opaqueDraws_ = 0;
   bool unlit_ = false;
+  GBufferLayout layout_;
   std::vector<ShaderDefines> blendedPermutations_;
   GLsizeiptr blockStride_;
   GLsizeiptr shadowViewStride_;  // renderDepth's blocks of view-projections, at the offset alignment

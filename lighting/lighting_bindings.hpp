@@ -34,6 +34,7 @@ constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::Te
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};
 constexpr BindingPoint kMaterialUnit{"SURFACE_MATERIAL_UNIT", BindingKind::TextureUnit, 2};
 constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit, 3};
+constexpr BindingPoint kSpecularUnit{"SURFACE_SPECULAR_UNIT", BindingKind::TextureUnit, 6};
 // The lighting pass's radiance target, and its running sum over light chunks (LightingPass::render).
 constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 0};
 constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};

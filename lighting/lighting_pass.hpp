@@ -32,6 +32,9 @@ struct SurfaceTextures {
   const Texture& normal;
   const Texture& material;
   const Texture& depth;
+  // The dielectric's F0 / 0.04 and F90 (KHR_materials_ior, _specular), where the G-buffer's layout has them: the
+  // PBR lighting pass then shades with them (MATERIAL_SPECULAR).
+  const Texture* specular = nullptr;
 };
 
 // std430 mirror of the header of `LayerLists` in shaders/lighting/layer_lists.glsl; a head per pixel (4 bytes) and
@@ -83,6 +86,9 @@ struct LightingOptions {
   const Texture* shadowLight = nullptr;
   // The G-buffer holds unlit surfaces (hasUnlitSurface): pixels it flags so take no light.
   bool unlitSurfaces = false;
+  // PBR only: the surfaces shaded have their own dielectric F0 and F90 (KHR_materials_ior, _specular), from the
+  // G-buffer's specular channel (SurfaceTextures::specular) or the BLEND materials' blocks.
+  bool specularMaterials = false;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops

@@ -30,8 +30,9 @@ dvec3 blinnPhongLight(const PointLight& light, const dvec3& P, const dvec3& N, c
   const double alpha = alphaFromRoughness(m.roughness);
   const double shininess = 2.0 / (alpha * alpha) - 2.0;
   const double NoH = std::max(glm::dot(N, glm::normalize(V + in.L)), 0.0);
-  return (diffuseColor(m) * in.NoL + specularF0(m) * lobeValue(NoH, shininess, lobe)) * dvec3(light.color) *
-         in.attenuation;
+  // The core material's F0: the specular extensions are terms of the PBR model, which Blinn-Phong frames ignore.
+  const dvec3 f0 = (1.0 - m.metalness) * dvec3(0.04) + m.metalness * m.baseColor;
+  return (diffuseColor(m) * in.NoL + f0 * lobeValue(NoH, shininess, lobe)) * dvec3(light.color) * in.attenuation;
 }
 
 }  // namespace pbr::reference

@@ -29,7 +29,16 @@ double alphaFromRoughness(double roughness) {
   return r * r;
 }
 
-dvec3 specularF0(const ReferenceMaterial& m) { return (1.0 - m.metalness) * dvec3(0.04) + m.metalness * m.baseColor; }
+// KHR_materials_ior: F0 = ((ior - 1) / (ior + 1))^2, written as a quotient of squares so that ior 1.5 gives
+// 0.25 / 6.25, the double nearest 0.04; KHR_materials_specular: times the colour, clamped to 1, times the strength.
+dvec3 dielectricF0(const ReferenceMaterial& m) {
+  const double f0 = (m.ior - 1.0) * (m.ior - 1.0) / ((m.ior + 1.0) * (m.ior + 1.0));
+  return glm::min(f0 * m.specularColor, dvec3(1.0)) * m.specular;
+}
+
+dvec3 specularF0(const ReferenceMaterial& m) {
+  return (1.0 - m.metalness) * dielectricF0(m) + m.metalness * m.baseColor;
+}
 
 // Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 72: GGX's Lambda(theta) =
 // (sqrt(1 + alpha^2 tan^2 theta) - 1) / 2 and G1 = 1 / (1 + Lambda).
@@ -89,19 +98,43 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
   const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
   const double alpha = alphaFromRoughness(m.roughness);
-  const dvec3 f0 = specularF0(m);
-  auto fresnel = [&](double c) {
-    switch (forms.fresnel) {
-      case Fresnel::Schlick:
-        return dvec3(fresnelSchlick(c, f0.x), fresnelSchlick(c, f0.y), fresnelSchlick(c, f0.z));
-      case Fresnel::SchlickSG:
-        return dvec3(fresnelSchlickSG(c, f0.x), fresnelSchlickSG(c, f0.y), fresnelSchlickSG(c, f0.z));
-      case Fresnel::Exact: break;
+  // The dielectric and metal parts apart: KHR_materials_specular weights the diffuse lobe by the dielectric
+  // Fresnel's largest channel, and F90 is the dielectric's `specular` where a metal's is 1. Schlick's forms scale
+  // from F0 to F90 (F0 + (F90 - F0) s(c) = F90 (F0 / F90 + (1 - F0 / F90) s(c))); the exact form takes each
+  // channel's index of refraction from F0 / F90 and scales by F90 the same way.
+  const dvec3 dielectric = dielectricF0(m);
+  auto fresnelParts = [&](double c, dvec3& dielectricPart, dvec3& metalPart) {
+    const auto schlick = [&](double f0, double f90) {
+      switch (forms.fresnel) {
+        case Fresnel::SchlickSG: return f90 > 0.0 ? f90 * fresnelSchlickSG(c, f0 / f90) : 0.0;
+        case Fresnel::Schlick:
+        case Fresnel::Exact: break;
+      }
+      return f90 > 0.0 ? f90 * fresnelSchlick(c, f0 / f90) : 0.0;
+    };
+    const auto exact = [&](double f0, double f90) {
+      return f90 > 0.0 ? f90 * fresnelDielectric(c, iorFromF0(f0 / f90)) : 0.0;
+    };
+    for (int i = 0; i < 3; ++i) {
+      dielectricPart[i] = forms.fresnel == Fresnel::Exact ? exact(dielectric[i], m.specular)
+                                                          : schlick(dielectric[i], m.specular);
+      // Metals take Schlick from their base colour, or its spherical-Gaussian fit with the SG variant.
+      metalPart[i] = forms.fresnel == Fresnel::SchlickSG ? fresnelSchlickSG(c, m.baseColor[i])
+                                                         : fresnelSchlick(c, m.baseColor[i]);
     }
-    // Metals: Schlick from their base colour; dielectrics: exact Fresnel; blended by metalness like F0 is.
-    const dvec3 metal(fresnelSchlick(c, m.baseColor.x), fresnelSchlick(c, m.baseColor.y),
-                      fresnelSchlick(c, m.baseColor.z));
-    return (1.0 - m.metalness) * dvec3(fresnelDielectric(c, iorFromF0(0.04))) + m.metalness * metal;
+  };
+  auto fresnel = [&](double c) {
+    dvec3 d, metal;
+    fresnelParts(c, d, metal);
+    return (1.0 - m.metalness) * d + m.metalness * metal;
+  };
+  // The share of light the specular lobe can take at most, as the diffuse lobe's weight sees it: glTF's fresnel_mix
+  // weights the base by 1 - max_value(F) of the dielectric (grey for the core material, where it changes nothing).
+  auto diffuseFresnel = [&](double c) {
+    dvec3 d, metal;
+    fresnelParts(c, d, metal);
+    const double largest = std::max({d.x, d.y, d.z});
+    return (1.0 - m.metalness) * dvec3(largest) + m.metalness * metal;
   };
   auto visibility = [&] {
     switch (forms.visibility) {
@@ -113,12 +146,12 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   };
   auto diffuseWeight = [&] {
     switch (forms.diffuse) {
-      case Diffuse::LambertOneMinusFVh: return dvec3(1.0) - fresnel(VoH);
+      case Diffuse::LambertOneMinusFVh: return dvec3(1.0) - diffuseFresnel(VoH);
       case Diffuse::Lambert: return dvec3(1.0);
       case Diffuse::LambertOneMinusF: break;
       case Diffuse::Burley: throw std::logic_error("the reference has no Burley diffuse (BrdfForms refuses it)");
     }
-    return dvec3(1.0) - fresnel(NoV);
+    return dvec3(1.0) - diffuseFresnel(NoV);
   };
   const dvec3 specular = ggxD(NoH, alpha) * visibility() * fresnel(VoH);
   const dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;

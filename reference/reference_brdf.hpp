@@ -17,13 +17,21 @@ struct ReferenceMaterial {
   dvec3 baseColor{0.8};
   double roughness = 0.5;  // perceptual; alpha = roughness^2 (clamped like the renderer, see kMinRoughness)
   double metalness = 0.0;
+  // KHR_materials_ior and KHR_materials_specular: the dielectric part's index of refraction, specular strength
+  // (specularFactor) and F0 colour (specularColorFactor); the defaults are the core glTF material's F0 0.04, F90 1.
+  double ior = 1.5;
+  double specular = 1.0;
+  dvec3 specularColor{1.0};
 };
 
 // The renderer clamps perceptual roughness to this; the reference does too, so both describe the same surface.
 constexpr double kMinRoughness = 0.045;
 // The renderer's alpha for a perceptual roughness: max(roughness, kMinRoughness)^2.
 double alphaFromRoughness(double roughness);
-// The normal-incidence reflectance mix(0.04, baseColor, metalness) that the Schlick forms start from.
+// The dielectric part's normal-incidence reflectance, min(((ior - 1) / (ior + 1))^2 specularColor, 1) specular
+// (KHR_materials_specular), 0.04 for the core material; its grazing reflectance is `specular`.
+dvec3 dielectricF0(const ReferenceMaterial& m);
+// The normal-incidence reflectance mix(dielectricF0, baseColor, metalness) that the Schlick forms start from.
 dvec3 specularF0(const ReferenceMaterial& m);
 
 // Which form of each term evaluateBrdf uses, in the renderer's vocabulary (ShadingVariant, core/shading_model.hpp:

@@ -87,9 +87,10 @@ std::string gigabytes(uint64_t bytes) {
 
 }  // namespace
 
-uint64_t frameBytesPerPixel(const RendererConfig& config) {
+uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout) {
   const uint64_t gbuffer =
-      config.gbuffer == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel;
+      (config.gbuffer == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel) +
+      uint64_t(layout.extraBytesPerPixel(config.gbuffer));
   const uint64_t ldr = 2 * 4;  // the display image, and its copy before anti-aliasing (made on first use)
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
@@ -98,9 +99,12 @@ uint64_t frameBytesPerPixel(const RendererConfig& config) {
   return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts + shadowLight;
 }
 
-std::vector<GLenum> frameFormats(const RendererConfig& config) {
+std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayout& layout) {
   const GBufferFormats g = gbufferFormats(config.gbuffer);
-  return {g.baseColor, g.normal, g.material, g.depth, glInternalFormat(config.hdrFormat), GL_RGBA8};
+  std::vector<GLenum> formats = {g.baseColor, g.normal, g.material, g.depth, glInternalFormat(config.hdrFormat),
+                                 GL_RGBA8};
+  if (layout.specular) formats.push_back(specularFormat(config.gbuffer));
+  return formats;
 }
 
 uint64_t availableMemoryBytes() {

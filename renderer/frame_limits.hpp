@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/gl.hpp"
+#include "gbuffer/gbuffer.hpp"
 
 namespace pbr {
 
@@ -16,15 +17,15 @@ struct FrameLimits {
   uint64_t availableBytes = 0;  // memory the process may still take (availableMemoryBytes)
 };
 
-// Bytes per pixel a Renderer holds for a frame: the G-buffer, HDR and LDR targets (the LDR twice, for the image
-// anti-aliasing reads), the running sums of chunked lighting, the efficiency channel's pair counts, and one capture
-// of each
-// (read-back buffer plus the image copied out of it). Textures are counted against host memory because the
-// software rasterizer keeps them there and a discrete GPU's driver shadows read-backs in it.
-uint64_t frameBytesPerPixel(const RendererConfig& config);
+// Bytes per pixel a Renderer holds for a frame: the G-buffer (with the channels of the scene's layout), HDR and LDR
+// targets (the LDR twice, for the image anti-aliasing reads), the running sums of chunked lighting, the efficiency
+// channel's pair counts, and one capture of each (read-back buffer plus the image copied out of it). Textures are
+// counted against host memory because the software rasterizer keeps them there and a discrete GPU's driver shadows
+// read-backs in it.
+uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout = {});
 
-// The internal formats of the frame's targets (G-buffer, depth, HDR, LDR), in allocation order.
-std::vector<GLenum> frameFormats(const RendererConfig& config);
+// The internal formats of the frame's targets (G-buffer, depth, HDR, LDR, then the layout's channels).
+std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayout& layout = {});
 
 // The smallest of /proc/meminfo's MemAvailable, the cgroup's memory.max less memory.current, and the address
 // space left under RLIMIT_AS: whichever stops an allocation first.

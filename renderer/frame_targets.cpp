@@ -8,19 +8,20 @@ namespace pbr {
 namespace {
 
 // Called while `width` is initialised, before any member allocates a target: an impossible size fails here.
-int checkedWidth(int width, int height, const RendererConfig& config) {
-  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config), queryFrameLimits());
-  checkFrameFormats(width, height, config.sizeOption, frameFormats(config));
+int checkedWidth(int width, int height, const RendererConfig& config, const GBufferLayout& layout) {
+  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config, layout), queryFrameLimits());
+  checkFrameFormats(width, height, config.sizeOption, frameFormats(config, layout));
   return width;
 }
 
 }  // namespace
 
-FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererConfig& config)
-    : width(checkedWidth(w, h, config)),
+FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererConfig& config,
+                           const GBufferLayout& layout)
+    : width(checkedWidth(w, h, config, layout)),
       height(h),
       hdr("frame.radiance", glInternalFormat(config.hdrFormat), w, h),
-      gbuffer(w, h, hdr, config.gbuffer),
+      gbuffer(w, h, hdr, config.gbuffer, layout),
       ldr("frame.display", GL_RGBA8, w, h),
       clusters(programs, config.clusters),
       blendTarget("frame.blendTarget") {

@@ -11,11 +11,12 @@ namespace pbr {
 
 // What lives as long as the frame size: the HDR radiance target, the G-buffer drawn around it, the final RGBA8
 // frame and the cluster grid with its light lists. A resize replaces this and nothing else; its programs come
-// from the scene's cache, compiled already.
+// from the scene's cache, compiled already. The G-buffer has the channels of the scene's `layout`.
 struct FrameTargets {
   // Throws std::runtime_error naming config.sizeOption when the frame is over the context's texture size, the
   // memory available or what the driver can create (renderer/frame_limits.hpp), before any target is allocated.
-  FrameTargets(ProgramCache& programs, int width, int height, const RendererConfig& config);
+  FrameTargets(ProgramCache& programs, int width, int height, const RendererConfig& config,
+               const GBufferLayout& layout);
 
   int width, height;
   Texture hdr;  // radiance: emission from the G-buffer pass, then reflected light from the lighting pass

@@ -13,12 +13,20 @@
 
 namespace pbr {
 
+namespace {
+
+SurfaceTextures surfaceTextures(const GBuffer& g) {
+  return {g.baseColor, g.normal, g.material, g.depth, g.specular ? &*g.specular : nullptr};
+}
+
+}  // namespace
+
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
                    const RendererConfig& config)
     : sceneData_(scene),
       config_(config),
       scene_(shaders, scene, config.precomputeProfiler),
-      targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config)),
+      targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config, scene_.geometry.layout())),
       camera_(scene.camera),
       frameData_(makeFrameBlock(camera_, width, height)),
       frame_("frame.block", frameData_),
@@ -97,7 +105,7 @@ BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {
 
 void Renderer::resize(int width, int height) {
   targets_.reset();  // free the old targets before allocating the new ones
-  targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_);
+  targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_, scene_.geometry.layout());
   ++targetBuilds_;
   setCamera(camera_);
 }
@@ -166,8 +174,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (!unlit) {
     passes.push_back({"lighting", lightingReads, lightingWrites, [this, &t, options, clustered, ibl, efficiency,
                                                                   shadows, shadowView] {
-                        const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
-                                                      t.gbuffer.depth};
+                        const SurfaceTextures surface = surfaceTextures(t.gbuffer);
                         const EnvironmentMaps maps = ibl ? scene_.ibl->maps() : EnvironmentMaps{};
                         const ShadowMaps shadowMaps = scene_.shadows.maps();
                         const LightingOptions lighting{options.model,
@@ -179,7 +186,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        shadows ? &shadowMaps : nullptr,
                                                        options.shadows.filter,
                                                        shadowView ? &t.shadowLight() : nullptr,
-                                                       scene_.geometry.hasUnlit()};
+                                                       scene_.geometry.hasUnlit(),
+                                                       t.gbuffer.layout.specular};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         markCulling(CullingChoice::LightingBegin);
@@ -201,6 +209,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.environment = ibl ? &maps : nullptr;
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
+                        lighting.specularMaterials = hasSpecularMaterial(sceneData_, true);
                         OitTargets oit;
                         GLuint target = t.blendTarget.id();
                         if (options.transparency == Transparency::Oit) {
@@ -275,8 +284,7 @@ FramePass Renderer::debugPass(DebugChannel channel) {
             switch (source) {
               case DebugSource::Surface:
               case DebugSource::Emission: {
-                const SurfaceTextures surface{t.gbuffer.baseColor, t.gbuffer.normal, t.gbuffer.material,
-                                              t.gbuffer.depth};
+                const SurfaceTextures surface = surfaceTextures(t.gbuffer);
                 scene_.gbufferDebug.render(channel, surface, frame_, scene_.debugLegend, t.ldr);
                 break;
               }

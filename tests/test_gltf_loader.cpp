@@ -1023,3 +1023,56 @@ TEST_CASE("gltf errors: a material value of the wrong form is refused by name, n
           }) == path + ": " + message);
   }
 }
+
+TEST_CASE("gltf materials: KHR_materials_ior and KHR_materials_specular's factors, their textures warned of") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int material = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_ior", {{"ior", 1.33}}},
+         {"KHR_materials_specular",
+          {{"specularFactor", 0.5}, {"specularColorFactor", {2.0, 1.0, 0.5}}, {"specularTexture", {{"index", 0}}}}}}}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular"};
+  QuadSpec withMaterial;
+  withMaterial.material = material;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, withMaterial)}});
+  pbr::Scene scene;
+  const pbr::test::CapturedStderr warnings;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "specular"));
+  REQUIRE(scene.objects.size() == 1);
+  const pbr::Material& m = scene.objects[0].material;
+  CHECK(m.ior == 1.33f);
+  CHECK(m.specular == 0.5f);
+  CHECK(m.specularColor == glm::vec3(2.0f, 1.0f, 0.5f));
+  CHECK(warnings.text().find("materials[0].extensions.KHR_materials_specular.specularTexture: not drawn") !=
+        std::string::npos);
+  CHECK(warnings.text().find("not implemented") == std::string::npos);  // both extensions are read
+}
+
+TEST_CASE("gltf materials: an index of refraction between 0 and 1 is refused, naming the field") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int material = builder.addMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
+  QuadSpec withMaterial;
+  withMaterial.material = material;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, withMaterial)}});
+  pbr::Scene scene;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(scene, builder.writeGltf(dir.path(), "ior")),
+                       doctest::Contains("materials[0].extensions.KHR_materials_ior.ior: must be 0 or at least 1"),
+                       pbr::SceneError);
+}
+
+TEST_CASE("materials: ior 1.5, specular 1 and a white specular colour are the core material's F0 0.04 and F90 1") {
+  const pbr::Material core;
+  // Exactly: 0.25 / 6.25 is the float nearest 0.04, as the core material's constant is.
+  CHECK(pbr::dielectricSpecular(core) == glm::vec4(0.04f, 0.04f, 0.04f, 1.0f));
+  CHECK_FALSE(pbr::hasDielectricSpecular(core));
+  pbr::Material m;
+  m.ior = 0.0f;  // the specular-glossiness conversion's: F0 1
+  CHECK(pbr::dielectricSpecular(m) == glm::vec4(1.0f));
+  m.ior = 1.5f;
+  m.specular = 0.5f;
+  m.specularColor = {100.0f, 1.0f, 0.0f};  // clamped to 1 before the strength scales it
+  CHECK(pbr::dielectricSpecular(m) == glm::vec4(0.5f, 0.02f, 0.0f, 0.5f));
+  CHECK(pbr::hasDielectricSpecular(m));
+}

@@ -219,3 +219,41 @@ TEST_CASE("reference: its forms are the renderer's vocabulary, its defaults the 
                        std::invalid_argument);
   CHECK_THROWS_AS(parseBrdfForms("lobe=sg"), std::invalid_argument);
 }
+
+TEST_CASE("reference: KHR_materials_ior and _specular, from the specifications' formulas") {
+  using namespace pbr::reference;
+  const ReferenceMaterial core;
+  // ior 1.5 is the core material's F0, exactly.
+  CHECK(dielectricF0(core) == dvec3(0.04));
+  ReferenceMaterial m;
+  m.baseColor = dvec3(0.5);
+  m.roughness = 0.4;
+  const dvec3 N(0, 0, 1), V = glm::normalize(dvec3(0.3, 0, 1)), L = glm::normalize(dvec3(-0.5, 0.2, 1));
+  // specular 0: no specular lobe, and the diffuse lobe is Lambert's, nothing taken by Fresnel.
+  m.specular = 0.0;
+  for (const Fresnel f : {Fresnel::Exact, Fresnel::Schlick, Fresnel::SchlickSG}) {
+    BrdfForms forms;
+    forms.fresnel = f;
+    const BrdfLobes lobes = evaluateBrdf(N, V, L, m, forms);
+    CHECK(lobes.specular == dvec3(0.0));
+    CHECK(lobes.diffuse.x == doctest::Approx(0.5 / kPi).epsilon(1e-15));
+  }
+  // At normal incidence Schlick's and the exact Fresnel term give F0 = ((ior - 1) / (ior + 1))^2 colour strength:
+  // the specular lobe over D V is F(1) when H = N = V = L.
+  m.specular = 0.5;
+  m.ior = 2.0;
+  m.specularColor = dvec3(2.0, 1.0, 0.25);
+  const double f0 = 1.0 / 9.0;
+  const dvec3 expected = glm::min(f0 * m.specularColor, dvec3(1.0)) * 0.5;
+  for (const Fresnel f : {Fresnel::Exact, Fresnel::Schlick}) {
+    BrdfForms forms;
+    forms.fresnel = f;
+    const BrdfLobes lobes = evaluateBrdf(N, N, N, m, forms);
+    const double alpha = alphaFromRoughness(m.roughness);
+    const double dv = ggxD(1.0, alpha) * smithVisibilityExact(1.0, 1.0, alpha);
+    for (int i = 0; i < 3; ++i) CHECK(lobes.specular[i] / dv == doctest::Approx(expected[i]).epsilon(1e-12));
+    // glTF's fresnel_mix: the base weighted by 1 - max_value(F).
+    const double largest = std::max({expected.x, expected.y, expected.z});
+    CHECK(lobes.diffuse.x == doctest::Approx((1.0 - largest) * 0.5 / kPi).epsilon(1e-12));
+  }
+}

@@ -7,6 +7,9 @@ layout(location = 0) out vec4 outBaseColor;  // SRGB8_ALPHA8: encoded on write
 layout(location = 1) out vec2 outNormal;     // RG16 octahedral
 layout(location = 2) out vec4 outMaterial;   // RGBA8 roughness, metalness, occlusion, 1 unlit
 layout(location = 3) out vec4 outEmission;   // the frame's RGBA16F radiance target, which lighting adds to
+#if MATERIAL_SPECULAR
+layout(location = 4) out vec4 outSpecular;   // RGBA16F dielectric F0 / 0.04 (1 exactly for the core material), F90
+#endif
 
 void main() {
   MaterialSample m = sampleMaterial();
@@ -15,6 +18,9 @@ void main() {
   if (m.base.a < object.emissive.w) discard;
 #endif
   outBaseColor = vec4(m.base.rgb, 1.0);
+#if MATERIAL_SPECULAR
+  outSpecular = vec4(m.dielectric.rgb / 0.04, m.dielectric.a);
+#endif
   outNormal = octEncode(m.normal);
 #if UNLIT
   // KHR_materials_unlit: the base colour is the radiance, written where emission goes; the flag keeps the

@@ -49,6 +49,7 @@ struct MaterialSample {
   float metalness;
   float occlusion;  // of ambient light
   vec3 emitted;     // radiance
+  vec4 dielectric;  // F0 colour and F90 of the dielectric part (KHR_materials_ior, KHR_materials_specular)
 };
 
 MaterialSample sampleMaterial() {
@@ -93,5 +94,6 @@ MaterialSample sampleMaterial() {
 #if EMISSIVE_MAP
   m.emitted *= texture(emissiveMap, mapUv(EMISSIVE_MAP_UNIT)).rgb;
 #endif
+  m.dielectric = object.dielectric;
   return m;
 }

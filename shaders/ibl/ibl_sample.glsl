@@ -52,13 +52,28 @@ vec3 iblEnergyCompensation(vec3 F0, vec2 dfg) { return 1.0 + F0 * (1.0 / (dfg.x 
 // Occlusion scales both terms, as it does the renderer's ambient term.
 vec3 shadeIbl(vec3 N, vec3 V, vec3 baseColor, float roughness, float metalness, float occlusion) {
   float NoV = max(dot(N, V), 1e-4);
-  vec3 F0 = f0FromMaterial(baseColor, metalness);
   vec2 dfg = iblDfg(NoV, roughness);
+#if MATERIAL_SPECULAR
+  // KHR_materials_ior / _specular: F0 A + F90 B; the diffuse is weighted by the albedo of the dielectric's largest
+  // channel, as glTF's fresnel_mix weights it by max_value(F).
+  vec3 F0 = mix(gDielectric.rgb, baseColor, metalness);
+  float F90 = gDielectric.a + (1.0 - gDielectric.a) * metalness;
+  float largest = max(gDielectric.r, max(gDielectric.g, gDielectric.b));
+  vec3 specularAlbedo = F0 * dfg.x + F90 * dfg.y;
+  vec3 weightAlbedo = mix(vec3(largest), baseColor, metalness) * dfg.x + F90 * dfg.y;
+#if IBL_MULTIPLE_SCATTERING
+  specularAlbedo *= iblEnergyCompensation(F0, dfg);
+  weightAlbedo *= iblEnergyCompensation(mix(vec3(largest), baseColor, metalness), dfg);
+#endif
+#else
+  vec3 F0 = f0FromMaterial(baseColor, metalness);
   vec3 specularAlbedo = F0 * dfg.x + dfg.y;
 #if IBL_MULTIPLE_SCATTERING
   specularAlbedo *= iblEnergyCompensation(F0, dfg);
 #endif
+  vec3 weightAlbedo = specularAlbedo;
+#endif
   vec3 specular = specularAlbedo * iblSpecular(reflect(-V, N), roughness);
-  vec3 diffuse = (1.0 - specularAlbedo) * (1.0 - metalness) * baseColor * iblDiffuse(N);
+  vec3 diffuse = (1.0 - weightAlbedo) * (1.0 - metalness) * baseColor * iblDiffuse(N);
   return (diffuse + specular) * occlusion;
 }

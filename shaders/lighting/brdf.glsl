@@ -110,6 +110,42 @@ float distribution(float NoH, float sin2, float a) {
 #endif
 }
 
+// KHR_materials_ior and KHR_materials_specular: a scene whose materials set them shades with each surface's
+// dielectric F0 colour and F90 (`dielectric`: rgb, a; glTF's fresnel_mix scales F0 to F90 where the core material's
+// is 1). The core material's are 0.04 and 1, for which the forms below compute exactly what the core forms do.
+// The lighting pass sets MATERIAL_SPECULAR (LightingOptions::specularMaterials); the other shaders leave it 0.
+
+#if MATERIAL_SPECULAR
+// The surface being shaded: set before its BRDF is evaluated (model_pbr.glsl's beginShading).
+vec4 gDielectric = vec4(vec3(0.04), 1.0);
+
+vec3 fresnel(vec3 baseColor, float metalness, vec4 dielectric, float c) {
+#if defined(FRESNEL_EXACT)
+  // Each channel's index of refraction from F0 / F90, the exact term scaled to F90.
+  vec3 metal = baseColor + (1.0 - baseColor) * pow5(1.0 - c);
+  vec3 f0 = dielectric.rgb / max(dielectric.a, 1e-6);
+  vec3 exact =
+      vec3(F_Dielectric(c, iorFromF0(f0.r)), F_Dielectric(c, iorFromF0(f0.g)), F_Dielectric(c, iorFromF0(f0.b)));
+  return mix(dielectric.a * exact, metal, metalness);
+#else
+  vec3 F0 = mix(dielectric.rgb, baseColor, metalness);
+  float F90 = dielectric.a + (1.0 - dielectric.a) * metalness;  // 1 exactly for the core material
+#if defined(FRESNEL_SCHLICK_SG)
+  return F0 + (F90 - F0) * exp2((-5.55473 * c - 6.98316) * c);
+#else
+  return F0 + (F90 - F0) * pow5(1.0 - c);
+#endif
+#endif
+}
+
+// The Fresnel term the diffuse lobe's weight takes: glTF's fresnel_mix weights the base by 1 - max_value(F) of the
+// dielectric, which every form here reaches at the largest channel of F0.
+vec3 diffuseFresnel(vec3 baseColor, float metalness, vec4 dielectric, float c) {
+  float largest = max(dielectric.r, max(dielectric.g, dielectric.b));
+  return fresnel(baseColor, metalness, vec4(vec3(largest), dielectric.a), c);
+}
+#endif
+
 // Metals take Schlick from their base colour; the dielectric part Schlick or the exact term with eta from 0.04,
 // blended by metalness as F0 is. The spherical-Gaussian form replaces Schlick's power for the whole F0.
 vec3 fresnel(vec3 baseColor, float metalness, float c) {
@@ -128,7 +164,11 @@ vec3 fresnel(vec3 baseColor, float metalness, float c) {
 // sample viewer does, gives a white dielectric a directional albedo up to 1.84 at grazing views (roughness 0.05,
 // n.v 0.01; measured in tests/test_reference_brdf.cpp).
 vec3 diffuseLobe(vec3 baseColor, float metalness, float roughness, float NoV, float NoL, float VoH) {
-#if defined(DIFFUSE_LAMBERT_1_F_VH)
+#if MATERIAL_SPECULAR && defined(DIFFUSE_LAMBERT_1_F_VH)
+  vec3 weight = 1.0 - diffuseFresnel(baseColor, metalness, gDielectric, VoH);
+#elif MATERIAL_SPECULAR && defined(DIFFUSE_LAMBERT_1_F)
+  vec3 weight = 1.0 - diffuseFresnel(baseColor, metalness, gDielectric, NoV);
+#elif defined(DIFFUSE_LAMBERT_1_F_VH)
   vec3 weight = 1.0 - fresnel(baseColor, metalness, VoH);
 #elif defined(DIFFUSE_LAMBERT)
   vec3 weight = vec3(1.0);
@@ -172,8 +212,12 @@ vec3 brdfCookTorrance(BrdfSurface b, vec3 L) {
   float NoL = max(dot(b.N, L), 0.0);
   float NoH = clamp(dot(b.N, H), 0.0, 1.0);
   float VoH = clamp(dot(b.V, H), 0.0, 1.0);
-  vec3 specular = distribution(NoH, dot(NxH, NxH), b.a) * visibility(b.NoV, NoL, b.a) *
-                  fresnel(b.baseColor, b.metalness, VoH);
+#if MATERIAL_SPECULAR
+  vec3 F = fresnel(b.baseColor, b.metalness, gDielectric, VoH);
+#else
+  vec3 F = fresnel(b.baseColor, b.metalness, VoH);
+#endif
+  vec3 specular = distribution(NoH, dot(NxH, NxH), b.a) * visibility(b.NoV, NoL, b.a) * F;
 #if defined(DIFFUSE_LAMBERT_1_F) || defined(DIFFUSE_LAMBERT)
   return b.diffuse + specular;
 #else

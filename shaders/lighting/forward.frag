@@ -35,6 +35,9 @@ void main() {
   s.roughness = m.roughness;
   s.metalness = m.metalness;
   s.occlusion = m.occlusion;
+#if MATERIAL_SPECULAR
+  s.dielectric = m.dielectric;
+#endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
 #if LIGHT_CHUNKS

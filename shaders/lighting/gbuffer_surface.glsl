@@ -7,6 +7,9 @@ layout(binding = SURFACE_NORMAL_UNIT) uniform sampler2D gNormal;         // RG16
 layout(binding = SURFACE_MATERIAL_UNIT) uniform sampler2D gMaterial;     // RGBA8 roughness, metalness, occlusion,
                                                                          // 1 unlit
 layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;           // 32F reversed-Z
+#if MATERIAL_SPECULAR
+layout(binding = SURFACE_SPECULAR_UNIT) uniform sampler2D gSpecular;     // RGBA16F dielectric F0 / 0.04, F90
+#endif
 
 // False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
 bool readSurface(ivec2 p, out Surface s) {
@@ -20,6 +23,10 @@ bool readSurface(ivec2 p, out Surface s) {
   s.occlusion = m.z;
 #if UNLIT_MATERIALS
   s.unlit = m.w > 0.5;
+#endif
+#if MATERIAL_SPECULAR
+  vec4 specular = texelFetch(gSpecular, p, 0);
+  s.dielectric = vec4(0.04 * specular.rgb, specular.a);
 #endif
   return true;
 }

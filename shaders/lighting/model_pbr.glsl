@@ -11,8 +11,16 @@ vec3 shadeAmbient(Surface s) {
   vec2 size = vec2(textureSize(ambientAlbedo, 0));
   vec2 uv = (vec2(saturate(s.NoV), saturate(s.roughness)) * (size - 1.0) + 0.5) / size;
   vec4 t = textureLod(ambientAlbedo, uv, 0.0);
+#if MATERIAL_SPECULAR
+  // The dielectric's albedo moved from the core material's by the split F0 A + F90 B (exact for Schlick's form).
+  vec3 dielectric = t.z + (s.dielectric.rgb - 0.04) * t.x + (s.dielectric.a - 1.0) * t.y;
+  vec3 specular = (1.0 - s.metalness) * dielectric + s.metalness * (s.baseColor * t.x + t.y);
+#else
   vec3 specular = (1.0 - s.metalness) * t.z + s.metalness * (s.baseColor * t.x + t.y);
-#if defined(DIFFUSE_LAMBERT_1_F)
+#endif
+#if MATERIAL_SPECULAR && defined(DIFFUSE_LAMBERT_1_F)
+  vec3 weight = 1.0 - diffuseFresnel(s.baseColor, s.metalness, s.dielectric, s.NoV);
+#elif defined(DIFFUSE_LAMBERT_1_F)
   vec3 weight = 1.0 - fresnel(s.baseColor, s.metalness, s.NoV);  // constant over the hemisphere: exact
 #elif defined(DIFFUSE_LAMBERT)
   vec3 weight = vec3(1.0);
@@ -27,6 +35,9 @@ vec3 shadeAmbient(Surface s) {
 BrdfSurface gBrdf;
 
 void beginShading(Surface s) {
+#if MATERIAL_SPECULAR
+  gDielectric = s.dielectric;
+#endif
   gBrdf = brdfSurface(s.normal, s.V, s.NoV, s.baseColor, s.roughness, s.metalness);
 }
 

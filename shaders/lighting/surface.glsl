@@ -15,6 +15,9 @@ struct Surface {
 #if UNLIT_MATERIALS
   bool unlit;         // KHR_materials_unlit: its radiance is in the radiance target already, no light is added
 #endif
+#if MATERIAL_SPECULAR
+  vec4 dielectric;    // KHR_materials_ior / _specular: the dielectric's F0 colour (rgb) and F90 (a)
+#endif
 };
 
 // The point's place and view terms from its view-space position and unit normal.
