@@ -132,7 +132,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
     if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) file_.fail(where + ": too large");
   }
 
-  readSpecular(g, name, m);
+  if (!readSpecularGlossiness(g, name, m)) readSpecular(g, name, m);
 
   if (g.alphaMode == "MASK") {
     m.alphaMode = AlphaMode::Mask;
@@ -177,6 +177,94 @@ void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string&
   for (const char* map : {"specularTexture", "specularColorTexture"}) {
     if (s.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
   }
+}
+
+// KHR_materials_specular's specification converts a specular-glossiness material so: a dielectric of ior 0 (F0 1)
+// whose specular colour is the specular factor, F90 1, the diffuse factor and texture as base colour, metalness 0
+// and roughness 1 - glossiness; the glossiness in the specular-glossiness map's alpha becomes a roughness map here.
+// The map's specular colour is not drawn (the factor alone is), which is said.
+bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m) {
+  const auto found = g.extensions.find("KHR_materials_pbrSpecularGlossiness");
+  if (found == g.extensions.end()) return false;
+  const tinygltf::Value& v = found->second;
+  const std::string where = name + ".extensions.KHR_materials_pbrSpecularGlossiness";
+  const auto number = [&](const tinygltf::Value& x, const std::string& field) {
+    if (!x.IsNumber()) file_.fail(field + ": must be a number");
+    return unitFactor(file_, x.GetNumberAsDouble(), field);
+  };
+  const auto factors = [&](const char* key, std::vector<double> fallback) {
+    if (!v.Has(key)) return fallback;
+    const tinygltf::Value& a = v.Get(key);
+    if (!a.IsArray() || a.ArrayLen() != fallback.size()) {
+      file_.fail(where + "." + key + ": must have " + std::to_string(fallback.size()) + " components");
+    }
+    for (size_t i = 0; i < fallback.size(); ++i) fallback[i] = number(a.Get(int(i)), where + "." + key);
+    return fallback;
+  };
+  const std::vector<double> diffuse = factors("diffuseFactor", {1.0, 1.0, 1.0, 1.0});
+  const std::vector<double> specular = factors("specularFactor", {1.0, 1.0, 1.0});
+  const float glossiness = v.Has("glossinessFactor") ? number(v.Get("glossinessFactor"), where + ".glossinessFactor")
+                                                     : 1.0f;
+  m.baseColor = glm::vec3(float(diffuse[0]), float(diffuse[1]), float(diffuse[2]));
+  m.alpha = float(diffuse[3]);
+  m.metalness = 0.0f;
+  m.metallicRoughnessTexture = -1;
+  m.roughness = 1.0f - glossiness;
+  m.ior = 0.0f;
+  m.specular = 1.0f;
+  m.specularColor = glm::vec3(float(specular[0]), float(specular[1]), float(specular[2]));
+  // A textureInfo as the core material's maps read one: its index, texCoord and KHR_texture_transform.
+  const auto textureInfo = [&](const char* key, bool srgb, glm::mat3x2& uv, int& set) {
+    if (!v.Has(key)) return -1;
+    const std::string field = where + "." + key;
+    const tinygltf::Value& info = v.Get(key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
+      file_.fail(field + ": must be a textureInfo with an index");
+    }
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform")) {
+      extensions["KHR_texture_transform"] = info.Get("extensions").Get("KHR_texture_transform");
+    }
+    const UvTransform t = textureTransform(file_, extensions, field);
+    set = t.texCoord.value_or(info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0);
+    if (set > 1) {
+      file_.warn(field + ": texCoord " + std::to_string(set) + " is not drawn (TEXCOORD_0 and TEXCOORD_1 are), "
+                 "TEXCOORD_0 is used");
+      set = 0;
+    }
+    uv = t.matrix;
+    return texture(info.Get("index").GetNumberAsInt(), srgb, field);
+  };
+  m.baseColorTexture = textureInfo("diffuseTexture", true, m.baseColorUvTransform, m.baseColorTexCoord);
+  const auto cachedBefore = loaded_.textures;
+  const int glossMap = textureInfo("specularGlossinessTexture", false, m.metallicRoughnessUvTransform,
+                                   m.metallicRoughnessTexCoord);
+  if (glossMap >= 0) {
+    // Roughness 1 - glossinessFactor x alpha in the green channel, as a metallic-roughness map holds it; the
+    // factor is folded in, the material's roughness factor becomes 1 and its metalness stays 0. A map decoded for
+    // this material alone is rewritten in place (and forgotten by the cache), so that no unused copy is uploaded.
+    const bool decodedHere = loaded_.textures.size() != cachedBefore.size();
+    TextureData roughness = scene_.textures[size_t(glossMap)];
+    roughness.name += " (roughness from glossiness)";
+    for (size_t i = 0; i < roughness.rgba.size(); i += 4) {
+      const float gloss = glossiness * float(roughness.rgba[i + 3]) / 255.0f;
+      roughness.rgba[i + 0] = 0;
+      roughness.rgba[i + 1] = uint8_t(std::lround((1.0f - gloss) * 255.0f));
+      roughness.rgba[i + 2] = 0;
+      roughness.rgba[i + 3] = 255;
+    }
+    if (decodedHere) {
+      loaded_.textures = cachedBefore;
+      scene_.textures[size_t(glossMap)] = std::move(roughness);
+      m.metallicRoughnessTexture = glossMap;
+    } else {
+      scene_.textures.push_back(std::move(roughness));
+      m.metallicRoughnessTexture = int(scene_.textures.size()) - 1;
+    }
+    m.roughness = 1.0f;
+    file_.warn(where + ".specularGlossinessTexture: its specular colour is not drawn, the specularFactor alone is");
+  }
+  return true;
 }
 
 int GltfMaterials::texture(int index, bool srgb, const std::string& field) {

@@ -49,7 +49,7 @@ const std::map<std::string, Expected> kExports = {
      {{"bufferViews[0].byteStride: 0 read as tightly packed", "accessors[4].count: 0 read as an empty accessor"},
       "",
       true}},
-    {"jl-BrainStem", {{"extensionsUsed not implemented, ignored: KHR_materials_pbrSpecularGlossiness"}, "", true}},
+    {"jl-BrainStem", {{}, "", true}},  // KHR_materials_pbrSpecularGlossiness, converted
     {"jl-DamagedHelmet_gltfpack014", {{}, "", true}},
     {"playcanvas-glass-table_sketchfab",
      {{"extensionsUsed not implemented, ignored: KHR_materials_transmission"}, "", true}},

@@ -1076,3 +1076,52 @@ TEST_CASE("materials: ior 1.5, specular 1 and a white specular colour are the co
   CHECK(pbr::dielectricSpecular(m) == glm::vec4(0.5f, 0.02f, 0.0f, 0.5f));
   CHECK(pbr::hasDielectricSpecular(m));
 }
+
+TEST_CASE("gltf materials: KHR_materials_pbrSpecularGlossiness becomes metal-rough by KHR_materials_specular's rule") {
+  const TempDir dir;
+  GltfBuilder builder;
+  // A 2x1 specular-glossiness map: glossiness (alpha) 1 and 0.4; its colour is not drawn.
+  pbr::ImageRgba8 map;
+  map.width = 2;
+  map.height = 1;
+  map.pixels = {255, 0, 0, 255, 0, 255, 0, 102};
+  const int glossTexture = builder.addPngTexture(dir.path(), "gloss.png", map);
+  const int factorsOnly = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_pbrSpecularGlossiness",
+          {{"diffuseFactor", {0.5, 0.25, 0.125, 0.75}},
+           {"specularFactor", {0.2, 0.3, 0.4}},
+           {"glossinessFactor", 0.6}}}}}});
+  const int mapped = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_pbrSpecularGlossiness",
+          {{"glossinessFactor", 0.5}, {"specularGlossinessTexture", {{"index", glossTexture}}}}}}}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+  for (const int material : {factorsOnly, mapped}) {
+    QuadSpec quad;
+    quad.material = material;
+    builder.addRootNode({{"mesh", pbr::test::addQuad(builder, quad)}});
+  }
+  pbr::Scene scene;
+  const pbr::test::CapturedStderr warnings;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "specgloss"));
+  REQUIRE(scene.objects.size() == 2);
+  const pbr::Material& a = scene.objects[0].material;
+  CHECK(a.baseColor == glm::vec3(0.5f, 0.25f, 0.125f));
+  CHECK(a.alpha == 0.75f);
+  CHECK(a.metalness == 0.0f);
+  CHECK(a.roughness == doctest::Approx(0.4f));
+  // ior 0: F0 1 times the colour, so the dielectric's F0 is the specular factor itself.
+  CHECK(pbr::dielectricSpecular(a) == glm::vec4(0.2f, 0.3f, 0.4f, 1.0f));
+  const pbr::Material& b = scene.objects[1].material;
+  REQUIRE(b.metallicRoughnessTexture >= 0);
+  CHECK(b.roughness == 1.0f);
+  const pbr::TextureData& roughness = scene.textures[size_t(b.metallicRoughnessTexture)];
+  CHECK_FALSE(roughness.srgb);
+  // Green: 1 - 0.5 x alpha, the roughness a metallic-roughness map holds; blue (metalness) 0.
+  CHECK(int(roughness.rgba[1]) == 128);
+  CHECK(int(roughness.rgba[5]) == 204);
+  CHECK(int(roughness.rgba[2]) == 0);
+  CHECK(scene.textures.size() == 1);  // the map decoded for this material alone is rewritten, not copied
+  CHECK(warnings.text().find("specularGlossinessTexture: its specular colour is not drawn") != std::string::npos);
+}
