@@ -38,7 +38,8 @@ inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "K
                                                        "EXT_texture_webp", "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression", "KHR_materials_ior",
                                                        "KHR_materials_specular",
-                                                       "KHR_materials_pbrSpecularGlossiness"};
+                                                       "KHR_materials_pbrSpecularGlossiness",
+                                                       "KHR_materials_clearcoat"};
 
 // Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through
 // readInputFile. Before tinygltf sees the file, the GLB container is checked (readGlbChunks), the JSON's nesting

@@ -133,6 +133,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   }
 
   if (!readSpecularGlossiness(g, name, m)) readSpecular(g, name, m);
+  readClearcoat(g, name, m);
 
   if (g.alphaMode == "MASK") {
     m.alphaMode = AlphaMode::Mask;
@@ -176,6 +177,24 @@ void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string&
   }
   for (const char* map : {"specularTexture", "specularColorTexture"}) {
     if (s.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
+  }
+}
+
+void GltfMaterials::readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m) {
+  const auto found = g.extensions.find("KHR_materials_clearcoat");
+  if (found == g.extensions.end()) return;
+  const tinygltf::Value& v = found->second;
+  const std::string where = name + ".extensions.KHR_materials_clearcoat";
+  const auto factor = [&](const char* key) {
+    if (!v.Has(key)) return 0.0f;
+    const tinygltf::Value& x = v.Get(key);
+    if (!x.IsNumber()) file_.fail(where + "." + key + ": must be a number");
+    return unitFactor(file_, x.GetNumberAsDouble(), where + "." + key);
+  };
+  m.clearcoat = factor("clearcoatFactor");
+  m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
+  for (const char* map : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
+    if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are (a flat coat)");
   }
 }
 

@@ -22,6 +22,8 @@ class GltfMaterials {
   Material convert(int index, const std::string& field);
   // KHR_materials_ior and KHR_materials_specular's factors into `m`; their textures are warned of, not drawn.
   void readSpecular(const tinygltf::Material& g, const std::string& name, Material& m);
+  // KHR_materials_clearcoat's factors into `m`; its textures are warned of, not drawn.
+  void readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_pbrSpecularGlossiness into `m` by KHR_materials_specular's conversion; false without it.
   bool readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m);
   // Index into Scene::textures of glTF texture `index`.

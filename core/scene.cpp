@@ -212,6 +212,12 @@ bool hasSpecularMaterial(const Scene& scene, bool blended) {
   });
 }
 
+bool hasClearcoatMaterial(const Scene& scene, bool blended) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
+    return (o.material.alphaMode == AlphaMode::Blend) == blended && o.material.clearcoat > 0.0f;
+  });
+}
+
 bool hasUnlitSurface(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
     return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;

@@ -78,6 +78,10 @@ struct Material {
   float ior = 1.5f;
   float specular = 1.0f;
   glm::vec3 specularColor{1.0f};
+  // KHR_materials_clearcoat: a GGX layer of F0 0.04 over everything else, of this strength (0: none) and
+  // perceptual roughness, on the interpolated normal (no normal map).
+  float clearcoat = 0.0f;
+  float clearcoatRoughness = 0.0f;
 };
 
 // The dielectric part's F0 colour (rgb) and F90 (a) of KHR_materials_specular: min(((ior - 1) / (ior + 1))^2
@@ -206,6 +210,8 @@ bool hasUnlitSurface(const Scene& scene);
 // _specular to other than the core material's: the G-buffer then holds each pixel's dielectric F0 and F90
 // (gbuffer/README.md), or the transparency pass shades with them.
 bool hasSpecularMaterial(const Scene& scene, bool blended);
+// The same for KHR_materials_clearcoat, set where the factor is above 0.
+bool hasClearcoatMaterial(const Scene& scene, bool blended);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
 bool readsTexCoord1(const Material& material);
 

@@ -155,6 +155,8 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   if (m.ior > 0.0f && m.ior < 1.0f) ior.fail("must be 0 or at least 1 (an index of refraction)");
   m.specular = f["specular"].number(R::closed(0.0, 1.0), m.specular);
   m.specularColor = f["specular_color"].vec3OrNumber(R::atLeast(0.0), m.specularColor);
+  m.clearcoat = f["clearcoat"].number(R::closed(0.0, 1.0), m.clearcoat);
+  m.clearcoatRoughness = f["clearcoat_roughness"].number(R::closed(0.0, 1.0), m.clearcoatRoughness);
   m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
   const JsonField mode = f["alpha_mode"];
   if (mode.present()) {

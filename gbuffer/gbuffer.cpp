@@ -1,6 +1,7 @@
 #include "gbuffer/gbuffer.hpp"
 
 #include <stdexcept>
+#include <vector>
 
 namespace pbr {
 
@@ -18,20 +19,25 @@ GBufferFormats gbufferFormats(GBufferPrecision p) {
 }
 
 int GBufferLayout::extraBytesPerPixel(GBufferPrecision p) const {
-  return specular ? (p == GBufferPrecision::Lean ? 8 : 16) : 0;
+  const int channel = p == GBufferPrecision::Lean ? 8 : 16;
+  return (specular ? channel : 0) + (clearcoat ? channel : 0);
 }
 
 std::string GBufferLayout::describe(GBufferPrecision p) const {
   const int bytes = (p == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel) +
                     extraBytesPerPixel(p);
-  return std::string(toString(p)) + (specular ? " + specular" : "") + ", " + std::to_string(bytes) +
-         " bytes per pixel (base colour, normal, material, depth" + (specular ? ", dielectric F0 and F90" : "") +
+  return std::string(toString(p)) + (specular ? " + specular" : "") + (clearcoat ? " + clearcoat" : "") + ", " +
+         std::to_string(bytes) + " bytes per pixel (base colour, normal, material, depth" +
+         (specular ? ", dielectric F0 and F90" : "") + (clearcoat ? ", clearcoat strength, roughness and normal" : "") +
          ")";
 }
 
-GBufferLayout gbufferLayout(const Scene& scene) { return {hasSpecularMaterial(scene, false)}; }
+GBufferLayout gbufferLayout(const Scene& scene) {
+  return {hasSpecularMaterial(scene, false), hasClearcoatMaterial(scene, false)};
+}
 
 GLenum specularFormat(GBufferPrecision p) { return p == GBufferPrecision::Lean ? GL_RGBA16F : GL_RGBA32F; }
+GLenum clearcoatFormat(GBufferPrecision p) { return p == GBufferPrecision::Lean ? GL_RGBA16 : GL_RGBA32F; }
 
 // Both layouts hold the same encodings (octahedral normal in [0,1]^2, linear values once fetched), so the shaders
 // are the same: only the storage formats differ.
@@ -56,13 +62,21 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p, GBuf
   framebuffer.attach(GL_COLOR_ATTACHMENT2, material);
   framebuffer.attach(GL_COLOR_ATTACHMENT3, radiance);
   framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+  // Each extension's channel keeps its attachment whether or not the other's exists (the G-buffer programs write
+  // fixed locations): a missing one is GL_NONE.
+  std::vector<GLenum> drawBuffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                     GL_COLOR_ATTACHMENT3};
+  if (layout.specular || layout.clearcoat) drawBuffers.push_back(layout.specular ? GL_COLOR_ATTACHMENT4 : GL_NONE);
+  if (layout.clearcoat) drawBuffers.push_back(GL_COLOR_ATTACHMENT5);
   if (layout.specular) {
     specular.emplace("gbuffer.specular", specularFormat(p), w, h);
     framebuffer.attach(GL_COLOR_ATTACHMENT4, *specular);
   }
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
-                                GL_COLOR_ATTACHMENT4};
-  glNamedFramebufferDrawBuffers(framebuffer.id(), layout.specular ? 5 : 4, drawBuffers);
+  if (layout.clearcoat) {
+    clearcoat.emplace("gbuffer.clearcoat", clearcoatFormat(p), w, h);
+    framebuffer.attach(GL_COLOR_ATTACHMENT5, *clearcoat);
+  }
+  glNamedFramebufferDrawBuffers(framebuffer.id(), GLsizei(drawBuffers.size()), drawBuffers.data());
   framebuffer.checkComplete();
 }
 

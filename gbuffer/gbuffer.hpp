@@ -23,16 +23,19 @@ GBufferFormats gbufferFormats(GBufferPrecision precision);
 // The channels a scene's materials need beyond the core metal-rough ones (gbuffer/README.md): chosen when the scene
 // loads, so that a scene whose materials use no extension keeps the 16-byte layout and its programs.
 struct GBufferLayout {
-  bool specular = false;  // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
+  bool specular = false;   // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
+  bool clearcoat = false;  // KHR_materials_clearcoat: its strength, roughness and normal (hasClearcoatMaterial)
   int extraBytesPerPixel(GBufferPrecision precision) const;
   // "base colour, normal, material, depth" and the extra channels, with bytes per pixel: "lean, 16 bytes per pixel
   // (base colour, normal, material, depth)", "lean + specular, 24 bytes per pixel (...)".
   std::string describe(GBufferPrecision precision) const;
-  bool operator==(const GBufferLayout& o) const { return specular == o.specular; }
+  bool operator==(const GBufferLayout& o) const { return specular == o.specular && clearcoat == o.clearcoat; }
 };
 GBufferLayout gbufferLayout(const Scene& scene);
-// The internal format of the specular channel (RGBA16F lean, RGBA32F float).
+// The internal formats of the specular channel (RGBA16F lean, RGBA32F float) and the clearcoat channel (RGBA16
+// lean, RGBA32F float).
 GLenum specularFormat(GBufferPrecision precision);
+GLenum clearcoatFormat(GBufferPrecision precision);
 
 // The G-buffer's attachments (layout and bytes per pixel in gbuffer/README.md). `radiance` is the frame's HDR
 // target, attached as colour attachment 3: the geometry pass writes emitted radiance there and the lighting pass
@@ -58,6 +61,9 @@ struct GBuffer {
   Texture depth;      // GL_DEPTH_COMPONENT32F, reversed Z
   // GL_RGBA16F dielectric F0 / 0.04 and F90 (float: GL_RGBA32F), colour attachment 4: with layout.specular only.
   std::optional<Texture> specular;
+  // GL_RGBA16 clearcoat strength, roughness and octahedral normal (float: GL_RGBA32F), colour attachment 5: with
+  // layout.clearcoat only.
+  std::optional<Texture> clearcoat;
   Framebuffer framebuffer;
 };
 

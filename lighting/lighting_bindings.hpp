@@ -35,6 +35,7 @@ constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUn
 constexpr BindingPoint kMaterialUnit{"SURFACE_MATERIAL_UNIT", BindingKind::TextureUnit, 2};
 constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit, 3};
 constexpr BindingPoint kSpecularUnit{"SURFACE_SPECULAR_UNIT", BindingKind::TextureUnit, 6};
+constexpr BindingPoint kClearcoatUnit{"SURFACE_CLEARCOAT_UNIT", BindingKind::TextureUnit, 7};
 // The lighting pass's radiance target, and its running sum over light chunks (LightingPass::render).
 constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 0};
 constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};

@@ -52,6 +52,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
   defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
   defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});
+  defines.push_back({"MATERIAL_CLEARCOAT", flag(o.clearcoatMaterials && !blinnPhong)});
   if (o.shadows) {
     defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
     defines = concat(defines, shadowViewDefines());
@@ -120,10 +121,11 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   glBindTextureUnit(lighting_binding::kNormalUnit.index, surface.normal.id());
   glBindTextureUnit(lighting_binding::kMaterialUnit.index, surface.material.id());
   glBindTextureUnit(lighting_binding::kDepthUnit.index, surface.depth.id());
-  if (options.specularMaterials && !surface.specular) {
-    throw std::logic_error("lighting pass: specular materials without the G-buffer's specular channel");
+  if ((options.specularMaterials && !surface.specular) || (options.clearcoatMaterials && !surface.clearcoat)) {
+    throw std::logic_error("lighting pass: material extensions without their G-buffer channels");
   }
   if (surface.specular) glBindTextureUnit(lighting_binding::kSpecularUnit.index, surface.specular->id());
+  if (surface.clearcoat) glBindTextureUnit(lighting_binding::kClearcoatUnit.index, surface.clearcoat->id());
   glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

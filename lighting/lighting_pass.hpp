@@ -35,6 +35,8 @@ struct SurfaceTextures {
   // The dielectric's F0 / 0.04 and F90 (KHR_materials_ior, _specular), where the G-buffer's layout has them: the
   // PBR lighting pass then shades with them (MATERIAL_SPECULAR).
   const Texture* specular = nullptr;
+  // The clearcoat's strength, roughness and normal (KHR_materials_clearcoat), likewise (MATERIAL_CLEARCOAT).
+  const Texture* clearcoat = nullptr;
 };
 
 // std430 mirror of the header of `LayerLists` in shaders/lighting/layer_lists.glsl; a head per pixel (4 bytes) and
@@ -89,6 +91,8 @@ struct LightingOptions {
   // PBR only: the surfaces shaded have their own dielectric F0 and F90 (KHR_materials_ior, _specular), from the
   // G-buffer's specular channel (SurfaceTextures::specular) or the BLEND materials' blocks.
   bool specularMaterials = false;
+  // PBR only: the surfaces shaded may have a clear coat (KHR_materials_clearcoat), likewise.
+  bool clearcoatMaterials = false;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops

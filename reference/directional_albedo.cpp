@@ -30,7 +30,10 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
   const double cv = std::clamp(NoV, 1e-4, 1.0);
   const dvec3 V(std::sqrt(1.0 - cv * cv), 0.0, cv);
   const double alpha = alphaFromRoughness(m.roughness);
+  // A clear coat's lobe (KHR_materials_clearcoat) is sampled by its own roughness, as the base's specular is.
+  const double coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
   dvec3 specular(0.0), diffuse(0.0);
+  double coat = 0.0;
   for (int i = 0; i < samples; ++i) {
     for (int j = 0; j < samples; ++j) {
       const double u = (i + 0.5) / samples, phi = 2.0 * kPi * (j + 0.5) / samples;
@@ -47,9 +50,18 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
       const double sinL = std::sqrt(u);
       const dvec3 Ld(sinL * std::cos(phi), sinL * std::sin(phi), std::sqrt(1.0 - u));
       diffuse += evaluateBrdf(N, V, Ld, m, forms).diffuse * kPi;
+      if (m.clearcoat > 0.0) {
+        const dvec3 Hc = sampleVisibleNormal(V, coatAlpha, u, (j + 0.5) / samples);
+        const double VoHc = glm::dot(V, Hc);
+        const dvec3 Lc = 2.0 * VoHc * Hc - V;
+        if (Lc.z > 0.0 && VoHc > 0.0) {
+          const double pdf = ggxD(Hc.z, coatAlpha) * smithG1(cv, coatAlpha) / (4.0 * cv);
+          coat += evaluateBrdf(N, V, Lc, m, forms).coat * (Lc.z / pdf);
+        }
+      }
     }
   }
-  return (specular + diffuse) / (double(samples) * samples);
+  return (specular + diffuse + dvec3(coat)) / (double(samples) * samples);
 }
 
 AlbedoTable::AlbedoTable(const ReferenceMaterial& m, const BrdfForms& forms, int bins, int samples) {

@@ -124,25 +124,25 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
     }
   };
   auto fresnel = [&](double c) {
-    dvec3 d, metal;
+    dvec3 d(0.0), metal(0.0);
     fresnelParts(c, d, metal);
     return (1.0 - m.metalness) * d + m.metalness * metal;
   };
   // The share of light the specular lobe can take at most, as the diffuse lobe's weight sees it: glTF's fresnel_mix
   // weights the base by 1 - max_value(F) of the dielectric (grey for the core material, where it changes nothing).
   auto diffuseFresnel = [&](double c) {
-    dvec3 d, metal;
+    dvec3 d(0.0), metal(0.0);
     fresnelParts(c, d, metal);
     const double largest = std::max({d.x, d.y, d.z});
     return (1.0 - m.metalness) * dvec3(largest) + m.metalness * metal;
   };
-  auto visibility = [&] {
+  auto visibility = [&](double a) {
     switch (forms.visibility) {
-      case Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, alpha);
-      case Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, alpha);
+      case Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, a);
+      case Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, a);
       case Visibility::HeightCorrelated: break;
     }
-    return smithVisibilityExact(NoV, NoL, alpha);
+    return smithVisibilityExact(NoV, NoL, a);
   };
   auto diffuseWeight = [&] {
     switch (forms.diffuse) {
@@ -153,9 +153,14 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
     }
     return dvec3(1.0) - diffuseFresnel(NoV);
   };
-  const dvec3 specular = ggxD(NoH, alpha) * visibility() * fresnel(VoH);
+  const dvec3 specular = ggxD(NoH, alpha) * visibility(alpha) * fresnel(VoH);
   const dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;
-  return {diffuse, specular};
+  if (m.clearcoat <= 0.0) return {diffuse, specular};
+  // KHR_materials_clearcoat: fresnel_coat(ior 1.5) with Schlick's term at the coat's n.v, the specification's
+  // implementation; the coat's lobe is the specular BRDF of its roughness without a Fresnel term.
+  const double coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
+  const double weight = m.clearcoat * fresnelSchlick(NoV, 0.04);
+  return {(1.0 - weight) * diffuse, (1.0 - weight) * specular, weight * ggxD(NoH, coatAlpha) * visibility(coatAlpha)};
 }
 
 // Karis 2013, "Real Shading in Unreal Engine 4": the window (1 - (d / R)^4)^2 brings 1 / d^2 to 0 at R.

@@ -22,6 +22,10 @@ struct ReferenceMaterial {
   double ior = 1.5;
   double specular = 1.0;
   dvec3 specularColor{1.0};
+  // KHR_materials_clearcoat: the coat's strength (0: none) and perceptual roughness; its normal is the surface's
+  // (the reference draws no normal map).
+  double clearcoat = 0.0;
+  double clearcoatRoughness = 0.0;
 };
 
 // The renderer clamps perceptual roughness to this; the reference does too, so both describe the same surface.
@@ -62,10 +66,13 @@ double iorFromF0(double f0);
 double fresnelSchlick(double c, double f0);
 double fresnelSchlickSG(double c, double f0);
 
+// The lobes at one pair of directions, each with its layer weights applied: a clear coat's `coat` lobe weighted by
+// clearcoat Fc, the others by 1 - clearcoat Fc (KHR_materials_clearcoat's fresnel_coat).
 struct BrdfLobes {
   dvec3 diffuse;
   dvec3 specular;
-  dvec3 sum() const { return diffuse + specular; }
+  double coat = 0.0;
+  dvec3 sum() const { return diffuse + specular + dvec3(coat); }
 };
 
 // f_d and f_s for unit vectors N, V, L (n.l > 0; n.v is clamped to 1e-4 like the renderer does).

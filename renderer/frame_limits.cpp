@@ -104,6 +104,7 @@ std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayo
   std::vector<GLenum> formats = {g.baseColor, g.normal, g.material, g.depth, glInternalFormat(config.hdrFormat),
                                  GL_RGBA8};
   if (layout.specular) formats.push_back(specularFormat(config.gbuffer));
+  if (layout.clearcoat) formats.push_back(clearcoatFormat(config.gbuffer));
   return formats;
 }
 

@@ -16,7 +16,8 @@ namespace pbr {
 namespace {
 
 SurfaceTextures surfaceTextures(const GBuffer& g) {
-  return {g.baseColor, g.normal, g.material, g.depth, g.specular ? &*g.specular : nullptr};
+  return {g.baseColor, g.normal, g.material, g.depth, g.specular ? &*g.specular : nullptr,
+          g.clearcoat ? &*g.clearcoat : nullptr};
 }
 
 }  // namespace
@@ -187,7 +188,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        options.shadows.filter,
                                                        shadowView ? &t.shadowLight() : nullptr,
                                                        scene_.geometry.hasUnlit(),
-                                                       t.gbuffer.layout.specular};
+                                                       t.gbuffer.layout.specular,
+                                                       t.gbuffer.layout.clearcoat};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         markCulling(CullingChoice::LightingBegin);
@@ -210,6 +212,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
                         lighting.specularMaterials = hasSpecularMaterial(sceneData_, true);
+                        lighting.clearcoatMaterials = hasClearcoatMaterial(sceneData_, true);
                         OitTargets oit;
                         GLuint target = t.blendTarget.id();
                         if (options.transparency == Transparency::Oit) {

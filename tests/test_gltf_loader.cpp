@@ -1125,3 +1125,27 @@ TEST_CASE("gltf materials: KHR_materials_pbrSpecularGlossiness becomes metal-rou
   CHECK(scene.textures.size() == 1);  // the map decoded for this material alone is rewritten, not copied
   CHECK(warnings.text().find("specularGlossinessTexture: its specular colour is not drawn") != std::string::npos);
 }
+
+TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warned of") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int material = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_clearcoat",
+          {{"clearcoatFactor", 0.75},
+           {"clearcoatRoughnessFactor", 0.25},
+           {"clearcoatNormalTexture", {{"index", 0}}}}}}}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_clearcoat"};
+  QuadSpec quad;
+  quad.material = material;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, quad)}});
+  pbr::Scene scene;
+  const pbr::test::CapturedStderr warnings;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "clearcoat"));
+  REQUIRE(scene.objects.size() == 1);
+  CHECK(scene.objects[0].material.clearcoat == 0.75f);
+  CHECK(scene.objects[0].material.clearcoatRoughness == 0.25f);
+  CHECK(warnings.text().find("KHR_materials_clearcoat.clearcoatNormalTexture: not drawn") != std::string::npos);
+  CHECK(pbr::hasClearcoatMaterial(scene, false));
+  CHECK_FALSE(pbr::hasClearcoatMaterial(scene, true));
+}

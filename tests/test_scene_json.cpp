@@ -397,11 +397,12 @@ TEST_CASE("scene file: a model that places no light gets the default rig, even w
   CHECK(sun.directionalLights.size() == 1);
 }
 
-TEST_CASE("scene file: ior, specular and specular_color reach the material, and an ior between 0 and 1 is refused") {
+TEST_CASE("scene file: ior, specular, specular_color and clearcoat reach the material, an ior in (0, 1) refused") {
   const TempDir dir;
   const pbr::Scene s = pbr::loadSceneFile(dir.write("specular.json", R"({
     "camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
-    "objects": [{"shape": "sphere", "material": {"ior": 1.33, "specular": 0.25, "specular_color": [2, 1, 0.5]}},
+    "objects": [{"shape": "sphere", "material": {"ior": 1.33, "specular": 0.25, "specular_color": [2, 1, 0.5],
+                                                 "clearcoat": 0.5, "clearcoat_roughness": 0.125}},
                 {"shape": "sphere", "material": {"ior": 0, "specular_color": 0.5}},
                 {"shape": "sphere"}]
   })"));
@@ -409,6 +410,8 @@ TEST_CASE("scene file: ior, specular and specular_color reach the material, and 
   CHECK(s.objects[0].material.ior == 1.33f);
   CHECK(s.objects[0].material.specular == 0.25f);
   checkVec(s.objects[0].material.specularColor, {2, 1, 0.5f});
+  CHECK(s.objects[0].material.clearcoat == 0.5f);
+  CHECK(s.objects[0].material.clearcoatRoughness == 0.125f);
   CHECK(s.objects[1].material.ior == 0.0f);
   checkVec(s.objects[1].material.specularColor, glm::vec3(0.5f));
   CHECK(s.objects[2].material.ior == 1.5f);

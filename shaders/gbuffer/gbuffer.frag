@@ -10,6 +10,9 @@ layout(location = 3) out vec4 outEmission;   // the frame's RGBA16F radiance tar
 #if MATERIAL_SPECULAR
 layout(location = 4) out vec4 outSpecular;   // RGBA16F dielectric F0 / 0.04 (1 exactly for the core material), F90
 #endif
+#if MATERIAL_CLEARCOAT
+layout(location = 5) out vec4 outClearcoat;  // RGBA16 clearcoat strength, roughness, octahedral normal
+#endif
 
 void main() {
   MaterialSample m = sampleMaterial();
@@ -20,6 +23,9 @@ void main() {
   outBaseColor = vec4(m.base.rgb, 1.0);
 #if MATERIAL_SPECULAR
   outSpecular = vec4(m.dielectric.rgb / 0.04, m.dielectric.a);
+#endif
+#if MATERIAL_CLEARCOAT
+  outClearcoat = vec4(m.clearcoat, m.clearcoatRoughness, octEncode(m.clearcoatNormal));
 #endif
   outNormal = octEncode(m.normal);
 #if UNLIT

@@ -50,6 +50,10 @@ struct MaterialSample {
   float occlusion;  // of ambient light
   vec3 emitted;     // radiance
   vec4 dielectric;  // F0 colour and F90 of the dielectric part (KHR_materials_ior, KHR_materials_specular)
+  // KHR_materials_clearcoat: strength, perceptual roughness and the coat's normal, the interpolated one (no map)
+  float clearcoat;
+  float clearcoatRoughness;
+  vec3 clearcoatNormal;
 };
 
 MaterialSample sampleMaterial() {
@@ -86,6 +90,7 @@ MaterialSample sampleMaterial() {
   // Only double-sided draws show back faces; seen from behind, the surface faces the other way.
   if (!gl_FrontFacing) n = -n;
   m.normal = n;
+  m.clearcoatNormal = gl_FrontFacing ? normalize(vNormal) : -normalize(vNormal);
   m.occlusion = 1.0;
 #if OCCLUSION_MAP
   m.occlusion = 1.0 + object.material.w * (texture(occlusionMap, mapUv(OCCLUSION_MAP_UNIT)).r - 1.0);
@@ -95,5 +100,7 @@ MaterialSample sampleMaterial() {
   m.emitted *= texture(emissiveMap, mapUv(EMISSIVE_MAP_UNIT)).rgb;
 #endif
   m.dielectric = object.dielectric;
+  m.clearcoat = object.layers.x;
+  m.clearcoatRoughness = object.layers.y;
   return m;
 }

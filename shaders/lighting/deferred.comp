@@ -62,10 +62,17 @@ void main() {
   const bool lit = true;
 #endif
   vec3 environment = lit ? shadeEnvironment(s) : vec3(0.0);
-#if LIGHT_CHUNKS
-  gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb + environment : imageLoad(partialRadiance, p).rgb;
+  // The G-buffer pass left the surface's emission in the radiance target; a clear coat darkens it (fresnel_coat).
+#if MATERIAL_CLEARCOAT
+  float emission = lit ? coatTransmission(s) : 1.0;
 #else
-  gColor = imageLoad(radiance, p).rgb + environment;
+  const float emission = 1.0;
+#endif
+#if LIGHT_CHUNKS
+  gColor = lightChunk.z != 0u ? imageLoad(radiance, p).rgb * emission + environment
+                              : imageLoad(partialRadiance, p).rgb;
+#else
+  gColor = imageLoad(radiance, p).rgb * emission + environment;
 #endif
   gContributing = 0u;
   uint count = lit ? lightsToVisit(s, uvec2(p)) : 0u;

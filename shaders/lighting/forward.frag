@@ -38,6 +38,11 @@ void main() {
 #if MATERIAL_SPECULAR
   s.dielectric = m.dielectric;
 #endif
+#if MATERIAL_CLEARCOAT
+  s.clearcoat = m.clearcoat;
+  s.clearcoatRoughness = m.clearcoatRoughness;
+  s.clearcoatNormal = m.clearcoatNormal;
+#endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
 #if LIGHT_CHUNKS
@@ -51,7 +56,11 @@ void main() {
   // KHR_materials_unlit: the base colour is the radiance, with no light added.
   gColor = first ? m.base.rgb : vec3(0.0);
 #else
+#if MATERIAL_CLEARCOAT
+  gColor = first ? m.emitted * coatTransmission(s) + shadeEnvironment(s) : vec3(0.0);
+#else
   gColor = first ? m.emitted + shadeEnvironment(s) : vec3(0.0);
+#endif
   visitLights(s, begin, end);
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.

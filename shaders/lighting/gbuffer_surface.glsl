@@ -10,6 +10,9 @@ layout(binding = SURFACE_DEPTH_UNIT) uniform sampler2D gDepth;           // 32F 
 #if MATERIAL_SPECULAR
 layout(binding = SURFACE_SPECULAR_UNIT) uniform sampler2D gSpecular;     // RGBA16F dielectric F0 / 0.04, F90
 #endif
+#if MATERIAL_CLEARCOAT
+layout(binding = SURFACE_CLEARCOAT_UNIT) uniform sampler2D gClearcoat;   // RGBA16 strength, roughness, oct normal
+#endif
 
 // False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
 bool readSurface(ivec2 p, out Surface s) {
@@ -27,6 +30,12 @@ bool readSurface(ivec2 p, out Surface s) {
 #if MATERIAL_SPECULAR
   vec4 specular = texelFetch(gSpecular, p, 0);
   s.dielectric = vec4(0.04 * specular.rgb, specular.a);
+#endif
+#if MATERIAL_CLEARCOAT
+  vec4 coat = texelFetch(gClearcoat, p, 0);
+  s.clearcoat = coat.x;
+  s.clearcoatRoughness = coat.y;
+  s.clearcoatNormal = octDecode(coat.zw);
 #endif
   return true;
 }

@@ -1,6 +1,26 @@
 // The PBR shading model: Cook-Torrance GGX, photometric point lights, HDR output.
 #include "brdf.glsl"
 
+#if MATERIAL_CLEARCOAT
+// KHR_materials_clearcoat's fresnel_coat: a GGX layer of F0 0.04 on the coat's normal, weighted by clearcoat Fc,
+// over everything else (the base's lobes, its ambient and environment light, its emission), weighted by
+// 1 - clearcoat Fc; Fc is Schlick's at the coat's n.v, as the specification's implementation takes it. The coat's
+// lobe is the variant's D and V with no Fresnel of its own.
+float gCoatNoV, gCoatWeight, gCoatA;
+
+float coatTransmission(Surface s) { return 1.0 - gCoatWeight; }
+
+// The coat's D V n.l for light from L (0 below its horizon).
+float coatLobe(Surface s, vec3 L) {
+  float NoL = dot(s.clearcoatNormal, L);
+  if (NoL <= 0.0) return 0.0;
+  vec3 H = normalize(s.V + L);
+  vec3 NxH = cross(s.clearcoatNormal, H);
+  float NoH = clamp(dot(s.clearcoatNormal, H), 0.0, 1.0);
+  return distribution(NoH, dot(NxH, NxH), gCoatA) * visibility(gCoatNoV, NoL, gCoatA) * NoL;
+}
+#endif
+
 #if !IBL
 // The variant's own directional albedo (lighting/ambient_albedo.comp): x, y the specular lobe for metals as
 // F0 A + B, z for the dielectric, w the diffuse weight's mean; texel centres on the range ends.
@@ -27,7 +47,15 @@ vec3 shadeAmbient(Surface s) {
 #else
   vec3 weight = vec3(t.w);  // a dielectric's: exact for metalness 0 and 1, interpolated between
 #endif
+#if MATERIAL_CLEARCOAT
+  // The coat's albedo is its lobe's with F 1: the metals' table at F0 1, A + B.
+  vec2 coatUv = (vec2(saturate(gCoatNoV), saturate(s.clearcoatRoughness)) * (size - 1.0) + 0.5) / size;
+  vec4 coat = textureLod(ambientAlbedo, coatUv, 0.0);
+  return lighting.ambient.rgb * ((1.0 - gCoatWeight) * (weight * (1.0 - s.metalness) * s.baseColor + specular) +
+                                 gCoatWeight * (coat.x + coat.y)) * s.occlusion;
+#else
   return lighting.ambient.rgb * (weight * (1.0 - s.metalness) * s.baseColor + specular) * s.occlusion;
+#endif
 }
 #endif
 
@@ -39,14 +67,28 @@ void beginShading(Surface s) {
   gDielectric = s.dielectric;
 #endif
   gBrdf = brdfSurface(s.normal, s.V, s.NoV, s.baseColor, s.roughness, s.metalness);
+#if MATERIAL_CLEARCOAT
+  gCoatNoV = max(dot(s.clearcoatNormal, s.V), 1e-4);
+  gCoatWeight = s.clearcoat * (0.04 + 0.96 * pow5(1.0 - gCoatNoV));
+  gCoatA = alphaFromRoughness(s.clearcoatRoughness);
+#endif
 }
 
 // Light of colour `color` arriving from unit direction L with `strength` lux on a surface facing it: f E n.l.
 vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
+#if MATERIAL_CLEARCOAT
+  // The coat may face a light the base turns from, and the other way round; without a coat, the core's sums.
+  if (strength <= 0.0) return vec3(0.0);
+  float NoL = dot(s.normal, L);
+  vec3 base = NoL > 0.0 ? brdfCookTorrance(gBrdf, L) * color * (strength * NoL) : vec3(0.0);
+  if (s.clearcoat <= 0.0) return base;
+  return (1.0 - gCoatWeight) * base + gCoatWeight * coatLobe(s, L) * color * strength;
+#else
   float NoL = dot(s.normal, L);
   if (NoL <= 0.0 || strength <= 0.0) return vec3(0.0);
   vec3 f = brdfCookTorrance(gBrdf, L);
   return f * color * (strength * NoL);
+#endif
 }
 
 // A point light of intensity I gives I att / d^2 lux, att windowed and masked by a spot light's cone

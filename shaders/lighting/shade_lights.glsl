@@ -123,7 +123,13 @@ void visitLight(Surface s, uint k) {
 // Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
 // directional lights (shadowed where they cast), added in their order.
 vec3 shadeEnvironment(Surface s) {
-#if IBL
+#if IBL && MATERIAL_CLEARCOAT
+  // The coat reflects the environment along its own normal, with its lobe's albedo at F 1.
+  vec2 coatDfg = iblDfg(gCoatNoV, s.clearcoatRoughness);
+  vec3 coat = iblSpecular(reflect(-s.V, s.clearcoatNormal), s.clearcoatRoughness) * (coatDfg.x + coatDfg.y);
+  vec3 color = ((1.0 - gCoatWeight) * shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0) +
+                gCoatWeight * coat) * s.occlusion;
+#elif IBL
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
 #else
   vec3 color = shadeAmbient(s);

@@ -18,6 +18,11 @@ struct Surface {
 #if MATERIAL_SPECULAR
   vec4 dielectric;    // KHR_materials_ior / _specular: the dielectric's F0 colour (rgb) and F90 (a)
 #endif
+#if MATERIAL_CLEARCOAT
+  float clearcoat;    // KHR_materials_clearcoat: the coat's strength (0: none), perceptual roughness and normal
+  float clearcoatRoughness;
+  vec3 clearcoatNormal;
+#endif
 };
 
 // The point's place and view terms from its view-space position and unit normal.
