@@ -134,6 +134,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
 
   if (!readSpecularGlossiness(g, name, m)) readSpecular(g, name, m);
   readClearcoat(g, name, m);
+  readSheen(g, name, m);
 
   if (g.alphaMode == "MASK") {
     m.alphaMode = AlphaMode::Mask;
@@ -195,6 +196,29 @@ void GltfMaterials::readClearcoat(const tinygltf::Material& g, const std::string
   m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
   for (const char* map : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
     if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are (a flat coat)");
+  }
+}
+
+void GltfMaterials::readSheen(const tinygltf::Material& g, const std::string& name, Material& m) {
+  const auto found = g.extensions.find("KHR_materials_sheen");
+  if (found == g.extensions.end()) return;
+  const tinygltf::Value& v = found->second;
+  const std::string where = name + ".extensions.KHR_materials_sheen";
+  if (v.Has("sheenColorFactor")) {
+    const tinygltf::Value& c = v.Get("sheenColorFactor");
+    if (!c.IsArray() || c.ArrayLen() != 3) file_.fail(where + ".sheenColorFactor: must have 3 components");
+    for (int i = 0; i < 3; ++i) {
+      if (!c.Get(i).IsNumber()) file_.fail(where + ".sheenColorFactor: must hold numbers");
+      m.sheenColor[i] = unitFactor(file_, c.Get(i).GetNumberAsDouble(), where + ".sheenColorFactor");
+    }
+  }
+  if (v.Has("sheenRoughnessFactor")) {
+    const tinygltf::Value& r = v.Get("sheenRoughnessFactor");
+    if (!r.IsNumber()) file_.fail(where + ".sheenRoughnessFactor: must be a number");
+    m.sheenRoughness = unitFactor(file_, r.GetNumberAsDouble(), where + ".sheenRoughnessFactor");
+  }
+  for (const char* map : {"sheenColorTexture", "sheenRoughnessTexture"}) {
+    if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
   }
 }
 

@@ -24,6 +24,8 @@ class GltfMaterials {
   void readSpecular(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_clearcoat's factors into `m`; its textures are warned of, not drawn.
   void readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m);
+  // KHR_materials_sheen's factors into `m`; its textures are warned of, not drawn.
+  void readSheen(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_pbrSpecularGlossiness into `m` by KHR_materials_specular's conversion; false without it.
   bool readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m);
   // Index into Scene::textures of glTF texture `index`.

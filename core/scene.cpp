@@ -218,6 +218,12 @@ bool hasClearcoatMaterial(const Scene& scene, bool blended) {
   });
 }
 
+bool hasSheenMaterial(const Scene& scene, bool blended) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
+    return (o.material.alphaMode == AlphaMode::Blend) == blended && o.material.sheenColor != glm::vec3(0.0f);
+  });
+}
+
 bool hasUnlitSurface(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
     return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;

@@ -82,6 +82,9 @@ struct Material {
   // perceptual roughness, on the interpolated normal (no normal map).
   float clearcoat = 0.0f;
   float clearcoatRoughness = 0.0f;
+  // KHR_materials_sheen: the colour (linear, 0: no sheen) and roughness of a "Charlie" fibre lobe over the base.
+  glm::vec3 sheenColor{0.0f};
+  float sheenRoughness = 0.0f;
 };
 
 // The dielectric part's F0 colour (rgb) and F90 (a) of KHR_materials_specular: min(((ior - 1) / (ior + 1))^2
@@ -210,8 +213,10 @@ bool hasUnlitSurface(const Scene& scene);
 // _specular to other than the core material's: the G-buffer then holds each pixel's dielectric F0 and F90
 // (gbuffer/README.md), or the transparency pass shades with them.
 bool hasSpecularMaterial(const Scene& scene, bool blended);
-// The same for KHR_materials_clearcoat, set where the factor is above 0.
+// The same for KHR_materials_clearcoat, set where the factor is above 0, and KHR_materials_sheen, where the colour
+// is not black.
 bool hasClearcoatMaterial(const Scene& scene, bool blended);
+bool hasSheenMaterial(const Scene& scene, bool blended);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
 bool readsTexCoord1(const Material& material);
 

@@ -157,6 +157,8 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   m.specularColor = f["specular_color"].vec3OrNumber(R::atLeast(0.0), m.specularColor);
   m.clearcoat = f["clearcoat"].number(R::closed(0.0, 1.0), m.clearcoat);
   m.clearcoatRoughness = f["clearcoat_roughness"].number(R::closed(0.0, 1.0), m.clearcoatRoughness);
+  m.sheenColor = f["sheen_color"].vec3OrNumber(R::closed(0.0, 1.0), m.sheenColor);
+  m.sheenRoughness = f["sheen_roughness"].number(R::closed(0.0, 1.0), m.sheenRoughness);
   m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
   const JsonField mode = f["alpha_mode"];
   if (mode.present()) {

@@ -20,24 +20,26 @@ GBufferFormats gbufferFormats(GBufferPrecision p) {
 
 int GBufferLayout::extraBytesPerPixel(GBufferPrecision p) const {
   const int channel = p == GBufferPrecision::Lean ? 8 : 16;
-  return (specular ? channel : 0) + (clearcoat ? channel : 0);
+  return (specular ? channel : 0) + (clearcoat ? channel : 0) + (sheen ? (p == GBufferPrecision::Lean ? 4 : 16) : 0);
 }
 
 std::string GBufferLayout::describe(GBufferPrecision p) const {
   const int bytes = (p == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel) +
                     extraBytesPerPixel(p);
-  return std::string(toString(p)) + (specular ? " + specular" : "") + (clearcoat ? " + clearcoat" : "") + ", " +
-         std::to_string(bytes) + " bytes per pixel (base colour, normal, material, depth" +
-         (specular ? ", dielectric F0 and F90" : "") + (clearcoat ? ", clearcoat strength, roughness and normal" : "") +
-         ")";
+  std::string name = toString(p), channels = "base colour, normal, material, depth";
+  if (specular) name += " + specular", channels += ", dielectric F0 and F90";
+  if (clearcoat) name += " + clearcoat", channels += ", clearcoat strength, roughness and normal";
+  if (sheen) name += " + sheen", channels += ", sheen colour and roughness";
+  return name + ", " + std::to_string(bytes) + " bytes per pixel (" + channels + ")";
 }
 
 GBufferLayout gbufferLayout(const Scene& scene) {
-  return {hasSpecularMaterial(scene, false), hasClearcoatMaterial(scene, false)};
+  return {hasSpecularMaterial(scene, false), hasClearcoatMaterial(scene, false), hasSheenMaterial(scene, false)};
 }
 
 GLenum specularFormat(GBufferPrecision p) { return p == GBufferPrecision::Lean ? GL_RGBA16F : GL_RGBA32F; }
 GLenum clearcoatFormat(GBufferPrecision p) { return p == GBufferPrecision::Lean ? GL_RGBA16 : GL_RGBA32F; }
+GLenum sheenFormat(GBufferPrecision p) { return p == GBufferPrecision::Lean ? GL_SRGB8_ALPHA8 : GL_RGBA32F; }
 
 // Both layouts hold the same encodings (octahedral normal in [0,1]^2, linear values once fetched), so the shaders
 // are the same: only the storage formats differ.
@@ -66,8 +68,10 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p, GBuf
   // fixed locations): a missing one is GL_NONE.
   std::vector<GLenum> drawBuffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                      GL_COLOR_ATTACHMENT3};
-  if (layout.specular || layout.clearcoat) drawBuffers.push_back(layout.specular ? GL_COLOR_ATTACHMENT4 : GL_NONE);
-  if (layout.clearcoat) drawBuffers.push_back(GL_COLOR_ATTACHMENT5);
+  const bool anyAfterSpecular = layout.clearcoat || layout.sheen;
+  if (layout.specular || anyAfterSpecular) drawBuffers.push_back(layout.specular ? GL_COLOR_ATTACHMENT4 : GL_NONE);
+  if (anyAfterSpecular) drawBuffers.push_back(layout.clearcoat ? GL_COLOR_ATTACHMENT5 : GL_NONE);
+  if (layout.sheen) drawBuffers.push_back(GL_COLOR_ATTACHMENT6);
   if (layout.specular) {
     specular.emplace("gbuffer.specular", specularFormat(p), w, h);
     framebuffer.attach(GL_COLOR_ATTACHMENT4, *specular);
@@ -75,6 +79,10 @@ GBuffer::GBuffer(int w, int h, const Texture& radiance, GBufferPrecision p, GBuf
   if (layout.clearcoat) {
     clearcoat.emplace("gbuffer.clearcoat", clearcoatFormat(p), w, h);
     framebuffer.attach(GL_COLOR_ATTACHMENT5, *clearcoat);
+  }
+  if (layout.sheen) {
+    sheen.emplace("gbuffer.sheen", sheenFormat(p), w, h);
+    framebuffer.attach(GL_COLOR_ATTACHMENT6, *sheen);
   }
   glNamedFramebufferDrawBuffers(framebuffer.id(), GLsizei(drawBuffers.size()), drawBuffers.data());
   framebuffer.checkComplete();

@@ -25,17 +25,22 @@ GBufferFormats gbufferFormats(GBufferPrecision precision);
 struct GBufferLayout {
   bool specular = false;   // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
   bool clearcoat = false;  // KHR_materials_clearcoat: its strength, roughness and normal (hasClearcoatMaterial)
+  bool sheen = false;      // KHR_materials_sheen: its colour and roughness (hasSheenMaterial)
   int extraBytesPerPixel(GBufferPrecision precision) const;
   // "base colour, normal, material, depth" and the extra channels, with bytes per pixel: "lean, 16 bytes per pixel
   // (base colour, normal, material, depth)", "lean + specular, 24 bytes per pixel (...)".
   std::string describe(GBufferPrecision precision) const;
-  bool operator==(const GBufferLayout& o) const { return specular == o.specular && clearcoat == o.clearcoat; }
+  bool operator==(const GBufferLayout& o) const {
+    return specular == o.specular && clearcoat == o.clearcoat && sheen == o.sheen;
+  }
 };
 GBufferLayout gbufferLayout(const Scene& scene);
 // The internal formats of the specular channel (RGBA16F lean, RGBA32F float) and the clearcoat channel (RGBA16
 // lean, RGBA32F float).
 GLenum specularFormat(GBufferPrecision precision);
 GLenum clearcoatFormat(GBufferPrecision precision);
+// The sheen channel's (SRGB8_ALPHA8 lean, RGBA32F float).
+GLenum sheenFormat(GBufferPrecision precision);
 
 // The G-buffer's attachments (layout and bytes per pixel in gbuffer/README.md). `radiance` is the frame's HDR
 // target, attached as colour attachment 3: the geometry pass writes emitted radiance there and the lighting pass
@@ -64,6 +69,8 @@ struct GBuffer {
   // GL_RGBA16 clearcoat strength, roughness and octahedral normal (float: GL_RGBA32F), colour attachment 5: with
   // layout.clearcoat only.
   std::optional<Texture> clearcoat;
+  // GL_SRGB8_ALPHA8 sheen colour and roughness (float: GL_RGBA32F), colour attachment 6: with layout.sheen only.
+  std::optional<Texture> sheen;
   Framebuffer framebuffer;
 };
 

@@ -63,7 +63,8 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     for (const auto& [unit, second] : secondSet) uv1Maps |= second ? 1u << unit : 0u;
     b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, static_cast<float>(uv1Maps), 0.0f, 0.0f);
     b.dielectric = dielectricSpecular(m);
-    b.layers = glm::vec4(m.clearcoat, m.clearcoatRoughness, 0.0f, 0.0f);
+    b.layers = glm::vec4(m.clearcoat, m.clearcoatRoughness, m.sheenRoughness, 0.0f);
+    b.sheenColor = glm::vec4(m.sheenColor, 0.0f);
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
     b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
     b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
@@ -139,7 +140,8 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   // Every G-buffer draw writes the channels the scene's layout has.
   layout_ = gbufferLayout(scene);
   const ShaderDefines layoutDefines = {{"MATERIAL_SPECULAR", layout_.specular ? "1" : "0"},
-                                       {"MATERIAL_CLEARCOAT", layout_.clearcoat ? "1" : "0"}};
+                                       {"MATERIAL_CLEARCOAT", layout_.clearcoat ? "1" : "0"},
+                                       {"MATERIAL_SHEEN", layout_.sheen ? "1" : "0"}};
   std::map<std::string, size_t> programIndex, blendedIndex;  // by the permutation's define list
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];

@@ -17,12 +17,13 @@ struct ObjectBlock {
   glm::vec4 orientation;   // x: sign of det(model), which mirrors the tangent frame; y: the maps reading
                            // TEXCOORD_1, a bit per texture unit (a small integer, exact in float); zw unused
   glm::vec4 dielectric;    // the dielectric's F0 colour and F90 (dielectricSpecular, core/scene.hpp)
-  glm::vec4 layers;        // clearcoat strength and roughness (KHR_materials_clearcoat); zw unused
+  glm::vec4 layers;        // clearcoat strength and roughness (KHR_materials_clearcoat), sheen roughness; w unused
+  glm::vec4 sheenColor;    // KHR_materials_sheen's colour, linear; w unused
   // Each material map's UV transform by texture unit: the GLSL mat2x3 whose two columns, each padded to a vec4 by
   // std140, are the rows of the 2x3 affine map (Material::*UvTransform transposed).
   glm::mat2x4 uvTransform[5];
 };
-static_assert(offsetof(ObjectBlock, uvTransform) == 2 * 64 + 6 * 16, "ObjectBlock must match its std140 layout");
-static_assert(sizeof(ObjectBlock) == 2 * 64 + 6 * 16 + 5 * 32, "ObjectBlock must match its std140 layout");
+static_assert(offsetof(ObjectBlock, uvTransform) == 2 * 64 + 7 * 16, "ObjectBlock must match its std140 layout");
+static_assert(sizeof(ObjectBlock) == 2 * 64 + 7 * 16 + 5 * 32, "ObjectBlock must match its std140 layout");
 
 }  // namespace pbr

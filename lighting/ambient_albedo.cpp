@@ -13,4 +13,12 @@ const Texture& AmbientAlbedoTables::table(const ShaderDefines& variantDefines) {
   return tables_.emplace(key, computeSquareTable(label, program, GL_RGBA32F, kSize, kSamples)).first->second;
 }
 
+const Texture& SheenAlbedoTable::table() {
+  if (!table_) {
+    const Program program = shaders_.compute("lighting/sheen_albedo.comp", {});
+    table_.emplace(computeSquareTable("lighting.sheenAlbedo", program, GL_R32F, kSize, kSamples));
+  }
+  return *table_;
+}
+
 }  // namespace pbr

@@ -1,5 +1,6 @@
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 
 #include "core/shader_library.hpp"
@@ -21,6 +22,21 @@ class AmbientAlbedoTables {
  private:
   const ShaderLibrary& shaders_;
   std::map<std::string, Texture> tables_;  // by their defines
+};
+
+// E(n.v, r), the directional albedo of KHR_materials_sheen's white fibre lobe (shaders/lighting/sheen_albedo.comp):
+// the sheen's albedo scaling of the base and its own reflection of ambient light. One R32F table, made on first use.
+class SheenAlbedoTable {
+ public:
+  static constexpr int kSize = 32;
+  static constexpr int kSamples = 1024;  // per texel, cosine-weighted: the lobe is broad
+
+  explicit SheenAlbedoTable(const ShaderLibrary& shaders) : shaders_(shaders) {}
+  const Texture& table();
+
+ private:
+  const ShaderLibrary& shaders_;
+  std::optional<Texture> table_;
 };
 
 }  // namespace pbr

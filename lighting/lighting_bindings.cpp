@@ -14,10 +14,10 @@ ShaderDefines lightingBindingDefines() {
        kLightSsbo, kClusterSsbo, kLightIndexSsbo, kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo,
        kLightingStatsSsbo, kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
        kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo,
-       kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kSpecularUnit, kClearcoatUnit, kRadianceImage,
-       kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
-       kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kShadowLightImage, kShadowDepthUnit,
-       kShadowOwnerUnit, kOitAccumulationUnit, kOitRevealageUnit, kLayerNodeSsbo});
+       kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kSpecularUnit, kClearcoatUnit, kSheenUnit,
+       kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo,
+       kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo,
+       kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit, kOitRevealageUnit, kLayerNodeSsbo});
   return defines;
 }
 

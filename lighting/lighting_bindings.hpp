@@ -36,6 +36,7 @@ constexpr BindingPoint kMaterialUnit{"SURFACE_MATERIAL_UNIT", BindingKind::Textu
 constexpr BindingPoint kDepthUnit{"SURFACE_DEPTH_UNIT", BindingKind::TextureUnit, 3};
 constexpr BindingPoint kSpecularUnit{"SURFACE_SPECULAR_UNIT", BindingKind::TextureUnit, 6};
 constexpr BindingPoint kClearcoatUnit{"SURFACE_CLEARCOAT_UNIT", BindingKind::TextureUnit, 7};
+constexpr BindingPoint kSheenUnit{"SURFACE_SHEEN_UNIT", BindingKind::TextureUnit, 14};
 // The lighting pass's radiance target, and its running sum over light chunks (LightingPass::render).
 constexpr BindingPoint kRadianceImage{"RADIANCE_IMAGE", BindingKind::ImageUnit, 0};
 constexpr BindingPoint kPartialRadianceImage{"PARTIAL_RADIANCE_IMAGE", BindingKind::ImageUnit, 1};
@@ -53,6 +54,8 @@ constexpr BindingPoint kOitRevealageUnit{"OIT_REVEALAGE_UNIT", BindingKind::Text
 constexpr BindingPoint kLayerNodeSsbo{"LAYER_NODE_SSBO", BindingKind::StorageBuffer, 18};
 // The PBR lighting pass's directional-albedo table for uniform ambient light (lighting/ambient_albedo.hpp).
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
+// KHR_materials_sheen's albedo table (lighting/ambient_albedo.hpp's SheenAlbedoTable).
+constexpr BindingPoint kSheenAlbedoUnit{"SHEEN_ALBEDO_UNIT", BindingKind::TextureUnit, 15};
 }  // namespace lighting_binding
 
 // The frame block's, the lighting module's, the environment maps' and the shadow maps' points: everything bound

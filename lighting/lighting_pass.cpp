@@ -53,6 +53,7 @@ ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered
   defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
   defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});
   defines.push_back({"MATERIAL_CLEARCOAT", flag(o.clearcoatMaterials && !blinnPhong)});
+  defines.push_back({"MATERIAL_SHEEN", flag(o.sheenMaterials && !blinnPhong)});
   if (o.shadows) {
     defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
     defines = concat(defines, shadowViewDefines());
@@ -77,6 +78,8 @@ void LightingPass::bindShading(const LightBuffer& lights, const LightingOptions&
   const Texture* ambient = options.model == ShadingModel::Pbr && !ibl
                                ? &ambientAlbedo_.table(shaderDefines(options.variant))
                                : nullptr;
+  const Texture* sheen =
+      options.model == ShadingModel::Pbr && options.sheenMaterials ? &sheenAlbedo_.table() : nullptr;
   block_.update({glm::vec4(options.ambient, 0.0f), glm::uvec4(lights.count(), 0, 0, 0)});
   frame.bind(kFrameUbo.index);
   block_.bind(lighting_binding::kLightingUbo.index);
@@ -88,6 +91,10 @@ void LightingPass::bindShading(const LightBuffer& lights, const LightingOptions&
   if (ambient) {
     glBindTextureUnit(lighting_binding::kAmbientAlbedoUnit.index, ambient->id());
     glBindSampler(lighting_binding::kAmbientAlbedoUnit.index, ambientSampler_.id());
+  }
+  if (sheen) {
+    glBindTextureUnit(lighting_binding::kSheenAlbedoUnit.index, sheen->id());
+    glBindSampler(lighting_binding::kSheenAlbedoUnit.index, ambientSampler_.id());
   }
 }
 
@@ -121,11 +128,13 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   glBindTextureUnit(lighting_binding::kNormalUnit.index, surface.normal.id());
   glBindTextureUnit(lighting_binding::kMaterialUnit.index, surface.material.id());
   glBindTextureUnit(lighting_binding::kDepthUnit.index, surface.depth.id());
-  if ((options.specularMaterials && !surface.specular) || (options.clearcoatMaterials && !surface.clearcoat)) {
+  if ((options.specularMaterials && !surface.specular) || (options.clearcoatMaterials && !surface.clearcoat) ||
+      (options.sheenMaterials && !surface.sheen)) {
     throw std::logic_error("lighting pass: material extensions without their G-buffer channels");
   }
   if (surface.specular) glBindTextureUnit(lighting_binding::kSpecularUnit.index, surface.specular->id());
   if (surface.clearcoat) glBindTextureUnit(lighting_binding::kClearcoatUnit.index, surface.clearcoat->id());
+  if (surface.sheen) glBindTextureUnit(lighting_binding::kSheenUnit.index, surface.sheen->id());
   glBindImageTexture(lighting_binding::kRadianceImage.index, radiance.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      radiance.format());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

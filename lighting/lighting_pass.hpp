@@ -37,6 +37,8 @@ struct SurfaceTextures {
   const Texture* specular = nullptr;
   // The clearcoat's strength, roughness and normal (KHR_materials_clearcoat), likewise (MATERIAL_CLEARCOAT).
   const Texture* clearcoat = nullptr;
+  // The sheen's colour and roughness (KHR_materials_sheen), likewise (MATERIAL_SHEEN).
+  const Texture* sheen = nullptr;
 };
 
 // std430 mirror of the header of `LayerLists` in shaders/lighting/layer_lists.glsl; a head per pixel (4 bytes) and
@@ -93,6 +95,8 @@ struct LightingOptions {
   bool specularMaterials = false;
   // PBR only: the surfaces shaded may have a clear coat (KHR_materials_clearcoat), likewise.
   bool clearcoatMaterials = false;
+  // PBR only: the surfaces shaded may have a sheen (KHR_materials_sheen), likewise.
+  bool sheenMaterials = false;
 };
 
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
@@ -117,6 +121,7 @@ class LightingPass {
   explicit LightingPass(ProgramCache& programs)
       : programs_(programs),
         ambientAlbedo_(programs.library()),
+        sheenAlbedo_(programs.library()),
         ambientSampler_("lighting.ambientAlbedo.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR),
         lightWindow_(lightWindowLights()) {}
 
@@ -160,6 +165,7 @@ class LightingPass {
   ProgramCache& programs_;  // permutations compiled on first use
   UniformBuffer<LightingBlock> block_{"lighting.block"};
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
+  SheenAlbedoTable sheenAlbedo_;       // KHR_materials_sheen's albedo, made for the first scene with a sheen
   Sampler ambientSampler_;
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;

@@ -49,7 +49,9 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
       // Cosine-weighted directions: pdf(l) = n.l / pi.
       const double sinL = std::sqrt(u);
       const dvec3 Ld(sinL * std::cos(phi), sinL * std::sin(phi), std::sqrt(1.0 - u));
-      diffuse += evaluateBrdf(N, V, Ld, m, forms).diffuse * kPi;
+      // The sheen lobe (KHR_materials_sheen) is broad: cosine-weighted directions serve it too.
+      const BrdfLobes cosineSampled = evaluateBrdf(N, V, Ld, m, forms);
+      diffuse += (cosineSampled.diffuse + cosineSampled.sheen) * kPi;
       if (m.clearcoat > 0.0) {
         const dvec3 Hc = sampleVisibleNormal(V, coatAlpha, u, (j + 0.5) / samples);
         const double VoHc = glm::dot(V, Hc);

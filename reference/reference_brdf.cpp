@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -153,14 +156,94 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
     }
     return dvec3(1.0) - diffuseFresnel(NoV);
   };
-  const dvec3 specular = ggxD(NoH, alpha) * visibility(alpha) * fresnel(VoH);
-  const dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;
-  if (m.clearcoat <= 0.0) return {diffuse, specular};
+  dvec3 specular = ggxD(NoH, alpha) * visibility(alpha) * fresnel(VoH);
+  dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;
+  dvec3 sheen(0.0);
+  if (m.sheenColor != dvec3(0.0)) {
+    const double scaling = 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) *
+                                     sheenAlbedo(NoV, m.sheenRoughness);
+    diffuse *= scaling;
+    specular *= scaling;
+    sheen = m.sheenColor * sheenDistribution(NoH, m.sheenRoughness) * sheenVisibility(NoV, NoL, m.sheenRoughness);
+  }
+  if (m.clearcoat <= 0.0) return {diffuse, specular, 0.0, sheen};
   // KHR_materials_clearcoat: fresnel_coat(ior 1.5) with Schlick's term at the coat's n.v, the specification's
   // implementation; the coat's lobe is the specular BRDF of its roughness without a Fresnel term.
   const double coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
   const double weight = m.clearcoat * fresnelSchlick(NoV, 0.04);
-  return {(1.0 - weight) * diffuse, (1.0 - weight) * specular, weight * ggxD(NoH, coatAlpha) * visibility(coatAlpha)};
+  return {(1.0 - weight) * diffuse, (1.0 - weight) * specular, weight * ggxD(NoH, coatAlpha) * visibility(coatAlpha),
+          (1.0 - weight) * sheen};
+}
+
+namespace {
+
+double sheenAlpha(double sheenRoughness) { return std::clamp(sheenRoughness, kMinSheenRoughness, 1.0); }
+
+// Conty Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF": the fit of Lambda's exponent.
+double sheenL(double x, double alpha) {
+  const double t = (1.0 - alpha) * (1.0 - alpha);
+  const double a = 21.5473 + (25.3245 - 21.5473) * t, b = 3.82987 + (3.32435 - 3.82987) * t,
+               c = 0.19823 + (0.16801 - 0.19823) * t, d = -1.97760 + (-1.27393 + 1.97760) * t,
+               e = -4.32054 + (-4.85967 + 4.32054) * t;
+  return a / (1.0 + b * std::pow(x, c)) + d * x + e;
+}
+
+double sheenLambda(double cosTheta, double alpha) {
+  return std::abs(cosTheta) < 0.5 ? std::exp(sheenL(cosTheta, alpha))
+                                  : std::exp(2.0 * sheenL(0.5, alpha) - sheenL(1.0 - cosTheta, alpha));
+}
+
+}  // namespace
+
+// Conty Estevez and Kulla 2017, as KHR_materials_sheen writes it: (2 + 1 / r) sin(h)^(1 / r) / (2 pi).
+double sheenDistribution(double NoH, double sheenRoughness) {
+  const double invR = 1.0 / sheenAlpha(sheenRoughness);
+  const double sin2h = std::max(1.0 - NoH * NoH, 0.0);
+  return (2.0 + invR) * std::pow(sin2h, 0.5 * invR) / (2.0 * kPi);
+}
+
+double sheenVisibility(double NoV, double NoL, double sheenRoughness) {
+  const double alpha = sheenAlpha(sheenRoughness);
+  return 1.0 / ((1.0 + sheenLambda(NoV, alpha) + sheenLambda(NoL, alpha)) * (4.0 * NoV * NoL));
+}
+
+double sheenAlbedo(double NoV, double sheenRoughness) {
+  // 128 n.v bins per roughness, each the integral by a 128 x 128 midpoint rule in (cos^2 theta, phi) of D V n.l
+  // against the cosine-weighted pdf n.l / pi: E = pi mean(D V).
+  constexpr int kBins = 128, kSteps = 128;
+  static std::mutex mutex;
+  static std::map<double, std::vector<double>> tables;  // entries are never removed: a pointer to one stays valid
+  const double r = sheenAlpha(sheenRoughness);
+  const std::vector<double>* found = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto it = tables.find(r);
+    if (it != tables.end()) found = &it->second;
+  }
+  if (!found) {
+    std::vector<double> table;
+    for (int b = 0; b < kBins; ++b) {
+      const double cv = std::max(double(b) / (kBins - 1), 1e-4);
+      const dvec3 V(std::sqrt(1.0 - cv * cv), 0.0, cv);
+      double sum = 0.0;
+      for (int i = 0; i < kSteps; ++i) {
+        const double u = (i + 0.5) / kSteps, sinL = std::sqrt(u), cosL = std::sqrt(1.0 - u);
+        for (int j = 0; j < kSteps; ++j) {
+          const double phi = 2.0 * kPi * (j + 0.5) / kSteps;
+          const dvec3 L(sinL * std::cos(phi), sinL * std::sin(phi), cosL);
+          const dvec3 H = glm::normalize(V + L);
+          sum += sheenDistribution(H.z, r) * sheenVisibility(cv, cosL, r);
+        }
+      }
+      table.push_back(kPi * sum / (double(kSteps) * kSteps));
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    found = &tables.emplace(r, std::move(table)).first->second;  // another thread's, if it came first
+  }
+  const std::vector<double>& table = *found;
+  const double x = std::clamp(NoV, 0.0, 1.0) * (kBins - 1);
+  const int i = std::min(int(x), kBins - 2);
+  return table[size_t(i)] + (x - i) * (table[size_t(i) + 1] - table[size_t(i)]);
 }
 
 // Karis 2013, "Real Shading in Unreal Engine 4": the window (1 - (d / R)^4)^2 brings 1 / d^2 to 0 at R.

@@ -26,7 +26,21 @@ struct ReferenceMaterial {
   // (the reference draws no normal map).
   double clearcoat = 0.0;
   double clearcoatRoughness = 0.0;
+  // KHR_materials_sheen: the fibre lobe's colour (0: none) and roughness.
+  dvec3 sheenColor{0.0};
+  double sheenRoughness = 0.0;
 };
+
+// The sheen roughness the renderer clamps to, as the reference does: the "Charlie" distribution's exponent 1 / r
+// and its visibility fit are used over [0.07, 1].
+constexpr double kMinSheenRoughness = 0.07;
+// KHR_materials_sheen's "Charlie" distribution (Conty Estevez and Kulla 2017) and its visibility, 1 / ((1 +
+// Lambda(n.v) + Lambda(n.l)) 4 n.v n.l) with the paper's fitted Lambda, both as the extension writes them.
+double sheenDistribution(double NoH, double sheenRoughness);
+double sheenVisibility(double NoV, double NoL, double sheenRoughness);
+// E: the directional albedo of the white sheen lobe, the integral of D V n.l over the hemisphere, by quadrature
+// (memoised per roughness, interpolated over n.v).
+double sheenAlbedo(double NoV, double sheenRoughness);
 
 // The renderer clamps perceptual roughness to this; the reference does too, so both describe the same surface.
 constexpr double kMinRoughness = 0.045;
@@ -67,12 +81,15 @@ double fresnelSchlick(double c, double f0);
 double fresnelSchlickSG(double c, double f0);
 
 // The lobes at one pair of directions, each with its layer weights applied: a clear coat's `coat` lobe weighted by
-// clearcoat Fc, the others by 1 - clearcoat Fc (KHR_materials_clearcoat's fresnel_coat).
+// clearcoat Fc, the others by 1 - clearcoat Fc (KHR_materials_clearcoat's fresnel_coat); the `sheen` lobe added
+// over the base's, which are scaled by 1 - max(sheenColor) E(n.v) (KHR_materials_sheen's albedo scaling in the
+// form that depends on the view alone, which the extension allows for direct and ambient light alike).
 struct BrdfLobes {
   dvec3 diffuse;
   dvec3 specular;
   double coat = 0.0;
-  dvec3 sum() const { return diffuse + specular + dvec3(coat); }
+  dvec3 sheen{0.0};
+  dvec3 sum() const { return diffuse + specular + dvec3(coat) + sheen; }
 };
 
 // f_d and f_s for unit vectors N, V, L (n.l > 0; n.v is clamped to 1e-4 like the renderer does).

@@ -39,7 +39,8 @@ void parallelFor(int count, int threads, Work work) {
 
 ReferenceMaterial toReference(const Material& m) {
   return {dvec3(m.baseColor), double(m.roughness), double(m.metalness), double(m.ior), double(m.specular),
-          dvec3(m.specularColor), double(m.clearcoat), double(m.clearcoatRoughness)};
+          dvec3(m.specularColor), double(m.clearcoat), double(m.clearcoatRoughness), dvec3(m.sheenColor),
+          double(m.sheenRoughness)};
 }
 
 // One albedo table per object, empty where no ambient light makes it needed.

@@ -105,6 +105,7 @@ std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayo
                                  GL_RGBA8};
   if (layout.specular) formats.push_back(specularFormat(config.gbuffer));
   if (layout.clearcoat) formats.push_back(clearcoatFormat(config.gbuffer));
+  if (layout.sheen) formats.push_back(sheenFormat(config.gbuffer));
   return formats;
 }
 

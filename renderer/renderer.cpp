@@ -17,7 +17,7 @@ namespace {
 
 SurfaceTextures surfaceTextures(const GBuffer& g) {
   return {g.baseColor, g.normal, g.material, g.depth, g.specular ? &*g.specular : nullptr,
-          g.clearcoat ? &*g.clearcoat : nullptr};
+          g.clearcoat ? &*g.clearcoat : nullptr, g.sheen ? &*g.sheen : nullptr};
 }
 
 }  // namespace
@@ -189,7 +189,8 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        shadowView ? &t.shadowLight() : nullptr,
                                                        scene_.geometry.hasUnlit(),
                                                        t.gbuffer.layout.specular,
-                                                       t.gbuffer.layout.clearcoat};
+                                                       t.gbuffer.layout.clearcoat,
+                                                       t.gbuffer.layout.sheen};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         markCulling(CullingChoice::LightingBegin);
@@ -213,6 +214,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.shadowFilter = options.shadows.filter;
                         lighting.specularMaterials = hasSpecularMaterial(sceneData_, true);
                         lighting.clearcoatMaterials = hasClearcoatMaterial(sceneData_, true);
+                        lighting.sheenMaterials = hasSheenMaterial(sceneData_, true);
                         OitTargets oit;
                         GLuint target = t.blendTarget.id();
                         if (options.transparency == Transparency::Oit) {

@@ -1149,3 +1149,26 @@ TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warne
   CHECK(pbr::hasClearcoatMaterial(scene, false));
   CHECK_FALSE(pbr::hasClearcoatMaterial(scene, true));
 }
+
+TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int material = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_sheen",
+          {{"sheenColorFactor", {1.0, 0.5, 0.25}},
+           {"sheenRoughnessFactor", 0.75},
+           {"sheenColorTexture", {{"index", 0}}}}}}}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_sheen"};
+  QuadSpec quad;
+  quad.material = material;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, quad)}});
+  pbr::Scene scene;
+  const pbr::test::CapturedStderr warnings;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "sheen"));
+  REQUIRE(scene.objects.size() == 1);
+  CHECK(scene.objects[0].material.sheenColor == glm::vec3(1.0f, 0.5f, 0.25f));
+  CHECK(scene.objects[0].material.sheenRoughness == 0.75f);
+  CHECK(warnings.text().find("KHR_materials_sheen.sheenColorTexture: not drawn") != std::string::npos);
+  CHECK(pbr::hasSheenMaterial(scene, false));
+}

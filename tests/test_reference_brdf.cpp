@@ -283,3 +283,23 @@ TEST_CASE("reference: a clear coat over a white base conserves energy (white fur
     }
   }
 }
+
+TEST_CASE("reference: the sheen's albedo scaling keeps a white sheen over a white base under the white furnace's 1") {
+  using namespace pbr::reference;
+  for (const double sheenRoughness : {0.07, 0.3, 0.6, 1.0}) {
+    for (const double NoV : {0.05, 0.3, 0.7, 1.0}) {
+      CAPTURE(sheenRoughness);
+      CAPTURE(NoV);
+      const double e = sheenAlbedo(NoV, sheenRoughness);
+      CHECK(e > 0.0);
+      CHECK(e <= 1.0);
+      ReferenceMaterial m;
+      m.baseColor = dvec3(1.0);
+      m.roughness = 0.5;
+      m.sheenColor = dvec3(1.0);
+      m.sheenRoughness = sheenRoughness;
+      // The sheen adds E, and scales the base (at most 1) by 1 - E: together at most 1.
+      CHECK(directionalAlbedo(m, NoV, BrdfForms(), 64).x <= 1.0 + 2e-3);
+    }
+  }
+}

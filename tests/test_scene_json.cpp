@@ -397,12 +397,13 @@ TEST_CASE("scene file: a model that places no light gets the default rig, even w
   CHECK(sun.directionalLights.size() == 1);
 }
 
-TEST_CASE("scene file: ior, specular, specular_color and clearcoat reach the material, an ior in (0, 1) refused") {
+TEST_CASE("scene file: the glTF extensions' material fields reach the material, an ior in (0, 1) refused") {
   const TempDir dir;
   const pbr::Scene s = pbr::loadSceneFile(dir.write("specular.json", R"({
     "camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
     "objects": [{"shape": "sphere", "material": {"ior": 1.33, "specular": 0.25, "specular_color": [2, 1, 0.5],
-                                                 "clearcoat": 0.5, "clearcoat_roughness": 0.125}},
+                                                 "clearcoat": 0.5, "clearcoat_roughness": 0.125,
+                                                 "sheen_color": [1, 0.5, 0], "sheen_roughness": 0.25}},
                 {"shape": "sphere", "material": {"ior": 0, "specular_color": 0.5}},
                 {"shape": "sphere"}]
   })"));
@@ -412,6 +413,8 @@ TEST_CASE("scene file: ior, specular, specular_color and clearcoat reach the mat
   checkVec(s.objects[0].material.specularColor, {2, 1, 0.5f});
   CHECK(s.objects[0].material.clearcoat == 0.5f);
   CHECK(s.objects[0].material.clearcoatRoughness == 0.125f);
+  checkVec(s.objects[0].material.sheenColor, {1, 0.5f, 0});
+  CHECK(s.objects[0].material.sheenRoughness == 0.25f);
   CHECK(s.objects[1].material.ior == 0.0f);
   checkVec(s.objects[1].material.specularColor, glm::vec3(0.5f));
   CHECK(s.objects[2].material.ior == 1.5f);

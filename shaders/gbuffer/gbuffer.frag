@@ -13,6 +13,9 @@ layout(location = 4) out vec4 outSpecular;   // RGBA16F dielectric F0 / 0.04 (1 
 #if MATERIAL_CLEARCOAT
 layout(location = 5) out vec4 outClearcoat;  // RGBA16 clearcoat strength, roughness, octahedral normal
 #endif
+#if MATERIAL_SHEEN
+layout(location = 6) out vec4 outSheen;      // SRGB8_ALPHA8 sheen colour (encoded on write), roughness
+#endif
 
 void main() {
   MaterialSample m = sampleMaterial();
@@ -26,6 +29,9 @@ void main() {
 #endif
 #if MATERIAL_CLEARCOAT
   outClearcoat = vec4(m.clearcoat, m.clearcoatRoughness, octEncode(m.clearcoatNormal));
+#endif
+#if MATERIAL_SHEEN
+  outSheen = vec4(m.sheenColor, m.sheenRoughness);
 #endif
   outNormal = octEncode(m.normal);
 #if UNLIT

@@ -54,6 +54,8 @@ struct MaterialSample {
   float clearcoat;
   float clearcoatRoughness;
   vec3 clearcoatNormal;
+  vec3 sheenColor;  // KHR_materials_sheen: the fibre lobe's colour (black: none) and roughness
+  float sheenRoughness;
 };
 
 MaterialSample sampleMaterial() {
@@ -102,5 +104,7 @@ MaterialSample sampleMaterial() {
   m.dielectric = object.dielectric;
   m.clearcoat = object.layers.x;
   m.clearcoatRoughness = object.layers.y;
+  m.sheenColor = object.sheenColor.rgb;
+  m.sheenRoughness = object.layers.z;
   return m;
 }

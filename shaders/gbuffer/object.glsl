@@ -7,6 +7,7 @@ layout(std140, binding = OBJECT_UBO) uniform ObjectBlock {
   vec4 emissive;     // linear emitted radiance factor, alpha cutoff
   vec4 orientation;  // x: sign of det(model); y: the maps reading TEXCOORD_1, a bit per texture unit
   vec4 dielectric;   // KHR_materials_ior / _specular: the dielectric's F0 colour (rgb) and F90 (a)
-  vec4 layers;       // KHR_materials_clearcoat's strength and roughness; zw unused
+  vec4 layers;       // KHR_materials_clearcoat's strength and roughness, KHR_materials_sheen's roughness; w unused
+  vec4 sheenColor;   // KHR_materials_sheen's colour, linear; w unused
   mat2x3 uvTransform[5];  // by material map texture unit: the rows of its 2x3 affine UV map
 } object;

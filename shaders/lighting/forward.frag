@@ -43,6 +43,10 @@ void main() {
   s.clearcoatRoughness = m.clearcoatRoughness;
   s.clearcoatNormal = m.clearcoatNormal;
 #endif
+#if MATERIAL_SHEEN
+  s.sheenColor = m.sheenColor;
+  s.sheenRoughness = m.sheenRoughness;
+#endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
 #if LIGHT_CHUNKS

@@ -13,6 +13,9 @@ layout(binding = SURFACE_SPECULAR_UNIT) uniform sampler2D gSpecular;     // RGBA
 #if MATERIAL_CLEARCOAT
 layout(binding = SURFACE_CLEARCOAT_UNIT) uniform sampler2D gClearcoat;   // RGBA16 strength, roughness, oct normal
 #endif
+#if MATERIAL_SHEEN
+layout(binding = SURFACE_SHEEN_UNIT) uniform sampler2D gSheen;           // SRGB8_ALPHA8 colour, roughness
+#endif
 
 // False where the pixel saw no geometry (depth still at the reversed-Z clear value 0).
 bool readSurface(ivec2 p, out Surface s) {
@@ -36,6 +39,11 @@ bool readSurface(ivec2 p, out Surface s) {
   s.clearcoat = coat.x;
   s.clearcoatRoughness = coat.y;
   s.clearcoatNormal = octDecode(coat.zw);
+#endif
+#if MATERIAL_SHEEN
+  vec4 sheen = texelFetch(gSheen, p, 0);
+  s.sheenColor = sheen.rgb;
+  s.sheenRoughness = sheen.a;
 #endif
   return true;
 }

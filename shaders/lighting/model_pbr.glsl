@@ -1,6 +1,30 @@
 // The PBR shading model: Cook-Torrance GGX, photometric point lights, HDR output.
 #include "brdf.glsl"
 
+#if MATERIAL_SHEEN
+#include "sheen.glsl"
+// KHR_materials_sheen: the fibre lobe sheenColor D V over the base, whose lobes and ambient and environment light
+// are scaled by 1 - max(sheenColor) E(n.v), the albedo scaling in the form that depends on the view alone (the
+// extension allows it for direct and indirect light alike). E is tabulated (lighting/sheen_albedo.comp).
+layout(binding = SHEEN_ALBEDO_UNIT) uniform sampler2D sheenAlbedo;
+float gSheenE, gSheenScale, gSheenR;
+
+float sheenAlbedoAt(float NoV, float roughness) {
+  vec2 size = vec2(textureSize(sheenAlbedo, 0));
+  vec2 uv = (vec2(saturate(NoV), saturate(roughness)) * (size - 1.0) + 0.5) / size;
+  return textureLod(sheenAlbedo, uv, 0.0).r;
+}
+
+// The sheen's D V n.l for light from L (0 below the horizon).
+float sheenLobe(Surface s, vec3 L) {
+  float NoL = dot(s.normal, L);
+  if (NoL <= 0.0) return 0.0;
+  vec3 H = normalize(s.V + L);
+  vec3 NxH = cross(s.normal, H);
+  return D_Charlie(dot(NxH, NxH), gSheenR) * V_Charlie(s.NoV, NoL, gSheenR) * NoL;
+}
+#endif
+
 #if MATERIAL_CLEARCOAT
 // KHR_materials_clearcoat's fresnel_coat: a GGX layer of F0 0.04 on the coat's normal, weighted by clearcoat Fc,
 // over everything else (the base's lobes, its ambient and environment light, its emission), weighted by
@@ -47,15 +71,17 @@ vec3 shadeAmbient(Surface s) {
 #else
   vec3 weight = vec3(t.w);  // a dielectric's: exact for metalness 0 and 1, interpolated between
 #endif
+  vec3 albedo = weight * (1.0 - s.metalness) * s.baseColor + specular;
+#if MATERIAL_SHEEN
+  if (s.sheenColor != vec3(0.0)) albedo = gSheenScale * albedo + s.sheenColor * gSheenE;
+#endif
 #if MATERIAL_CLEARCOAT
   // The coat's albedo is its lobe's with F 1: the metals' table at F0 1, A + B.
   vec2 coatUv = (vec2(saturate(gCoatNoV), saturate(s.clearcoatRoughness)) * (size - 1.0) + 0.5) / size;
   vec4 coat = textureLod(ambientAlbedo, coatUv, 0.0);
-  return lighting.ambient.rgb * ((1.0 - gCoatWeight) * (weight * (1.0 - s.metalness) * s.baseColor + specular) +
-                                 gCoatWeight * (coat.x + coat.y)) * s.occlusion;
-#else
-  return lighting.ambient.rgb * (weight * (1.0 - s.metalness) * s.baseColor + specular) * s.occlusion;
+  albedo = (1.0 - gCoatWeight) * albedo + gCoatWeight * (coat.x + coat.y);
 #endif
+  return lighting.ambient.rgb * albedo * s.occlusion;
 }
 #endif
 
@@ -67,6 +93,11 @@ void beginShading(Surface s) {
   gDielectric = s.dielectric;
 #endif
   gBrdf = brdfSurface(s.normal, s.V, s.NoV, s.baseColor, s.roughness, s.metalness);
+#if MATERIAL_SHEEN
+  gSheenR = sheenAlpha(s.sheenRoughness);
+  gSheenE = sheenAlbedoAt(s.NoV, s.sheenRoughness);
+  gSheenScale = 1.0 - max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) * gSheenE;
+#endif
 #if MATERIAL_CLEARCOAT
   gCoatNoV = max(dot(s.clearcoatNormal, s.V), 1e-4);
   gCoatWeight = s.clearcoat * (0.04 + 0.96 * pow5(1.0 - gCoatNoV));
@@ -76,13 +107,21 @@ void beginShading(Surface s) {
 
 // Light of colour `color` arriving from unit direction L with `strength` lux on a surface facing it: f E n.l.
 vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
-#if MATERIAL_CLEARCOAT
-  // The coat may face a light the base turns from, and the other way round; without a coat, the core's sums.
+#if MATERIAL_CLEARCOAT || MATERIAL_SHEEN
+  // The coat may face a light the base turns from, and the other way round; without a sheen or a coat, the core's
+  // sums.
   if (strength <= 0.0) return vec3(0.0);
   float NoL = dot(s.normal, L);
-  vec3 base = NoL > 0.0 ? brdfCookTorrance(gBrdf, L) * color * (strength * NoL) : vec3(0.0);
-  if (s.clearcoat <= 0.0) return base;
-  return (1.0 - gCoatWeight) * base + gCoatWeight * coatLobe(s, L) * color * strength;
+  vec3 radiance = NoL > 0.0 ? brdfCookTorrance(gBrdf, L) * color * (strength * NoL) : vec3(0.0);
+#if MATERIAL_SHEEN
+  if (s.sheenColor != vec3(0.0)) {
+    radiance = gSheenScale * radiance + s.sheenColor * sheenLobe(s, L) * color * strength;
+  }
+#endif
+#if MATERIAL_CLEARCOAT
+  if (s.clearcoat > 0.0) radiance = (1.0 - gCoatWeight) * radiance + gCoatWeight * coatLobe(s, L) * color * strength;
+#endif
+  return radiance;
 #else
   float NoL = dot(s.normal, L);
   if (NoL <= 0.0 || strength <= 0.0) return vec3(0.0);

@@ -123,12 +123,21 @@ void visitLight(Surface s, uint k) {
 // Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
 // directional lights (shadowed where they cast), added in their order.
 vec3 shadeEnvironment(Surface s) {
-#if IBL && MATERIAL_CLEARCOAT
+#if IBL && (MATERIAL_CLEARCOAT || MATERIAL_SHEEN)
+  vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0);
+#if MATERIAL_SHEEN
+  // The sheen lobe is broad: it reflects about the mean radiance the irradiance averages (iblDiffuse), E of it.
+  if (s.sheenColor != vec3(0.0)) color = gSheenScale * color + s.sheenColor * gSheenE * iblDiffuse(s.normal);
+#endif
+#if MATERIAL_CLEARCOAT
   // The coat reflects the environment along its own normal, with its lobe's albedo at F 1.
-  vec2 coatDfg = iblDfg(gCoatNoV, s.clearcoatRoughness);
-  vec3 coat = iblSpecular(reflect(-s.V, s.clearcoatNormal), s.clearcoatRoughness) * (coatDfg.x + coatDfg.y);
-  vec3 color = ((1.0 - gCoatWeight) * shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0) +
-                gCoatWeight * coat) * s.occlusion;
+  if (s.clearcoat > 0.0) {
+    vec2 coatDfg = iblDfg(gCoatNoV, s.clearcoatRoughness);
+    vec3 coat = iblSpecular(reflect(-s.V, s.clearcoatNormal), s.clearcoatRoughness) * (coatDfg.x + coatDfg.y);
+    color = (1.0 - gCoatWeight) * color + gCoatWeight * coat;
+  }
+#endif
+  color *= s.occlusion;
 #elif IBL
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, s.occlusion);
 #else

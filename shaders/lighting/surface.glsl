@@ -23,6 +23,10 @@ struct Surface {
   float clearcoatRoughness;
   vec3 clearcoatNormal;
 #endif
+#if MATERIAL_SHEEN
+  vec3 sheenColor;    // KHR_materials_sheen: the fibre lobe's colour (black: none) and roughness
+  float sheenRoughness;
+#endif
 };
 
 // The point's place and view terms from its view-space position and unit normal.
