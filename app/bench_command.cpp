@@ -9,6 +9,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <sstream>
 
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/accuracy/pair_cost_report.hpp"
@@ -118,7 +119,18 @@ PairCostSettings parsePairCostSettings(const Args& args) {
 
 int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform platform) {
   PairCostReport report;
-  report.variants = selectVariants(args.get("--pair-cost"));
+  std::vector<FixtureMaterial> materials;
+  std::stringstream list(args.get("--pair-materials"));
+  for (std::string item; std::getline(list, item, ',');) materials.push_back(parseFixtureMaterial(item));
+  // Each variant on each material, the materials innermost: a lobe's cost reads beside its variant's core row.
+  std::vector<PairCostVariant> variants;
+  for (const AccuracyVariant& v : selectVariants(args.get("--pair-cost"))) {
+    for (const FixtureMaterial material : materials) {
+      report.variants.push_back(v);
+      variants.push_back(pairCostVariant(v));
+      variants.back().material = material;
+    }
+  }
   report.settings = settings;
   const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
   const std::unique_ptr<OutputFile> csvProvenance = openCsvProvenance(args);
@@ -128,8 +140,6 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   report.settings.timing = chooseTimingMode(timingRequest, context->info().renderer);
   report.provenance = collectProvenance(context->info(), report.settings.timing);
   const ShaderLibrary shaders;
-  std::vector<PairCostVariant> variants;
-  for (const AccuracyVariant& v : report.variants) variants.push_back(pairCostVariant(v));
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   report.costs = measurePairCost(shaders, variants, report.settings, [&](int done, int total) {
     if (terminal) std::fprintf(stderr, "\rpair cost: %d/%d frames timed", done, total);
@@ -170,7 +180,7 @@ int runBench(const std::vector<std::string>& argv) {
     chooseTimingMode(args.get("--timing"), "");
     return runPairCost(args, parsePairCostSettings(args), platform);
   }
-  for (const char* pairOnly : {"--pair-lights", "--rounds"}) {
+  for (const char* pairOnly : {"--pair-lights", "--rounds", "--pair-materials"}) {
     if (args.has(pairOnly)) throw UsageError(std::string(pairOnly) + " belongs to --pair-cost");
   }
   const BenchSettings settings = parseSettings(args);

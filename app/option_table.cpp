@@ -188,6 +188,10 @@ std::vector<OptionSpec> makeTable() {
       {"--pair-cost", "LIST",
        "instead of the sweep, measure ns per light-pixel pair of these accuracy-ladder variants (or all) with "
        "brute force, lights reaching every pixel, at --size"},
+      {"--pair-materials", "LIST",
+       "comma-separated materials of the cost-per-pair fixture, each variant timed on each: core, specular "
+       "(KHR_materials_ior and _specular), clearcoat (KHR_materials_clearcoat), sheen (KHR_materials_sheen)",
+       "core", ""},
       {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
        std::to_string(pairCost.lights), ""},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(pairCost.size), ""},
@@ -296,7 +300,8 @@ std::vector<Use> commandUses(Command command) {
               Use::swept("--model", listText(sweep.models, [](ShadingModel m) { return toString(m); })),
               Use("--size", sizeText(sweep.size)), Use("--warmup", std::to_string(sweep.warmup)),
               Use("--frames", std::to_string(sweep.frames)), "--max-seconds", "--constant-density", "--spot-share",
-              "--shadows", "--tonemap", "--shadow-filter", "--shadow-atlas", "--pair-cost", "--pair-lights",
+              "--shadows", "--tonemap", "--shadow-filter", "--shadow-atlas", "--pair-cost", "--pair-materials",
+              "--pair-lights",
               "--rounds", "--csv", "--json", "--trace", "--shard",
               "--timing", "--egl-platform"};
       break;

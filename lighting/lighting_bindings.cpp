@@ -25,7 +25,8 @@ ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
   using namespace lighting_binding;
   std::vector<BindingPoint> points = {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo,
                                       kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo, kSpotConeSsbo,
-                                      kAmbientAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit,
+                                      kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
+                                      kShadowAtlasUnit,
                                       kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kLayerNodeSsbo};
   points.insert(points.end(), geometry.begin(), geometry.end());
   return bindingDefines(points);

@@ -364,9 +364,30 @@ TEST_CASE("bench: --pair-cost measures finite, positive ns per light-pixel pair 
     CHECK(v["pairs_per_frame"] == 64 * 36 * 8);
   }
   const std::string csv = pbr::test::readFile(dir.file("pairs.csv"));
-  CHECK(csv.find("variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,"
+  CHECK(csv.find("variant,material,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,"
                  "ns_per_pair_p10,ns_per_pair_p90") != std::string::npos);
-  CHECK(csv.find("\nblinn-phong,blinn-phong,") != std::string::npos);
+  CHECK(csv.find("\nblinn-phong,core,blinn-phong,") != std::string::npos);
+}
+
+TEST_CASE("bench: --pair-materials times each variant on the fixture with each glTF extension's lobe") {
+  const TempDir dir;
+  const PbrRun run = pbr::test::runPbr(dir, {"bench", "--pair-cost", "default", "--pair-materials",
+                                             "core,specular,clearcoat,sheen", "--size", "32x18", "--pair-lights", "4",
+                                             "--rounds", "1", "--json", dir.file("pairs.json")});
+  REQUIRE(run.exitCode == 0);
+  const nlohmann::json doc = nlohmann::json::parse(pbr::test::readFile(dir.file("pairs.json")));
+  REQUIRE(doc["variants"].size() == 4);
+  const char* materials[] = {"core", "specular", "clearcoat", "sheen"};
+  for (size_t i = 0; i < 4; ++i) {
+    CHECK(doc["variants"][i]["variant"] == "default");
+    CHECK(doc["variants"][i]["material"] == materials[i]);
+    const double median = doc["variants"][i]["ns_per_pair"]["median"];
+    CHECK(std::isfinite(median));
+    CHECK(median > 0.0);
+  }
+  const PbrRun bad = pbr::test::runPbr(dir, {"bench", "--pair-cost", "default", "--pair-materials", "velvet"});
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.err.find("unknown fixture material 'velvet'") != std::string::npos);
 }
 
 TEST_CASE("bench: a sweep run as 2 shards under GNU parallel merges into the rows and keys of the unsharded run") {

@@ -1,6 +1,8 @@
 #include "app/accuracy/pair_cost.hpp"
 
+#include <map>
 #include <memory>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -8,7 +10,48 @@
 
 namespace pbr {
 
-Scene pairCostScene(int lights) {
+FixtureMaterial parseFixtureMaterial(const std::string& name) {
+  for (const FixtureMaterial m :
+       {FixtureMaterial::Core, FixtureMaterial::Specular, FixtureMaterial::Clearcoat, FixtureMaterial::Sheen}) {
+    if (name == toString(m)) return m;
+  }
+  throw std::invalid_argument("unknown fixture material '" + name + "' (expected core, specular, clearcoat or sheen)");
+}
+
+const char* toString(FixtureMaterial material) {
+  switch (material) {
+    case FixtureMaterial::Core: return "core";
+    case FixtureMaterial::Specular: return "specular";
+    case FixtureMaterial::Clearcoat: return "clearcoat";
+    case FixtureMaterial::Sheen: return "sheen";
+  }
+  return "?";
+}
+
+namespace {
+
+Material withLobe(Material m, FixtureMaterial material) {
+  switch (material) {
+    case FixtureMaterial::Core: break;
+    case FixtureMaterial::Specular:
+      m.ior = 1.33f;
+      m.specularColor = {1.0f, 0.8f, 0.6f};
+      break;
+    case FixtureMaterial::Clearcoat:
+      m.clearcoat = 1.0f;
+      m.clearcoatRoughness = 0.1f;
+      break;
+    case FixtureMaterial::Sheen:
+      m.sheenColor = {1.0f, 0.8f, 0.6f};
+      m.sheenRoughness = 0.5f;
+      break;
+  }
+  return m;
+}
+
+}  // namespace
+
+Scene pairCostScene(int lights, FixtureMaterial material) {
   Scene s;
   s.name = "pair-cost";
   s.camera.position = {0.0f, 3.0f, 0.0f};
@@ -18,8 +61,8 @@ Scene pairCostScene(int lights) {
   s.camera.nearPlane = 0.1f;
   s.camera.farPlane = 20.0f;
   s.addShape(Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(20.0f, 1.0f, 20.0f)),
-             {glm::vec3(0.6f, 0.5f, 0.4f), 0.4f, 0.0f});
-  Material pane{glm::vec3(0.4f, 0.5f, 0.6f), 0.4f, 0.0f};
+             withLobe({glm::vec3(0.6f, 0.5f, 0.4f), 0.4f, 0.0f}, material));
+  Material pane = withLobe({glm::vec3(0.4f, 0.5f, 0.6f), 0.4f, 0.0f}, material);
   pane.alpha = 0.5f;
   pane.alphaMode = AlphaMode::Blend;
   s.addShape(Shape::Plane,
@@ -39,7 +82,12 @@ Scene pairCostScene(int lights) {
 std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::vector<PairCostVariant>& variants,
                                       const PairCostSettings& settings,
                                       const std::function<void(int, int)>& progress) {
-  const Scene scene = pairCostScene(settings.lights);
+  // One fixture per material in use; a node of the map stays where it is, as each Renderer keeps its scene.
+  std::map<FixtureMaterial, Scene> scenes;
+  for (const PairCostVariant& v : variants) {
+    if (!scenes.count(v.material)) scenes.emplace(v.material, pairCostScene(settings.lights, v.material));
+  }
+  const std::vector<PointLight>& sceneLights = scenes.begin()->second.lights;  // the same seeded lights in each
   struct Run {
     std::unique_ptr<Renderer> renderer;
     FrameOptions options;
@@ -50,7 +98,8 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   for (const PairCostVariant& v : variants) {
     RendererConfig config = v.config;
     config.sizeOption = settings.sizeOption;
-    Run run{std::make_unique<Renderer>(shaders, scene, settings.size.x, settings.size.y, config), v.options,
+    Run run{std::make_unique<Renderer>(shaders, scenes.at(v.material), settings.size.x, settings.size.y, config),
+            v.options,
             {}, {}, {}, {}};
     run.options.culling = Culling::None;
     run.options.stats = false;
@@ -67,7 +116,7 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
       run.renderer->renderFrame(run.options, profiler);
       run.renderer->setLights(none);
       run.renderer->renderFrame(run.options, profiler);
-      run.renderer->setLights(scene.lights);
+      run.renderer->setLights(sceneLights);
       const std::vector<FrameTiming> frames = profiler.takeResults(true);
       run.withLights.push_back(frames.at(0).pass("lighting"));
       run.withoutLights.push_back(frames.at(1).pass("lighting"));
@@ -90,7 +139,8 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   };
   for (size_t i = 0; i < runs.size(); ++i) {
     const Run& r = runs[i];
-    PairCost c{variants[i].name, perPair(r.withLights), fixedShare(r.withLights, r.withoutLights), pairs,
+    PairCost c{variants[i].name, variants[i].material, perPair(r.withLights), fixedShare(r.withLights, r.withoutLights),
+               pairs,
                perPair(r.blendedWithLights), fixedShare(r.blendedWithLights, r.blendedWithoutLights)};
     out.push_back(c);
   }

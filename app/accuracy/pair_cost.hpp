@@ -23,14 +23,23 @@ struct PairCostSettings {
   TimingMode timing = TimingMode::Serializing;
 };
 
+// The material of the fixture's surfaces: the core metal-rough material, or it with one glTF extension's lobe
+// (ior 1.33 with a tinted specular colour, a clear coat of roughness 0.1, a sheen of roughness 0.5), whose per-pair
+// cost is then what the lobe adds.
+enum class FixtureMaterial { Core, Specular, Clearcoat, Sheen };
+FixtureMaterial parseFixtureMaterial(const std::string& name);  // "core", "specular", "clearcoat", "sheen"
+const char* toString(FixtureMaterial material);
+
 struct PairCostVariant {
   std::string name;
   FrameOptions options;  // model and variant; culling is forced to none
   RendererConfig config;
+  FixtureMaterial material = FixtureMaterial::Core;
 };
 
 struct PairCost {
   std::string name;
+  FixtureMaterial material = FixtureMaterial::Core;
   TimeSummary nsPerPair;  // ns per evaluated light-pixel pair (the summary's fields, in ns, not ms)
   // Median lighting pass with no lights over the median with `lights`: the share of per-pixel work that is not
   // per pair (reading the G-buffer, ambient, the store), which the ratio includes.
@@ -44,7 +53,7 @@ struct PairCost {
 // The fixture: a matte-to-glossy dielectric floor seen from above, filling a 16:9 frame, under a BLEND pane (alpha
 // 0.5) filling it too, and `lights` seeded lights in a layer above both with radii far larger than the scene. The
 // lighting pass shades the floor's pairs, the transparency pass the pane's: the same pixels and lights.
-Scene pairCostScene(int lights);
+Scene pairCostScene(int lights, FixtureMaterial material = FixtureMaterial::Core);
 
 // Times every variant's lighting and transparency passes `rounds` times, visiting the variants in turn (A B C A B C ...) so that a
 // drift of a shared machine hits all alike; each round also times the pass with no lights for fixedShare.

@@ -27,16 +27,19 @@ KeyValues pairCostCsvProvenance(const PairCostReport& report) {
 
 void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
   const PairCostSettings& s = report.settings;
-  out << "variant,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,ns_per_pair_p10,"
+  out << "variant,material,model,terms,hdr_format,gbuffer,width,height,lights,rounds,ns_per_pair_median,"
+         "ns_per_pair_p10,"
          "ns_per_pair_p90,ns_per_pair_min,ns_per_pair_max,fixed_share,pairs_per_frame,transparent_ns_per_pair_median,"
          "transparent_ns_per_pair_p10,transparent_ns_per_pair_p90,transparent_fixed_share\n";
   for (size_t i = 0; i < report.costs.size(); ++i) {
     const AccuracyVariant& v = report.variants[i];
     const PairCost& c = report.costs[i];
-    out << v.name << ',' << toString(v.model()) << ",\"" << terms(v) << "\"," << toString(v.hdr()) << ','
-        << toString(v.gbuffer()) << ',' << s.size.x << ',' << s.size.y << ',' << s.lights << ',' << s.rounds << ','
-        << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ',' << fixedDecimals(c.nsPerPair.p90, 4) << ','
-        << fixedDecimals(c.nsPerPair.min, 4) << ',' << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
+    out << v.name << ',' << toString(c.material) << ',' << toString(v.model()) << ",\"" << terms(v) << "\","
+        << toString(v.hdr()) << ',' << toString(v.gbuffer()) << ',' << s.size.x << ',' << s.size.y << ','
+        << s.lights << ',' << s.rounds << ','
+        << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ','
+        << fixedDecimals(c.nsPerPair.p90, 4) << ',' << fixedDecimals(c.nsPerPair.min, 4) << ','
+        << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
         << c.pairs << ',' << fixedDecimals(c.transparentNsPerPair.median, 4) << ','
         << fixedDecimals(c.transparentNsPerPair.p10, 4) << ',' << fixedDecimals(c.transparentNsPerPair.p90, 4) << ','
         << fixedDecimals(c.transparentFixedShare, 4) << '\n';
@@ -53,6 +56,7 @@ void writePairCostJson(std::ostream& out, const PairCostReport& report) {
     const AccuracyVariant& v = report.variants[i];
     const PairCost& c = report.costs[i];
     variants.push_back({{"variant", v.name},
+                        {"material", toString(c.material)},
                         {"model", toString(v.model())},
                         {"terms", terms(v)},
                         {"hdr_format", toString(v.hdr())},
@@ -88,14 +92,15 @@ void printPairCostTable(std::ostream& out, const PairCostReport& report) {
       << report.provenance.get("timing_mode") << "\n"
       << report.provenance.get("gl_renderer") << ": " << report.provenance.get("timing_note") << "\n";
   char line[160];
-  std::snprintf(line, sizeof line, "%-16s %10s %17s %12s %16s %17s %12s\n", "variant", "ns/pair", "p10-p90",
-                "fixed share", "transparent ns", "p10-p90", "fixed share");
+  std::snprintf(line, sizeof line, "%-16s %-10s %10s %17s %12s %16s %17s %12s\n", "variant", "material", "ns/pair",
+                "p10-p90", "fixed share", "transparent ns", "p10-p90", "fixed share");
   out << line;
   for (size_t i = 0; i < report.costs.size(); ++i) {
     const PairCost& c = report.costs[i];
     const TimeSummary& t = c.transparentNsPerPair;
-    std::snprintf(line, sizeof line, "%-16s %10.3f %8.3f-%-8.3f %11.1f%% %16.3f %8.3f-%-8.3f %11.1f%%\n",
-                  report.variants[i].name.c_str(), c.nsPerPair.median, c.nsPerPair.p10, c.nsPerPair.p90,
+    std::snprintf(line, sizeof line, "%-16s %-10s %10.3f %8.3f-%-8.3f %11.1f%% %16.3f %8.3f-%-8.3f %11.1f%%\n",
+                  report.variants[i].name.c_str(), toString(c.material), c.nsPerPair.median, c.nsPerPair.p10,
+                  c.nsPerPair.p90,
                   c.fixedShare * 100.0, t.median, t.p10, t.p90, c.transparentFixedShare * 100.0);
     out << line;
   }

@@ -13,8 +13,8 @@ namespace pbr {
 struct PairCostReport {
   Provenance provenance;
   PairCostSettings settings;
-  std::vector<AccuracyVariant> variants;
-  std::vector<PairCost> costs;  // one per variant, same order
+  std::vector<AccuracyVariant> variants;  // a row's variant: each of --pair-cost's, once per fixture material
+  std::vector<PairCost> costs;            // one per row, same order, with the row's fixture material
 };
 
 // CSV: a header row, then one row per variant; its provenance file (csv_provenance.hpp) holds the provenance and
