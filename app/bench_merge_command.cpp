@@ -9,7 +9,7 @@
 #include "app/commands.hpp"
 #include "app/file_clash.hpp"
 #include "core/output_file.hpp"
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

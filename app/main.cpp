@@ -9,7 +9,7 @@
 #include "core/context.hpp"
 #include "core/messages.hpp"
 #include "core/output_file.hpp"
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace {
 

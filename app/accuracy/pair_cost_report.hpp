@@ -5,7 +5,7 @@
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/accuracy/pair_cost.hpp"
 #include "app/bench/csv_provenance.hpp"
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

@@ -6,7 +6,7 @@
 
 #include "core/context.hpp"
 #include "core/json_text.hpp"
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

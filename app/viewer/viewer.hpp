@@ -12,7 +12,7 @@
 #include "app/viewer/pass_history.hpp"
 #include "renderer/renderer.hpp"
 #include "core/builtin_scenes.hpp"
-#include "core/window_context.hpp"
+#include "app/viewer/window_context.hpp"
 
 namespace pbr {
 

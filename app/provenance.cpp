@@ -1,4 +1,4 @@
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 #include <sched.h>
 #include <sys/resource.h>

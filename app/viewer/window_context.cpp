@@ -1,4 +1,4 @@
-#include "core/window_context.hpp"
+#include "app/viewer/window_context.hpp"
 
 #include <GLFW/glfw3.h>
 
