@@ -22,8 +22,9 @@
 #include "app/accuracy/transparency_rows.hpp"
 #include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
-#include "core/context.hpp"
-#include "core/output_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/io/image_output.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

@@ -22,8 +22,8 @@
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
-#include "core/context.hpp"
-#include "core/output_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

@@ -8,7 +8,7 @@
 #include "app/bench/trace_writer.hpp"
 #include "app/commands.hpp"
 #include "app/file_clash.hpp"
-#include "core/output_file.hpp"
+#include "core/io/output_file.hpp"
 #include "app/provenance.hpp"
 
 namespace pbr {

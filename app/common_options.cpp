@@ -1,6 +1,6 @@
 #include "app/common_options.hpp"
 
-#include "core/context.hpp"
+#include "core/io/context_info.hpp"
 
 namespace pbr {
 

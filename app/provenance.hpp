@@ -3,8 +3,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/context.hpp"
-#include "core/profiler.hpp"
+#include "core/io/context_info.hpp"
+#include "core/io/frame_timing.hpp"
 
 namespace pbr {
 

@@ -2,7 +2,7 @@
 #include <map>
 #include <string>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 
 namespace pbr {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
 
 namespace pbr {
 

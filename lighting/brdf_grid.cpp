@@ -1,6 +1,6 @@
 #include "lighting/brdf_grid.hpp"
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
 
 namespace pbr {
 

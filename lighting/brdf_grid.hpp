@@ -4,9 +4,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/binding_table.hpp"
-#include "core/shader_library.hpp"
-#include "core/shading_model.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 

@@ -6,9 +6,9 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/gl_objects.hpp"
-#include "core/scene.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr {
 

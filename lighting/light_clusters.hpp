@@ -7,11 +7,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/blended_surfaces.hpp"
-#include "core/bounds.hpp"
-#include "core/frame_block.hpp"
-#include "core/program_cache.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/blended_surfaces.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/bounds.hpp"
+#include "core/scene/frame_block.hpp"
 #include "lighting/assign_shape_trials.hpp"
 #include "lighting/cluster_block.hpp"
 #include "lighting/light_buffer.hpp"

@@ -6,16 +6,16 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/blended_surfaces.hpp"
-#include "core/environment_maps.hpp"
-#include "core/frame_block.hpp"
-#include "core/program_cache.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/blended_surfaces.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/shadow_maps.hpp"
+#include "core/gl/uniform_buffer.hpp"
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/light_clusters.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <string>
 
-#include "core/gl_objects.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/program_cache.hpp"
 
 namespace pbr {
 

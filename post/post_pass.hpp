@@ -4,10 +4,10 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/binding_table.hpp"
-#include "core/program_cache.hpp"
-#include "core/uniform_buffer.hpp"
-#include "core/tone_curve.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/tone_curve.hpp"
 #include "post/exposure_meter.hpp"
 
 namespace pbr {

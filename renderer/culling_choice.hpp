@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "core/gl_objects.hpp"
-#include "core/shading_model.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "renderer/renderer_config.hpp"
-#include "core/gl.hpp"
+#include "core/gl/hdr_format.hpp"
 
 namespace pbr {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/gl.hpp"
+#include "core/gl/gl.hpp"
 
 namespace pbr {
 

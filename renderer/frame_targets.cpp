@@ -1,5 +1,6 @@
 #include "renderer/frame_targets.hpp"
 
+#include "core/gl/hdr_format.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "renderer/frame_limits.hpp"
 

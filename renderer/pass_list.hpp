@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/profiler.hpp"
+#include "core/gl/profiler.hpp"
 
 namespace pbr {
 

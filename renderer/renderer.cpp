@@ -5,11 +5,11 @@
 #include <optional>
 #include <stdexcept>
 
-#include "core/context.hpp"
-#include "core/exposure.hpp"
-#include "core/gpu_mesh.hpp"
-#include "core/gpu_texture.hpp"
-#include "core/readback.hpp"
+#include "core/gl/context.hpp"
+#include "core/gl/gpu_mesh.hpp"
+#include "core/gl/gpu_texture.hpp"
+#include "core/gl/readback.hpp"
+#include "core/scene/exposure.hpp"
 
 namespace pbr {
 

@@ -4,15 +4,16 @@
 #include <optional>
 #include <string>
 
-#include "core/frame_block.hpp"
-#include "core/frame_capture.hpp"
-#include "core/image.hpp"
-#include "core/profiler.hpp"
-#include "core/scene.hpp"
-#include "core/shader_library.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
-#include "core/tone_curve.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/gl/frame_capture.hpp"
+#include "core/scene/image.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/scene/scene.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/shadow_settings.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/tone_curve.hpp"
+#include "core/scene/transparency.hpp"
 #include "debug/debug_channel.hpp"
 #include "renderer/culling_choice.hpp"
 #include "renderer/tile_trials.hpp"
@@ -115,7 +116,7 @@ class Renderer {
   WarmUpReport warmUp(const FrameOptions& options, Profiler& profiler, int frames);
 
   // Marks the `frame`-th frame this renderer renders (counting every renderFrame from 1, warm-up frames included)
-  // for graphics debuggers, as `capturer` says (core/frame_capture.hpp). `capturer` must outlive that frame.
+  // for graphics debuggers, as `capturer` says (core/gl/frame_capture.hpp). `capturer` must outlive that frame.
   void captureFrame(int frame, const FrameCapturer& capturer);
 
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
@@ -150,7 +151,7 @@ class Renderer {
   // Whether any light casts under `mode` (cached until the lights change).
   bool shadowed(ShadowMode mode);
   // The shadow pass: plans the views from where the surfaces are (the cluster occupancy) and renders them.
-  // The scene's BLEND surfaces as the lighting module draws them (core/blended_surfaces.hpp).
+  // The scene's BLEND surfaces as the lighting module draws them (core/gl/blended_surfaces.hpp).
   // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
   BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);

@@ -1,10 +1,10 @@
 #pragma once
 #include <string>
 
-#include "core/profiler.hpp"
+#include "core/gl/profiler.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/light_clusters.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 

@@ -11,7 +11,7 @@
 
 #include "app/accuracy/pair_cost.hpp"
 #include "app/bench/bench_sweep.hpp"
-#include "core/context.hpp"
+#include "core/io/context_info.hpp"
 #include "post/fxaa_pass.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "core/builtin_scenes.hpp"
-#include "core/frame_capture.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/frame_capture.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "renderer/renderer.hpp"

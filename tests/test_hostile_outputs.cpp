@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 #include "renderer/frame_limits.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/binding_table.hpp"
-#include "core/environment_maps.hpp"
-#include "core/gl_objects.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/shader_library.hpp"
 #include "gbuffer/gbuffer_bindings.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "debug/debug_channel.hpp"
@@ -20,7 +20,7 @@
 #include "lighting/light_clusters.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 #include "post/post_pass.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/shader_tree.hpp"

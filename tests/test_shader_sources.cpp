@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "core/binding_table.hpp"
-#include "core/frame_block.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/gl/shader_library.hpp"
 #include "gbuffer/gbuffer_bindings.hpp"
 #include "lighting/brdf_grid.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 #include "post/post_pass.hpp"
 #include "tests/shader_tree.hpp"
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "core/readback.hpp"
+#include "core/gl/readback.hpp"
 #include "post/post_pass.hpp"
 
 namespace pbr {

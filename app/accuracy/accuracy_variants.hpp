@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "app/accuracy/pair_cost.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/scene.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/scene.hpp"
 #include "gbuffer/gbuffer.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {

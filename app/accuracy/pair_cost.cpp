@@ -4,7 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/random.hpp"
+#include "core/scene/random.hpp"
 
 namespace pbr {
 

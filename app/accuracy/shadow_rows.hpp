@@ -7,7 +7,7 @@
 #include "app/accuracy/accuracy_metrics.hpp"
 #include "app/accuracy/accuracy_variants.hpp"
 #include "app/accuracy/shadow_metrics.hpp"
-#include "core/shadow_maps.hpp"
+#include "core/scene/shadow_settings.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {

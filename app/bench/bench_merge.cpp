@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/context.hpp"
-#include "core/json_text.hpp"
+#include "core/io/context_info.hpp"
+#include "core/scene/json_text.hpp"
 #include "app/provenance.hpp"
 
 namespace pbr {

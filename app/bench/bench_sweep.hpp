@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/profiler.hpp"
+#include "core/io/frame_timing.hpp"
 
 namespace pbr {
 

@@ -11,7 +11,7 @@
 #include "app/viewer/orbit_camera.hpp"
 #include "app/viewer/pass_history.hpp"
 #include "renderer/renderer.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "app/viewer/window_context.hpp"
 
 namespace pbr {

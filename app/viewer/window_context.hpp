@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 
-#include "core/context.hpp"
+#include "core/gl/context.hpp"
 
 struct GLFWwindow;
 

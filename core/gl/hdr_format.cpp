@@ -1,0 +1,14 @@
+#include "core/gl/hdr_format.hpp"
+
+namespace pbr {
+
+GLenum glInternalFormat(HdrFormat format) {
+  switch (format) {
+    case HdrFormat::Rgba16f: return GL_RGBA16F;
+    case HdrFormat::R11g11b10f: return GL_R11F_G11F_B10F;
+    case HdrFormat::Rgba32f: return GL_RGBA32F;
+  }
+  return GL_RGBA16F;
+}
+
+}  // namespace pbr
