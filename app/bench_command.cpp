@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "app/accuracy/accuracy_variants.hpp"
+#include "app/accuracy/pair_cost.hpp"
 #include "app/accuracy/pair_cost_report.hpp"
 #include "app/args.hpp"
 #include "app/bench/bench_progress.hpp"

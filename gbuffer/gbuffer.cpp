@@ -4,14 +4,6 @@
 
 namespace pbr {
 
-GBufferPrecision parseGBufferPrecision(const std::string& name) {
-  if (name == "lean") return GBufferPrecision::Lean;
-  if (name == "float") return GBufferPrecision::Float;
-  throw std::invalid_argument("unknown G-buffer precision '" + name + "' (expected lean or float)");
-}
-
-const char* toString(GBufferPrecision precision) { return precision == GBufferPrecision::Lean ? "lean" : "float"; }
-
 GBufferFormats gbufferFormats(GBufferPrecision p) {
   if (p == GBufferPrecision::Lean) return {GL_SRGB8_ALPHA8, GL_RG16, GL_RGBA8, GL_DEPTH_COMPONENT32F};
   return {GL_RGBA32F, GL_RG32F, GL_RGBA32F, GL_DEPTH_COMPONENT32F};

@@ -1,16 +1,10 @@
 #pragma once
 #include <cstddef>
-#include <string>
 
 #include "core/gl/gl_objects.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
 
 namespace pbr {
-
-// Lean: the 16-byte layout of gbuffer/README.md. Float: the same channels unquantised (RGBA32F base colour and
-// material, RG32F octahedral normal; 44 bytes per pixel), to measure what the lean layout's quantisation costs.
-enum class GBufferPrecision { Lean, Float };
-GBufferPrecision parseGBufferPrecision(const std::string& name);  // "lean" | "float"
-const char* toString(GBufferPrecision precision);
 
 // The internal formats of the attachments for a precision (the frame-size check asks the driver about them).
 struct GBufferFormats {
@@ -24,11 +18,8 @@ GBufferFormats gbufferFormats(GBufferPrecision precision);
 struct GBuffer {
   GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean);
 
-  static constexpr int kBytesPerPixel = 4 + 4 + 4 + 4;
-  static constexpr int kFloatBytesPerPixel = 16 + 8 + 16 + 4;
   size_t bytes() const {
-    return static_cast<size_t>(width) * static_cast<size_t>(height) *
-           (precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel);
+    return static_cast<size_t>(width) * static_cast<size_t>(height) * gbufferBytesPerPixel(precision);
   }
 
   int width, height;

@@ -53,6 +53,9 @@ constexpr BindingPoint kLayerNodeSsbo{"LAYER_NODE_SSBO", BindingKind::StorageBuf
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 }  // namespace lighting_binding
 
+// Where shaders/lighting/brdf_grid.comp writes its values (evaluateBrdfGrid, brdf_grid.hpp), a program run alone.
+constexpr BindingPoint kBrdfGridSsbo{"BRDF_GRID_SSBO", BindingKind::StorageBuffer, 0};
+
 // The frame block's, the lighting module's, the environment maps' and the shadow maps' points: everything bound
 // while the lighting module's programs run.
 ShaderDefines lightingBindingDefines();

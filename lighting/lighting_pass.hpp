@@ -15,6 +15,7 @@
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/light_clusters.hpp"
+#include "lighting/lighting_options.hpp"
 #include "core/scene/shading_model.hpp"
 
 namespace pbr {
@@ -64,27 +65,6 @@ size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes);
 // kMaxLayersPerPixel nearest); waits for the GPU.
 uint32_t readDroppedLayers(const Buffer& lists);
 
-struct LightingOptions {
-  ShadingModel model = ShadingModel::Pbr;
-  ShadingVariant variant;  // PBR only
-  glm::vec3 ambient{0.0f};
-  bool stats = false;  // count light-pixel pairs (evaluated, contributing) on the GPU
-  // PBR only: image-based lighting from these maps replaces `ambient`, and pixels without geometry show the
-  // environment. Null: uniform ambient light.
-  const EnvironmentMaps* environment = nullptr;
-  // Non-null: the pass also counts each pixel's light-pixel pairs into this RG32UI image of the frame's size
-  // (evaluated, contributing), what the efficiency debug view shows.
-  const Texture* pairCounts = nullptr;
-  // Non-null: lights with shadow views in these maps are shaded with their visibility, sampled by this filter.
-  const ShadowMaps* shadows = nullptr;
-  ShadowFilter shadowFilter = ShadowFilter::Pcf3x3;
-  // Non-null (with shadows): the pass also sums each pixel's light from casting lights into this RG32F image of the
-  // frame's size (luminance with, and without, its shadows), what the shadows debug view shows.
-  const Texture* shadowLight = nullptr;
-  // The G-buffer holds unlit surfaces (hasUnlitSurface): pixels it flags so take no light.
-  bool unlitSurfaces = false;
-};
-
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
 // over at most: one iteration each, with room for the pass's few other loops under llvmpipe's 65535 iterations per
 // invocation. More take several dispatches (LIGHT_CHUNKS). Shading every light, a dispatch takes one uniform-buffer
@@ -94,11 +74,6 @@ constexpr uint32_t kLightsPerDispatch = 32768;
 // The brute-force path's light window: kLightWindowMax lights, or the largest power of two of them that the
 // driver's uniform blocks hold.
 uint32_t lightWindowLights();
-
-struct PairCounts {
-  uint64_t evaluated = 0;
-  uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
-};
 
 // Deferred lighting in a compute shader; one permutation per (model, variant, radiance format, culling, stats,
 // IBL, spot lights present, shadow filter or none), compiled on first use.
@@ -133,11 +108,6 @@ class LightingPass {
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
-
-  // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
-  static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
-                                   bool chunked = false, bool spotLights = false,
-                                   uint32_t lightWindow = kLightWindowMax);
 
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked,

@@ -4,7 +4,7 @@
 
 #include "core/gl/gl_objects.hpp"
 #include "core/gl/program_cache.hpp"
-#include "core/scene/binding_table.hpp"
+#include "post/post_bindings.hpp"
 
 namespace pbr {
 
@@ -35,9 +35,6 @@ struct ExposureState {
   uint32_t bins[kMeterBins];
 };
 static_assert(sizeof(ExposureState) == 16 + 4 * kMeterBins, "ExposureState must match its std430 layout");
-
-// The meter's state, one binding point for C++ and GLSL (the histogram, the adaptation and the post pass).
-constexpr BindingPoint kExposureSsbo{"EXPOSURE_SSBO", BindingKind::StorageBuffer, 19};
 
 // What a frame's metering says, read back for reports.
 struct MeteredExposure {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/gl/profiler.hpp"
 #include "core/gl/program_cache.hpp"
 #include "core/gl/readback.hpp"
 #include "post/post_pass.hpp"

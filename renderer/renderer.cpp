@@ -13,6 +13,18 @@
 
 namespace pbr {
 
+namespace {
+
+// Runs the passes in order, each timed as a pass of the profiler's current frame.
+void runPassList(const PassList& passes, Profiler& profiler) {
+  for (const FramePass& pass : passes) {
+    ScopedPass scope(profiler, pass.name.c_str());
+    pass.run();
+  }
+}
+
+}  // namespace
+
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height,
                    const RendererConfig& config)
     : sceneData_(scene),
@@ -429,12 +441,6 @@ LightStats Renderer::lightStats() const {
   const Buffer* lists = targets_->layerListsIfMade();
   if (lastOptions_.transparency == Transparency::Exact && lists) s.droppedLayers = readDroppedLayers(*lists);
   return s;
-}
-
-RendererConfig measuredGrid() {
-  RendererConfig config;
-  config.clusters.tileTrial = true;
-  return config;
 }
 
 }  // namespace pbr

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/scene/image.hpp"
-#include "renderer/frame_limits.hpp"
+#include "renderer/driver_limits.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/scene/random.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "app/accuracy/pair_cost.hpp"
+#include "app/accuracy/pair_cost_settings.hpp"
 #include "app/bench/csv_provenance.hpp"
 #include "app/provenance.hpp"
 

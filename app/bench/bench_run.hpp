@@ -5,6 +5,7 @@
 
 #include "app/bench/bench_sweep.hpp"
 #include "core/gl/shader_library.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 

@@ -6,7 +6,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "renderer/renderer.hpp"
+#include "renderer/frame_options.hpp"
 #include "core/io/frame_timing.hpp"
 
 namespace pbr {

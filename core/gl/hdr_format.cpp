@@ -11,4 +11,12 @@ GLenum glInternalFormat(HdrFormat format) {
   return GL_RGBA16F;
 }
 
+HdrFormat hdrFormatOf(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_R11F_G11F_B10F: return HdrFormat::R11g11b10f;
+    case GL_RGBA32F: return HdrFormat::Rgba32f;
+    default: return HdrFormat::Rgba16f;
+  }
+}
+
 }  // namespace pbr
