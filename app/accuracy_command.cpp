@@ -10,6 +10,7 @@
 #include "renderer/frame_limits.hpp"
 #include "app/accuracy/accuracy_metrics.hpp"
 #include "app/accuracy/accuracy_variants.hpp"
+#include "app/accuracy/pair_cost.hpp"
 #include "app/args.hpp"
 #include "app/bench/bench_report.hpp"
 #include "app/bench/chart_script.hpp"
@@ -19,12 +20,13 @@
 #include "app/common_options.hpp"
 #include "app/accuracy/error_map.hpp"
 #include "app/accuracy/shadow_cost.hpp"
-#include "app/accuracy/shadow_rows.hpp"
+#include "app/accuracy/shadow_comparison.hpp"
 #include "app/accuracy/transparency_rows.hpp"
 #include "renderer/offscreen.hpp"
 #include "app/scene_source.hpp"
-#include "core/context.hpp"
-#include "core/output_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/io/image_output.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app/accuracy/accuracy_variants.hpp"
+#include "app/accuracy/pair_cost.hpp"
 #include "app/accuracy/pair_cost_report.hpp"
 #include "app/args.hpp"
 #include "app/bench/bench_progress.hpp"
@@ -24,8 +25,8 @@
 #include "app/common_options.hpp"
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
-#include "core/context.hpp"
-#include "core/output_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

@@ -9,8 +9,8 @@
 #include "app/commands.hpp"
 #include "app/option_table.hpp"
 #include "app/file_clash.hpp"
-#include "core/output_file.hpp"
-#include "core/provenance.hpp"
+#include "core/io/output_file.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

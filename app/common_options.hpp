@@ -2,10 +2,10 @@
 #include <string>
 
 #include "app/args.hpp"
-#include "core/blended_surfaces.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/tone_curve.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/shadow_settings.hpp"
+#include "core/scene/tone_curve.hpp"
+#include "core/scene/transparency.hpp"
 
 namespace pbr {
 

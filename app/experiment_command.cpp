@@ -9,8 +9,9 @@
 #include "app/common_options.hpp"
 #include "app/experiments/experiments.hpp"
 #include "app/scene_source.hpp"
-#include "core/context.hpp"
-#include "core/output_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/io/image_output.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "app/args.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/output_file.hpp"
+#include "core/io/output_file.hpp"
+#include "core/scene/builtin_scenes.hpp"
 
 namespace pbr {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/bounds.hpp"
+#include "core/scene/bounds.hpp"
 
 namespace pbr {
 

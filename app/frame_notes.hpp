@@ -4,8 +4,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/image.hpp"
-#include "core/scene.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr {
 

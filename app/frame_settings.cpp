@@ -4,7 +4,7 @@
 
 #include "app/common_options.hpp"
 #include "debug/debug_channel.hpp"
-#include "post/fxaa_pass.hpp"
+#include "post/anti_aliasing.hpp"
 
 namespace pbr {
 

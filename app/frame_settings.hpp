@@ -1,7 +1,8 @@
 #pragma once
 #include "app/args.hpp"
 #include "app/render_settings.hpp"
-#include "renderer/renderer.hpp"
+#include "renderer/frame_options.hpp"
+#include "renderer/renderer_config.hpp"
 
 namespace pbr {
 

@@ -6,10 +6,10 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
-#include "core/context.hpp"
-#include "core/messages.hpp"
-#include "core/output_file.hpp"
-#include "core/provenance.hpp"
+#include "core/gl/context.hpp"
+#include "core/scene/messages.hpp"
+#include "core/io/output_file.hpp"
+#include "app/provenance.hpp"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "app/bench/bench_report_reader.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/json_file.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/json_file.hpp"
 
 namespace pbr {
 

@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "app/args.hpp"
-#include "core/exposure.hpp"
-#include "core/messages.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/messages.hpp"
+#include "core/scene/scene_json.hpp"
 
 namespace pbr {
 

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "app/args.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 
 namespace pbr {
 

@@ -9,7 +9,7 @@
 #include "app/file_clash.hpp"
 #include "app/scene_source.hpp"
 #include "app/viewer/viewer.hpp"
-#include "core/image.hpp"
+#include "core/io/image_output.hpp"
 
 namespace pbr {
 

@@ -4,7 +4,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/frame_block.hpp"
+#include "core/scene/frame_block.hpp"
 #include "debug/debug_channel.hpp"
 
 namespace pbr {

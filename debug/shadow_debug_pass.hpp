@@ -1,9 +1,9 @@
 #pragma once
 
-#include "core/frame_block.hpp"
-#include "core/program_cache.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/shadow_maps.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/frame_block.hpp"
 #include "debug/debug_legend.hpp"
 
 namespace pbr {

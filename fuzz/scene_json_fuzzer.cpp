@@ -1,11 +1,11 @@
-// Scene files (core/scene_json.*, core/json_file.*): the whole loadSceneFile path, with the glTF models and PNG
+// Scene files (core/scene/scene_json.*, core/scene/json_file.*): the whole loadSceneFile path, with the glTF models and PNG
 // textures a scene names. A rejected file throws SceneError (a std::runtime_error); any other exception escapes
 // and is reported as a crash, as it would abort the renderer's message for the file.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "fuzz/temp_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,18 +1,11 @@
 #pragma once
 #include <cstddef>
 #include <optional>
-#include <string>
 
-#include "core/gl_objects.hpp"
-#include "core/scene.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
 
 namespace pbr {
-
-// Lean: the 16-byte layout of gbuffer/README.md. Float: the same channels unquantised (RGBA32F base colour and
-// material, RG32F octahedral normal; 44 bytes per pixel), to measure what the lean layout's quantisation costs.
-enum class GBufferPrecision { Lean, Float };
-GBufferPrecision parseGBufferPrecision(const std::string& name);  // "lean" | "float"
-const char* toString(GBufferPrecision precision);
 
 // The internal formats of the attachments for a precision (the frame-size check asks the driver about them).
 struct GBufferFormats {
@@ -20,21 +13,6 @@ struct GBufferFormats {
 };
 GBufferFormats gbufferFormats(GBufferPrecision precision);
 
-// The channels a scene's materials need beyond the core metal-rough ones (gbuffer/README.md): chosen when the scene
-// loads, so that a scene whose materials use no extension keeps the 16-byte layout and its programs.
-struct GBufferLayout {
-  bool specular = false;   // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
-  bool clearcoat = false;  // KHR_materials_clearcoat: its strength, roughness and normal (hasClearcoatMaterial)
-  bool sheen = false;      // KHR_materials_sheen: its colour and roughness (hasSheenMaterial)
-  int extraBytesPerPixel(GBufferPrecision precision) const;
-  // "base colour, normal, material, depth" and the extra channels, with bytes per pixel: "lean, 16 bytes per pixel
-  // (base colour, normal, material, depth)", "lean + specular, 24 bytes per pixel (...)".
-  std::string describe(GBufferPrecision precision) const;
-  bool operator==(const GBufferLayout& o) const {
-    return specular == o.specular && clearcoat == o.clearcoat && sheen == o.sheen;
-  }
-};
-GBufferLayout gbufferLayout(const Scene& scene);
 // The internal formats of the specular channel (RGBA16F lean, RGBA32F float) and the clearcoat channel (RGBA16
 // lean, RGBA32F float).
 GLenum specularFormat(GBufferPrecision precision);
@@ -49,12 +27,9 @@ struct GBuffer {
   GBuffer(int width, int height, const Texture& radiance, GBufferPrecision precision = GBufferPrecision::Lean,
           GBufferLayout layout = {});
 
-  static constexpr int kBytesPerPixel = 4 + 4 + 4 + 4;
-  static constexpr int kFloatBytesPerPixel = 16 + 8 + 16 + 4;
   size_t bytes() const {
     return static_cast<size_t>(width) * static_cast<size_t>(height) *
-           ((precision == GBufferPrecision::Lean ? kBytesPerPixel : kFloatBytesPerPixel) +
-            layout.extraBytesPerPixel(precision));
+           (gbufferBytesPerPixel(precision) + layout.extraBytesPerPixel(precision));
   }
 
   int width, height;

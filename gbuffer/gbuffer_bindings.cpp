@@ -1,6 +1,6 @@
 #include "gbuffer/gbuffer_bindings.hpp"
 
-#include "core/frame_block.hpp"
+#include "core/scene/frame_block.hpp"
 
 namespace pbr {
 

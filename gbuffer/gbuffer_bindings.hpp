@@ -1,5 +1,5 @@
 #pragma once
-#include "core/binding_table.hpp"
+#include "core/scene/binding_table.hpp"
 
 namespace pbr {
 

@@ -3,15 +3,15 @@
 #include <memory>
 #include <vector>
 
-#include "core/blended_surfaces.hpp"
-#include "core/bounds.hpp"
-#include "core/frame_block.hpp"
-#include "core/gpu_mesh.hpp"
-#include "core/gpu_texture.hpp"
-#include "core/scene.hpp"
-#include "core/program_cache.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/blended_surfaces.hpp"
+#include "core/scene/bounds.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/gl/gpu_mesh.hpp"
+#include "core/gl/gpu_texture.hpp"
+#include "core/scene/scene.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/scene/shadow_settings.hpp"
+#include "core/gl/uniform_buffer.hpp"
 #include "gbuffer/gbuffer.hpp"
 
 namespace pbr {
@@ -24,7 +24,7 @@ class GBufferPass {
   GBufferPass(ProgramCache& programs, const Scene& scene);
   void render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const;
   // The scene's objects moved and the meshes `changedMeshes` rewritten in place (a glTF animation posed again,
-  // core/gltf_loader.hpp posePlayback): their blocks, bounds and vertex buffers uploaded again. Built-in shapes
+  // core/scene/gltf_loader.hpp posePlayback): their blocks, bounds and vertex buffers uploaded again. Built-in shapes
   // (whose spheres the shadow views draw coarser) do not move.
   void updatePose(const Scene& scene, const std::vector<int>& changedMeshes);
 

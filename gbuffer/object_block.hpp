@@ -16,7 +16,7 @@ struct ObjectBlock {
   glm::vec4 emissive;      // linear emitted radiance factor, alpha cutoff
   glm::vec4 orientation;   // x: sign of det(model), which mirrors the tangent frame; y: the maps reading
                            // TEXCOORD_1, a bit per texture unit (a small integer, exact in float); zw unused
-  glm::vec4 dielectric;    // the dielectric's F0 colour and F90 (dielectricSpecular, core/scene.hpp)
+  glm::vec4 dielectric;    // the dielectric's F0 colour and F90 (dielectricSpecular, core/scene/scene.hpp)
   glm::vec4 layers;        // clearcoat strength and roughness (KHR_materials_clearcoat), sheen roughness; w unused
   glm::vec4 sheenColor;    // KHR_materials_sheen's colour, linear; w unused
   // Each material map's UV transform by texture unit: the GLSL mat2x3 whose two columns, each padded to a vec4 by

@@ -2,7 +2,7 @@
 #include <cstddef>
 #include <string>
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
 
 namespace pbr {
 

@@ -1,6 +1,6 @@
 #include "ibl/dfg_table.hpp"
 
-#include "core/square_table.hpp"
+#include "core/gl/square_table.hpp"
 
 namespace pbr {
 

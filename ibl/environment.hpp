@@ -4,8 +4,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/image.hpp"
-#include "core/sky_params.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/sky_params.hpp"
 
 namespace pbr {
 

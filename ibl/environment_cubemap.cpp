@@ -8,8 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/gpu_texture.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/gpu_texture.hpp"
+#include "core/gl/uniform_buffer.hpp"
 
 namespace pbr {
 

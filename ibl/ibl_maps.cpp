@@ -3,8 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/debug_group.hpp"
-#include "core/gpu_texture.hpp"
+#include "core/gl/debug_group.hpp"
+#include "core/gl/gpu_texture.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/irradiance_sh.hpp"

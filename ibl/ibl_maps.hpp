@@ -1,9 +1,9 @@
 #pragma once
 #include <cstddef>
 
-#include "core/environment_maps.hpp"
-#include "core/profiler.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/cubemap.hpp"
 #include "ibl/environment.hpp"
 

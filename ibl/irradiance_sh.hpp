@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec4.hpp>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/cubemap.hpp"
 
 namespace pbr {

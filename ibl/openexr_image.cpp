@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "core/file_names.hpp"
-#include "core/input_file.hpp"
-#include "core/messages.hpp"
+#include "core/scene/file_names.hpp"
+#include "core/scene/input_file.hpp"
+#include "core/scene/messages.hpp"
 #include "ibl/radiance_hdr.hpp"
 
 namespace pbr {

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 
 namespace pbr {
 

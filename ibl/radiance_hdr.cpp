@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
-#include "core/input_file.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/input_file.hpp"
 
 namespace pbr {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/cubemap.hpp"
 
 namespace pbr {

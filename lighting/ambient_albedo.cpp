@@ -1,6 +1,6 @@
 #include "lighting/ambient_albedo.hpp"
 
-#include "core/square_table.hpp"
+#include "core/gl/square_table.hpp"
 
 namespace pbr {
 

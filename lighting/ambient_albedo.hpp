@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 
 namespace pbr {
 

@@ -1,13 +1,8 @@
 #include "lighting/assign_shape_trials.hpp"
 
-#include <stdexcept>
-
 namespace pbr {
 
 namespace {
-
-constexpr AssignShape kShapes[] = {AssignShape::Automatic, AssignShape::Invocation, AssignShape::Workgroup,
-                                   AssignShape::Cluster};
 
 // The index of a measured shape in the trials' arrays.
 size_t slot(AssignShape shape) { return static_cast<size_t>(shape) - 1; }
@@ -22,28 +17,10 @@ AssignShape fastest(const std::array<double, 3>& ms, size_t shapes) {
   for (size_t i = 1; i < shapes; ++i) {
     if (ms[i] >= 0.0 && ms[i] < ms[best]) best = i;
   }
-  return kShapes[best + 1];
+  return kAssignShapes[best + 1];
 }
 
 }  // namespace
-
-const char* toString(AssignShape shape) {
-  switch (shape) {
-    case AssignShape::Automatic: return "auto";
-    case AssignShape::Invocation: return "invocation";
-    case AssignShape::Workgroup: return "workgroup";
-    case AssignShape::Cluster: return "cluster";
-  }
-  return "?";
-}
-
-AssignShape parseAssignShape(const std::string& text) {
-  for (const AssignShape s : kShapes) {
-    if (text == toString(s)) return s;
-  }
-  throw std::invalid_argument("unknown assignment shape '" + text +
-                              "' (expected auto, invocation, workgroup or cluster)");
-}
 
 void AssignShapeTrials::beginFrame(uint32_t lights, uint32_t activeClusters, bool gridChanged) {
   if (lights != lights_ || gridChanged) {

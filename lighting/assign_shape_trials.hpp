@@ -3,24 +3,11 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <string>
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "lighting/cluster_config.hpp"
 
 namespace pbr {
-
-// How an assignment pass spreads its work over the GPU's invocations. `Invocation`: an invocation takes four lights
-// (the light pass) or one slot's list (the fill), the shape for llvmpipe, whose few wide threads pay to start each
-// invocation. `Workgroup`: a workgroup takes each light, sharing its tiles, and each slot, sharing its mask words,
-// the shape a GPU needs where few invocations would otherwise run long loops alone (few large lights, long lists).
-// `Cluster` (the light pass only; its fill is the workgroup one): an invocation per cluster holding a surface,
-// testing batches of lights its workgroup prepared in shared memory, the shape of most GPU clustered renderers,
-// for few lights over few clusters. `Automatic`: measured, by AssignShapeTrials.
-enum class AssignShape { Automatic, Invocation, Workgroup, Cluster };
-
-// "auto", "invocation", "workgroup", "cluster"; parseAssignShape throws std::invalid_argument on anything else.
-const char* toString(AssignShape shape);
-AssignShape parseAssignShape(const std::string& text);
 
 // The automatic choice of each assignment pass's shape, by timing them on this machine: the same counts favour
 // opposite shapes on a CPU rasterizer and on a GPU (docs/performance.md), and every shape gives the same lists, so

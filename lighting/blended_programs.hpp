@@ -5,12 +5,12 @@
 #include <utility>
 #include <vector>
 
-#include "core/binding_table.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/scene/binding_table.hpp"
 
 namespace pbr {
 
-// The programs one pass draws the BLEND surfaces with (core/blended_surfaces.hpp): its fragment shader behind the
+// The programs one pass draws the BLEND surfaces with (core/gl/blended_surfaces.hpp): its fragment shader behind the
 // geometry pass's vertex shader, one program per material permutation, looked up once per pass rather than per draw.
 class BlendedPrograms {
  public:

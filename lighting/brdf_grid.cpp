@@ -1,6 +1,7 @@
 #include "lighting/brdf_grid.hpp"
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
 

@@ -4,14 +4,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/binding_table.hpp"
-#include "core/shader_library.hpp"
-#include "core/shading_model.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
-
-// Where shaders/lighting/brdf_grid.comp writes its values.
-constexpr BindingPoint kBrdfGridSsbo{"BRDF_GRID_SSBO", BindingKind::StorageBuffer, 0};
 
 // The lighting pass's PBR BRDF f (brdf.glsl under the variant's defines) evaluated on the GPU over a grid of
 // view angle x perceptual roughness, the light at the mirror direction of the view: column a is the view angle

@@ -4,22 +4,10 @@
 #include <stdexcept>
 #include <string>
 
-#include <glm/gtc/constants.hpp>
-
 #include "lighting/light_order.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
-
-GpuLight toGpuLight(const PointLight& l) {
-  return {glm::vec4(l.position, l.radius), glm::vec4(l.color, l.luminousPower / (4.0f * glm::pi<float>()))};
-}
-
-GpuSpotCone toGpuSpotCone(const PointLight& l) {
-  if (!l.spot) return {0.0f, 0.0f, 0.0f, 1.0f};
-  const SpotFalloff f = spotFalloff(*l.spot);
-  return glm::vec4(l.spot->direction * f.scale, f.offset);
-}
 
 void LightBuffer::uploadDirectional(const std::vector<DirectionalLight>& directional) {
   if (directional.size() > kMaxDirectionalLights) {

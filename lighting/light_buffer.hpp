@@ -4,45 +4,12 @@
 #include <memory>
 #include <vector>
 
-#include <glm/vec4.hpp>
-
-#include "core/gl_objects.hpp"
-#include "core/scene.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/scene.hpp"
+#include "lighting/gpu_lights.hpp"
 
 namespace pbr {
-
-// std430 (and std140) mirror of `PointLight` in shaders/lighting/lights.glsl.
-struct GpuLight {
-  glm::vec4 positionRadius;
-  glm::vec4 colorIntensity;  // rgb, luminous intensity I = P / (4 pi)
-};
-static_assert(sizeof(GpuLight) == 32, "GpuLight must match its std430 layout");
-static_assert(offsetof(GpuLight, colorIntensity) == 16, "GpuLight must match its std430 layout");
-
-GpuLight toGpuLight(const PointLight& light);
-
-// Mirror of a light's entry in `spotCones` and `windowCones` (shaders/lighting/lights.glsl): the spot light's axis
-// times its falloff's scale, and the offset (SpotFalloff); a point light's (0, 0, 0, 1) leaves it unmasked.
-using GpuSpotCone = glm::vec4;
-GpuSpotCone toGpuSpotCone(const PointLight& light);
-
-// std140 mirror of `DirectionalLightBlock` in shaders/lighting/directional_lights.glsl.
-struct GpuDirectionalLight {
-  glm::vec4 toLight;           // xyz: unit direction towards the light
-  glm::vec4 colorIlluminance;  // rgb, illuminance E in lux
-};
-struct DirectionalLightBlock {
-  glm::uvec4 count;  // x: lights in use
-  GpuDirectionalLight lights[kMaxDirectionalLights];
-};
-static_assert(sizeof(GpuDirectionalLight) == 32, "GpuDirectionalLight must match its std140 layout");
-static_assert(offsetof(DirectionalLightBlock, lights) == 16, "DirectionalLightBlock must match its std140 layout");
-static_assert(sizeof(DirectionalLightBlock) == 16 + 32 * kMaxDirectionalLights, "DirectionalLightBlock: std140");
-
-// Lights in the largest uniform-buffer window the lighting pass reads (64 KiB, the most llvmpipe and most GPUs
-// allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
-constexpr uint32_t kLightWindowMax = 2048;
 
 // The frame's point and spot lights in one buffer, in the order lightBufferOrder gives them (light_order.hpp), read
 // as a storage buffer (cluster assignment, clustered lighting) and, a window at a time, as a uniform buffer

@@ -8,7 +8,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/debug_group.hpp"
+#include "core/gl/debug_group.hpp"
 #include "lighting/blended_programs.hpp"
 #include "lighting/lighting_bindings.hpp"
 

@@ -7,37 +7,17 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/blended_surfaces.hpp"
-#include "core/bounds.hpp"
-#include "core/frame_block.hpp"
-#include "core/program_cache.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/blended_surfaces.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/bounds.hpp"
+#include "core/scene/frame_block.hpp"
 #include "lighting/assign_shape_trials.hpp"
 #include "lighting/cluster_block.hpp"
+#include "lighting/cluster_config.hpp"
 #include "lighting/light_buffer.hpp"
 
 namespace pbr {
-
-struct ClusterConfig {
-  int tileSize = 64;  // pixels per screen tile side (LightClusters::setTileSize changes it per frame)
-  // Exponential depth slices between the near and far planes. Thin slices raise culling efficiency, and only
-  // slices holding a surface cost assignment work: with 192 slices (and the side-plane test) the stress scene's
-  // efficiency rose from 0.256 to 0.532 at 1,024 lights and the frame shortened at 4,096
-  // (docs/performance-history.md).
-  int slices = 192;
-  // Most memory the light index list may take; past it, the clusters that do not fit are shaded by brute force.
-  uint64_t maxIndexBytes = 512ull << 20;
-  // Most memory the clusters' light masks may take (a bit per light for each cluster holding a surface); past
-  // it, or past twice the driver's largest storage block, lights are assigned in windows, each costing another
-  // light pass.
-  uint64_t maxMaskBytes = 256ull << 20;
-  // Whether the renderer times a grid of half the tile side against it and keeps the faster (TileTrials); the
-  // commands' `--tile auto`.
-  bool tileTrial = false;
-  // The assignment passes' shapes: measured per machine (AssignShapeTrials) unless forced.
-  AssignShape lightPass = AssignShape::Automatic;
-  AssignShape fill = AssignShape::Automatic;
-};
 
 // Depth-slice boundaries of the exponential slicing, shared by the GPU grid and its CPU documentation:
 // slice k covers [near (far/near)^(k/S), near (far/near)^((k+1)/S)].

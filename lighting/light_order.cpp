@@ -6,7 +6,7 @@
 
 #include <glm/common.hpp>
 
-#include "lighting/light_buffer.hpp"
+#include "lighting/gpu_lights.hpp"
 
 namespace pbr {
 

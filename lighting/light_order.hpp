@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr {
 

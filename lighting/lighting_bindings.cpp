@@ -1,8 +1,8 @@
 #include "lighting/lighting_bindings.hpp"
 
-#include "core/environment_maps.hpp"
-#include "core/frame_block.hpp"
-#include "core/shadow_maps.hpp"
+#include "core/scene/environment_bindings.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/scene/shadow_settings.hpp"
 
 namespace pbr {
 

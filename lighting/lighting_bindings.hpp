@@ -1,5 +1,5 @@
 #pragma once
-#include "core/binding_table.hpp"
+#include "core/scene/binding_table.hpp"
 
 namespace pbr {
 
@@ -57,6 +57,9 @@ constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::Te
 // KHR_materials_sheen's albedo table (lighting/ambient_albedo.hpp's SheenAlbedoTable).
 constexpr BindingPoint kSheenAlbedoUnit{"SHEEN_ALBEDO_UNIT", BindingKind::TextureUnit, 15};
 }  // namespace lighting_binding
+
+// Where shaders/lighting/brdf_grid.comp writes its values (evaluateBrdfGrid, brdf_grid.hpp), a program run alone.
+constexpr BindingPoint kBrdfGridSsbo{"BRDF_GRID_SSBO", BindingKind::StorageBuffer, 0};
 
 // The frame block's, the lighting module's, the environment maps' and the shadow maps' points: everything bound
 // while the lighting module's programs run.

@@ -3,26 +3,13 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "core/gl/hdr_format.hpp"
 #include "lighting/blended_programs.hpp"
 #include "lighting/lighting_bindings.hpp"
 
 namespace pbr {
-
-namespace {
-
-// The image format qualifier and the largest finite value of the radiance target.
-std::pair<const char*, const char*> imageFormat(unsigned radianceFormat) {
-  switch (radianceFormat) {
-    case GL_R11F_G11F_B10F: return {"r11f_g11f_b10f", "64512.0"};  // the 10-bit blue channel's maximum
-    case GL_RGBA32F: return {"rgba32f", "FP16_MAX"};
-    default: return {"rgba16f", "FP16_MAX"};
-  }
-}
-
-}  // namespace
 
 uint32_t lightWindowLights() {
   GLint64 maxBlock = 0;
@@ -32,43 +19,11 @@ uint32_t lightWindowLights() {
   return window;
 }
 
-ShaderDefines LightingPass::permutation(const LightingOptions& o, bool clustered, unsigned radianceFormat,
-                                        bool chunked, bool spotLights, uint32_t lightWindow) {
-  const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
-  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
-  const auto [qualifier, maximum] = imageFormat(radianceFormat);
-  // Each model sees only its own terms, so that a term of the other model never splits a permutation.
-  ShaderDefines defines = shaderDefines(blinnPhong ? ShadingVariant{} : o.variant);
-  if (blinnPhong) defines.push_back(blinnPhongDefine(o.variant));
-  defines.insert(defines.begin(), {"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)});
-  defines.push_back({"HDR_IMAGE_FORMAT", qualifier});
-  defines.push_back({"HDR_MAX", maximum});
-  defines.push_back({"CLUSTERED", flag(clustered)});
-  defines.push_back({"LIGHTING_STATS", flag(o.stats)});
-  defines.push_back({"LIGHTING_PAIR_IMAGE", flag(o.pairCounts != nullptr)});
-  defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
-  defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
-  defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
-  defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
-  defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
-  defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});
-  defines.push_back({"MATERIAL_CLEARCOAT", flag(o.clearcoatMaterials && !blinnPhong)});
-  defines.push_back({"MATERIAL_SHEEN", flag(o.sheenMaterials && !blinnPhong)});
-  if (o.shadows) {
-    defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
-    defines = concat(defines, shadowViewDefines());
-  }
-  defines.push_back({"SHADOW_LIGHT_IMAGE", flag(o.shadows && o.shadowLight)});
-  if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
-  defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
-  return defines;
-}
-
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked,
                                      bool spotLights) {
-  return programs_.compute("lighting/deferred.comp",
-                           concat(permutation(o, clustered, radianceFormat, chunked, spotLights, lightWindow_),
-                                  lightingBindingDefines()));
+  const ShaderDefines permutation =
+      lightingPermutation(o, clustered, hdrFormatOf(radianceFormat), chunked, spotLights, lightWindow_);
+  return programs_.compute("lighting/deferred.comp", concat(permutation, lightingBindingDefines()));
 }
 
 void LightingPass::bindShading(const LightBuffer& lights, const LightingOptions& options,
@@ -178,7 +133,8 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
   const bool chunked = chunks > 1;
   ShaderDefines lighting =
-      permutation(forward, clustered, radiance.format(), chunked, lights.hasSpotLights(), lightWindow_);
+      lightingPermutation(forward, clustered, hdrFormatOf(radiance.format()), chunked, lights.hasSpotLights(),
+                          lightWindow_);
   lighting.push_back({"OIT_WEIGHTED", weighted ? "1" : "0"});
   lighting.push_back({"OIT_EXACT", exact ? "1" : "0"});
   bindShading(lights, forward, frame, clusters);
@@ -230,7 +186,7 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   glDisable(GL_BLEND);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (!orderIndependent) return;
-  const auto [qualifier, maximum] = imageFormat(radiance.format());
+  const auto [qualifier, maximum] = radianceImageFormat(hdrFormatOf(radiance.format()));
   const ShaderDefines format = {{"HDR_IMAGE_FORMAT", qualifier}, {"HDR_MAX", maximum}};
   if (exact) {
     programs_.compute("lighting/layer_resolve.comp",

@@ -6,16 +6,17 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/blended_surfaces.hpp"
-#include "core/environment_maps.hpp"
-#include "core/frame_block.hpp"
-#include "core/program_cache.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
+#include "core/gl/blended_surfaces.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/shadow_maps.hpp"
+#include "core/gl/uniform_buffer.hpp"
 #include "lighting/ambient_albedo.hpp"
 #include "lighting/light_buffer.hpp"
 #include "lighting/light_clusters.hpp"
-#include "core/shading_model.hpp"
+#include "lighting/lighting_options.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 
@@ -71,34 +72,6 @@ size_t layerListBytes(size_t pixels, uint64_t maxBlockBytes);
 // kMaxLayersPerPixel nearest); waits for the GPU.
 uint32_t readDroppedLayers(const Buffer& lists);
 
-struct LightingOptions {
-  ShadingModel model = ShadingModel::Pbr;
-  ShadingVariant variant;  // PBR only
-  glm::vec3 ambient{0.0f};
-  bool stats = false;  // count light-pixel pairs (evaluated, contributing) on the GPU
-  // PBR only: image-based lighting from these maps replaces `ambient`, and pixels without geometry show the
-  // environment. Null: uniform ambient light.
-  const EnvironmentMaps* environment = nullptr;
-  // Non-null: the pass also counts each pixel's light-pixel pairs into this RG32UI image of the frame's size
-  // (evaluated, contributing), what the efficiency debug view shows.
-  const Texture* pairCounts = nullptr;
-  // Non-null: lights with shadow views in these maps are shaded with their visibility, sampled by this filter.
-  const ShadowMaps* shadows = nullptr;
-  ShadowFilter shadowFilter = ShadowFilter::Pcf3x3;
-  // Non-null (with shadows): the pass also sums each pixel's light from casting lights into this RG32F image of the
-  // frame's size (luminance with, and without, its shadows), what the shadows debug view shows.
-  const Texture* shadowLight = nullptr;
-  // The G-buffer holds unlit surfaces (hasUnlitSurface): pixels it flags so take no light.
-  bool unlitSurfaces = false;
-  // PBR only: the surfaces shaded have their own dielectric F0 and F90 (KHR_materials_ior, _specular), from the
-  // G-buffer's specular channel (SurfaceTextures::specular) or the BLEND materials' blocks.
-  bool specularMaterials = false;
-  // PBR only: the surfaces shaded may have a clear coat (KHR_materials_clearcoat), likewise.
-  bool clearcoatMaterials = false;
-  // PBR only: the surfaces shaded may have a sheen (KHR_materials_sheen), likewise.
-  bool sheenMaterials = false;
-};
-
 // List entries (or, in a cluster whose list overflowed, lights) one clustered dispatch of the lighting pass loops
 // over at most: one iteration each, with room for the pass's few other loops under llvmpipe's 65535 iterations per
 // invocation. More take several dispatches (LIGHT_CHUNKS). Shading every light, a dispatch takes one uniform-buffer
@@ -108,11 +81,6 @@ constexpr uint32_t kLightsPerDispatch = 32768;
 // The brute-force path's light window: kLightWindowMax lights, or the largest power of two of them that the
 // driver's uniform blocks hold.
 uint32_t lightWindowLights();
-
-struct PairCounts {
-  uint64_t evaluated = 0;
-  uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
-};
 
 // Deferred lighting in a compute shader; one permutation per (model, variant, radiance format, culling, stats,
 // IBL, spot lights present, shadow filter or none), compiled on first use.
@@ -148,11 +116,6 @@ class LightingPass {
 
   // Pair counts of the last frame rendered with stats on; waits for the GPU.
   PairCounts readPairCounts() const;
-
-  // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL).
-  static ShaderDefines permutation(const LightingOptions& options, bool clustered, unsigned radianceFormat,
-                                   bool chunked = false, bool spotLights = false,
-                                   uint32_t lightWindow = kLightWindowMax);
 
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked,

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string>
 
-#include "core/exposure.hpp"
+#include "core/scene/exposure.hpp"
 
 namespace pbr {
 

@@ -2,9 +2,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/binding_table.hpp"
-#include "core/gl_objects.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/program_cache.hpp"
+#include "post/post_bindings.hpp"
 
 namespace pbr {
 
@@ -29,15 +29,12 @@ constexpr float kAdaptDarkenEvPerSecond = 1.0f;
 // std430 mirror of `ExposureState` in shaders/post/exposure_state.glsl.
 struct ExposureState {
   float ev100;        // the exposure the post pass applies, as a camera's EV100
-  float exposure;     // 1 / (1.2 * 2^ev100), what radiance is multiplied by (core/exposure.hpp)
+  float exposure;     // 1 / (1.2 * 2^ev100), what radiance is multiplied by (core/scene/exposure.hpp)
   float targetEv100;  // what the last metered frame asked for; ev100 moves toward it
   uint32_t metered;   // 0 until a frame has been metered
   uint32_t bins[kMeterBins];
 };
 static_assert(sizeof(ExposureState) == 16 + 4 * kMeterBins, "ExposureState must match its std430 layout");
-
-// The meter's state, one binding point for C++ and GLSL (the histogram, the adaptation and the post pass).
-constexpr BindingPoint kExposureSsbo{"EXPOSURE_SSBO", BindingKind::StorageBuffer, 19};
 
 // What a frame's metering says, read back for reports.
 struct MeteredExposure {

@@ -1,16 +1,6 @@
 #include "post/fxaa_pass.hpp"
 
-#include <stdexcept>
-
 namespace pbr {
-
-AntiAliasing parseAntiAliasing(const std::string& name) {
-  if (name == "none") return AntiAliasing::None;
-  if (name == "fxaa") return AntiAliasing::Fxaa;
-  throw std::invalid_argument("unknown anti-aliasing '" + name + "' (expected none or fxaa)");
-}
-
-const char* toString(AntiAliasing aa) { return aa == AntiAliasing::Fxaa ? "fxaa" : "none"; }
 
 FxaaPass::FxaaPass(ProgramCache& programs)
     : programs_(programs),

@@ -4,11 +4,11 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/binding_table.hpp"
-#include "core/program_cache.hpp"
-#include "core/uniform_buffer.hpp"
-#include "core/tone_curve.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/tone_curve.hpp"
 #include "post/exposure_meter.hpp"
+#include "post/post_bindings.hpp"
 
 namespace pbr {
 
@@ -26,9 +26,6 @@ struct PostSettings {
   ToneCurve curve = ToneCurve::AcesHill;
   const ExposureMeter* meter = nullptr;  // automatic exposure: the meter's exposure replaces `exposure`
 };
-
-// The post pass's settings block, one binding point for C++ and GLSL.
-constexpr BindingPoint kPostUbo{"POST_UBO", BindingKind::UniformBuffer, 3};
 
 // HDR RGBA16F in, display-referred RGBA8 (sRGB-encoded values) out.
 // A permutation per tone curve and exposure source, each compiled when a frame first asks for it.

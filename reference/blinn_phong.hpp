@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec3.hpp>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/reference_brdf.hpp"
 
 namespace pbr::reference {

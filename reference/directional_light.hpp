@@ -1,5 +1,5 @@
 #pragma once
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/reference_brdf.hpp"
 
 namespace pbr::reference {

@@ -2,7 +2,7 @@
 #include <glm/vec3.hpp>
 #include <glm/ext/vector_int3.hpp>
 
-#include "core/tone_curve.hpp"
+#include "core/scene/tone_curve.hpp"
 
 namespace pbr::reference {
 

@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/bvh.hpp"
 #include "reference/raycast.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/blinn_phong.hpp"
 #include "reference/reference_brdf.hpp"
 

@@ -5,7 +5,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr::reference {
 
@@ -37,7 +37,7 @@ class RayCaster {
 };
 
 // Whether a surface of this material stops shadow rays: every one but a BLEND surface whose alpha factor is below
-// kBlendShadowCutoff (0.5, core/scene.hpp), where the GPU's shadow maps cut BLEND casters out (textures are not
+// kBlendShadowCutoff (0.5, core/scene/scene.hpp), where the GPU's shadow maps cut BLEND casters out (textures are not
 // read here, so the factor decides for the whole surface; MASK surfaces are solid for the same reason).
 bool stopsShadowRays(const Material& material);
 

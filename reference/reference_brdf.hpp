@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec3.hpp>
 
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr::reference {
 
@@ -52,7 +52,7 @@ dvec3 dielectricF0(const ReferenceMaterial& m);
 // The normal-incidence reflectance mix(dielectricF0, baseColor, metalness) that the Schlick forms start from.
 dvec3 specularF0(const ReferenceMaterial& m);
 
-// Which form of each term evaluateBrdf uses, in the renderer's vocabulary (ShadingVariant, core/shading_model.hpp:
+// Which form of each term evaluateBrdf uses, in the renderer's vocabulary (ShadingVariant, core/scene/shading_model.hpp:
 // one set of names, parsed once): visibility exact (height-correlated), hammon or separable; Fresnel exact (for
 // the dielectric part, Schlick for metals), schlick or schlick-sg; diffuse lambert-1-f (by 1 - F(n.v)),
 // lambert-1-f-vh or lambert, times (1 - metalness) in every case. The defaults are the reference model above, which

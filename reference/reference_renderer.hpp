@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
-#include "core/scene.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/reference_brdf.hpp"
 
 namespace pbr::reference {
@@ -58,7 +58,7 @@ struct ReferenceOptions {
   int threads = 0;  // 0: every hardware thread
   BrdfForms forms;  // the BRDF's terms, for lights and ambient alike
   Geometry geometry = Geometry::Meshes;
-  // Which lights cast shadows (core/scene.hpp's castsShadows); none by default, the frames measured before shadows.
+  // Which lights cast shadows (core/scene/scene.hpp's castsShadows); none by default, the frames measured before shadows.
   ShadowMode shadows = ShadowMode::None;
   // Called from the worker threads (at once by several) as rows finish, with the share of the frame done.
   std::function<void(double)> progress;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace pbr {
 
@@ -24,26 +23,6 @@ constexpr double kHysteresis = 0.05;
 double ratio(double a, double b) { return b > 0.0 ? a / b : 1.0; }
 
 }  // namespace
-
-std::string CullingDecision::describe() const {
-  char text[200];
-  const auto ms = [](double v, const char* unknown) {
-    char b[48];
-    if (v < 0.0) return std::string(unknown);
-    std::snprintf(b, sizeof b, "%.3f ms", v);
-    return std::string(b);
-  };
-  std::string brute = ms(bruteForceMs, "not timed yet");
-  if (bruteForceMs < 0.0 && bruteForceAtLeastMs >= 0.0) {
-    brute = "at least " + ms(bruteForceAtLeastMs, "") + ", not tried";
-  }
-  if (bruteForceMs < 0.0 && bruteForceTrialUpToMs >= 0.0) {
-    brute = "not tried: a frame could take up to " + ms(bruteForceTrialUpToMs, "");
-  }
-  std::snprintf(text, sizeof text, "%s (predicted: clustered %s, brute force %s)", toString(ran),
-                ms(clusteredMs, "not timed yet").c_str(), brute.c_str());
-  return text;
-}
 
 Culling CullingChoice::choose(const std::string& key, const CullingCounts& counts, bool settled) {
   if (current_ && !current_->issuedEnd) current_->pending = false;  // the last frame had no lighting pass to time

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/program_cache.hpp"
-#include "core/readback.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/gl/readback.hpp"
 #include "post/post_pass.hpp"
 #include "renderer/pass_list.hpp"
 

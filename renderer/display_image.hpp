@@ -1,7 +1,7 @@
 #pragma once
-#include "core/image.hpp"
-#include "core/shader_library.hpp"
-#include "core/tone_curve.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/tone_curve.hpp"
 
 namespace pbr {
 

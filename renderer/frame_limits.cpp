@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "renderer/renderer_config.hpp"
-#include "core/gl.hpp"
 
 namespace pbr {
 
@@ -65,20 +64,6 @@ uint64_t addressSpaceAvailable() {
   return used >= limit.rlim_cur ? 0 : limit.rlim_cur - used;
 }
 
-const char* formatName(GLenum format) {
-  switch (format) {
-    case GL_SRGB8_ALPHA8: return "SRGB8_ALPHA8";
-    case GL_RGBA8: return "RGBA8";
-    case GL_RG16: return "RG16";
-    case GL_RG32F: return "RG32F";
-    case GL_RGBA16F: return "RGBA16F";
-    case GL_R11F_G11F_B10F: return "R11F_G11F_B10F";
-    case GL_RGBA32F: return "RGBA32F";
-    case GL_DEPTH_COMPONENT32F: return "DEPTH_COMPONENT32F";
-  }
-  return "colour";
-}
-
 std::string gigabytes(uint64_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
@@ -89,8 +74,7 @@ std::string gigabytes(uint64_t bytes) {
 
 uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout) {
   const uint64_t gbuffer =
-      (config.gbuffer == GBufferPrecision::Lean ? GBuffer::kBytesPerPixel : GBuffer::kFloatBytesPerPixel) +
-      uint64_t(layout.extraBytesPerPixel(config.gbuffer));
+      uint64_t(gbufferBytesPerPixel(config.gbuffer)) + uint64_t(layout.extraBytesPerPixel(config.gbuffer));
   const uint64_t ldr = 2 * 4;  // the display image, and its copy before anti-aliasing (made on first use)
   const uint64_t captures = 2 * 4 + 2 * 16;  // RGBA8 and RGBA32F read-backs, each a buffer and an image
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
@@ -99,25 +83,8 @@ uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& l
   return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts + shadowLight;
 }
 
-std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayout& layout) {
-  const GBufferFormats g = gbufferFormats(config.gbuffer);
-  std::vector<GLenum> formats = {g.baseColor, g.normal, g.material, g.depth, glInternalFormat(config.hdrFormat),
-                                 GL_RGBA8};
-  if (layout.specular) formats.push_back(specularFormat(config.gbuffer));
-  if (layout.clearcoat) formats.push_back(clearcoatFormat(config.gbuffer));
-  if (layout.sheen) formats.push_back(sheenFormat(config.gbuffer));
-  return formats;
-}
-
 uint64_t availableMemoryBytes() {
   return std::min({meminfoAvailable(), cgroupAvailable(), addressSpaceAvailable()});
-}
-
-FrameLimits queryFrameLimits() {
-  FrameLimits limits;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
-  limits.availableBytes = availableMemoryBytes();
-  return limits;
 }
 
 void checkFrameSize(int width, int height, const std::string& option, uint64_t bytesPerPixel,
@@ -132,22 +99,6 @@ void checkFrameSize(int width, int height, const std::string& option, uint64_t b
     throw std::runtime_error(size + ": the frame needs about " + gigabytes(bytes) + " (" +
                              std::to_string(bytesPerPixel) + " bytes per pixel), over the " +
                              gigabytes(limits.availableBytes) + " of memory available");
-  }
-}
-
-void checkFrameFormats(int width, int height, const std::string& option, const std::vector<GLenum>& formats) {
-  for (const GLenum format : formats) {
-    // A proxy takes no storage: the driver fills in the level's width, or 0 if it could not create the texture.
-    const bool depth = format == GL_DEPTH_COMPONENT32F;
-    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, static_cast<GLint>(format), width, height, 0,
-                 depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, nullptr);
-    GLint created = 0;
-    glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &created);
-    if (created == 0) {
-      throw std::runtime_error(option + " " + std::to_string(width) + "x" + std::to_string(height) +
-                               ": the OpenGL driver refuses " + formatName(format) +
-                               " textures of that size (proxy texture test); try a smaller size");
-    }
   }
 }
 

@@ -1,10 +1,8 @@
 #pragma once
 #include <cstdint>
 #include <string>
-#include <vector>
 
-#include "core/gl.hpp"
-#include "gbuffer/gbuffer.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
 
 namespace pbr {
 
@@ -24,24 +22,13 @@ struct FrameLimits {
 // read-backs in it.
 uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout = {});
 
-// The internal formats of the frame's targets (G-buffer, depth, HDR, LDR, then the layout's channels).
-std::vector<GLenum> frameFormats(const RendererConfig& config, const GBufferLayout& layout = {});
-
 // The smallest of /proc/meminfo's MemAvailable, the cgroup's memory.max less memory.current, and the address
 // space left under RLIMIT_AS: whichever stops an allocation first.
 uint64_t availableMemoryBytes();
-
-// The current context's limits and availableMemoryBytes().
-FrameLimits queryFrameLimits();
 
 // Throws std::runtime_error naming `option` (the command-line option the size came from, "--size") and the limit
 // the frame is over.
 void checkFrameSize(int width, int height, const std::string& option, uint64_t bytesPerPixel,
                     const FrameLimits& limits);
-
-// Asks the driver, through proxy textures, whether it can create each of `formats` at width x height before
-// anything is allocated: a driver may cap one texture's size (llvmpipe refuses textures over 1 GiB) well below
-// GL_MAX_TEXTURE_SIZE squared and the memory available. Throws std::runtime_error naming `option` and the format.
-void checkFrameFormats(int width, int height, const std::string& option, const std::vector<GLenum>& formats);
 
 }  // namespace pbr

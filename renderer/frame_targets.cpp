@@ -1,7 +1,8 @@
 #include "renderer/frame_targets.hpp"
 
+#include "core/gl/hdr_format.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "renderer/frame_limits.hpp"
+#include "renderer/driver_limits.hpp"
 
 namespace pbr {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <memory>
 
-#include "core/gl_objects.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/program_cache.hpp"
 #include "gbuffer/gbuffer.hpp"
 #include "lighting/light_clusters.hpp"
 #include "renderer/renderer_config.hpp"

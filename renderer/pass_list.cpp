@@ -52,13 +52,6 @@ void checkPassList(const PassList& passes) {
   }
 }
 
-void runPassList(const PassList& passes, Profiler& profiler) {
-  for (const FramePass& pass : passes) {
-    ScopedPass scope(profiler, pass.name.c_str());
-    pass.run();
-  }
-}
-
 std::string describePassList(const PassList& passes) {
   std::string out;
   for (const FramePass& pass : passes) {

@@ -3,8 +3,6 @@
 #include <string>
 #include <vector>
 
-#include "core/profiler.hpp"
-
 namespace pbr {
 
 // What the frame's passes read and write. The first four are inputs of the frame (the scene's uploaded geometry
@@ -29,9 +27,6 @@ using PassList = std::vector<FramePass>;
 
 // Throws std::logic_error naming the pass and the resource when a pass reads a target no earlier pass wrote.
 void checkPassList(const PassList& passes);
-
-// Runs the passes in order, each timed as a pass of the profiler's current frame.
-void runPassList(const PassList& passes, Profiler& profiler);
 
 // "gbuffer (reads geometry, camera; writes gbuffer, radiance) -> ..." for logs and documentation.
 std::string describePassList(const PassList& passes);

@@ -5,11 +5,11 @@
 #include <optional>
 #include <stdexcept>
 
-#include "core/context.hpp"
-#include "core/exposure.hpp"
-#include "core/gpu_mesh.hpp"
-#include "core/gpu_texture.hpp"
-#include "core/readback.hpp"
+#include "core/gl/context.hpp"
+#include "core/gl/gpu_mesh.hpp"
+#include "core/gl/gpu_texture.hpp"
+#include "core/gl/readback.hpp"
+#include "core/scene/exposure.hpp"
 
 namespace pbr {
 
@@ -18,6 +18,14 @@ namespace {
 SurfaceTextures surfaceTextures(const GBuffer& g) {
   return {g.baseColor, g.normal, g.material, g.depth, g.specular ? &*g.specular : nullptr,
           g.clearcoat ? &*g.clearcoat : nullptr, g.sheen ? &*g.sheen : nullptr};
+}
+
+// Runs the passes in order, each timed as a pass of the profiler's current frame.
+void runPassList(const PassList& passes, Profiler& profiler) {
+  for (const FramePass& pass : passes) {
+    ScopedPass scope(profiler, pass.name.c_str());
+    pass.run();
+  }
 }
 
 }  // namespace
@@ -442,12 +450,6 @@ LightStats Renderer::lightStats() const {
   const Buffer* lists = targets_->layerListsIfMade();
   if (lastOptions_.transparency == Transparency::Exact && lists) s.droppedLayers = readDroppedLayers(*lists);
   return s;
-}
-
-RendererConfig measuredGrid() {
-  RendererConfig config;
-  config.clusters.tileTrial = true;
-  return config;
 }
 
 }  // namespace pbr

@@ -1,72 +1,26 @@
 #pragma once
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 
-#include "core/frame_block.hpp"
-#include "core/frame_capture.hpp"
-#include "core/image.hpp"
-#include "core/profiler.hpp"
-#include "core/scene.hpp"
-#include "core/shader_library.hpp"
-#include "core/shadow_maps.hpp"
-#include "core/uniform_buffer.hpp"
-#include "core/tone_curve.hpp"
+#include "core/gl/frame_capture.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/gl/uniform_buffer.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/shadow_settings.hpp"
 #include "debug/debug_channel.hpp"
 #include "renderer/culling_choice.hpp"
-#include "renderer/tile_trials.hpp"
+#include "renderer/frame_options.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/pass_list.hpp"
 #include "renderer/renderer_config.hpp"
 #include "renderer/scene_resources.hpp"
+#include "renderer/tile_trials.hpp"
 
 namespace pbr {
-
-// The culling `pbr render`, `view` and `bench` start from; a FrameOptions made in code starts from Clustered.
-constexpr Culling kCommandCulling = Culling::Auto;
-
-struct FrameOptions {
-  ShadingModel model = ShadingModel::Pbr;
-  ShadingVariant variant;  // PBR only
-  Culling culling = Culling::Clustered;
-  float exposure = 1.0f;
-  bool stats = false;  // GPU counters for the light statistics (costs time; off for timing runs)
-  // A debug channel in place of the final frame, with its legend. Clusters and slices are painted over the
-  // (anti-aliased) frame and need clustered culling; the others replace the frame, which is then not anti-aliased.
-  std::optional<DebugChannel> debug;
-  AntiAliasing aa = AntiAliasing::None;  // of the display image, before any debug view
-  ShadowSettings shadows;                // a frame none of whose lights casts runs no shadow pass
-  Transparency transparency = Transparency::Sorted;  // of BLEND surfaces; a frame without any runs no such pass
-  ToneCurve toneCurve = ToneCurve::AcesHill;         // of PBR frames' display transform
-  // PBR frames: the exposure metered from the frame itself (post/exposure_meter.hpp) in place of `exposure`, which
-  // sets it only before anything is metered. It moves toward each frame's metering over `adaptSeconds` (the time
-  // since the last frame); infinite, the headless default, applies each frame's own metering.
-  bool autoExposure = false;
-  float adaptSeconds = std::numeric_limits<float>::infinity();
-};
-
-// Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair
-// counts need FrameOptions::stats.
-struct LightStats {
-  uint32_t lights = 0;
-  uint32_t visibleLights = 0;       // lights touching at least one cluster (frustum-culled survivors)
-  uint32_t clusters = 0;
-  uint32_t tileSize = 0;            // the cluster grid's tile side in pixels (--tile auto times it)
-  uint32_t activeClusters = 0;     // clusters holding a surface: the only ones given lights
-  uint32_t nonEmptyClusters = 0;
-  uint32_t maxPerCluster = 0;
-  uint64_t indexEntries = 0;        // entries of the light-index list the frame needed
-  uint32_t overflowedClusters = 0;  // shaded by brute force: the list or the light masks were full
-  PairCounts pairs;
-  ShadowStats shadows;              // of the last frame's shadow pass; zero without one
-  uint32_t droppedLayers = 0;       // BLEND fragments the last frame's exact transparency left out (kLayerNodesPerPixel)
-  Culling culling = Culling::Clustered;     // the path the last frame ran
-  std::optional<CullingDecision> decision;  // with --culling auto: why
-  double averagePerNonEmpty() const { return nonEmptyClusters ? double(indexEntries) / nonEmptyClusters : 0.0; }
-  // Light-pixel pairs that contribute over pairs evaluated.
-  double cullingEfficiency() const { return pairs.evaluated ? double(pairs.contributing) / pairs.evaluated : 0.0; }
-};
 
 // Images to read back at the end of a frame (timed as the "readback" pass); null members are skipped.
 struct FrameCapture {
@@ -98,7 +52,8 @@ class Renderer {
   // one profiler frame of its own (ibl/README.md), so the profiler must not be inside a frame. Throws
   // std::runtime_error naming the file when the environment's .hdr cannot be used, and naming config.sizeOption
   // when the frame is over the context's texture size, the memory available or what the driver can create
-  // (renderer/frame_limits.hpp), before any target is allocated. `scene` must outlive the renderer.
+  // (renderer/frame_limits.hpp, renderer/driver_limits.hpp), before any target is allocated. `scene` must outlive
+  // the renderer.
   Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, int height, const RendererConfig& config = {});
 
   // Replaces the frame targets at the new size; the scene's resources and compiled programs stay.
@@ -115,7 +70,7 @@ class Renderer {
   WarmUpReport warmUp(const FrameOptions& options, Profiler& profiler, int frames);
 
   // Marks the `frame`-th frame this renderer renders (counting every renderFrame from 1, warm-up frames included)
-  // for graphics debuggers, as `capturer` says (core/frame_capture.hpp). `capturer` must outlive that frame.
+  // for graphics debuggers, as `capturer` says (core/gl/frame_capture.hpp). `capturer` must outlive that frame.
   void captureFrame(int frame, const FrameCapturer& capturer);
 
   // For interactive use: a moved camera rebuilds the frame block (cluster bounds follow when the projection
@@ -150,7 +105,7 @@ class Renderer {
   // Whether any light casts under `mode` (cached until the lights change).
   bool shadowed(ShadowMode mode);
   // The shadow pass: plans the views from where the surfaces are (the cluster occupancy) and renders them.
-  // The scene's BLEND surfaces as the lighting module draws them (core/blended_surfaces.hpp).
+  // The scene's BLEND surfaces as the lighting module draws them (core/gl/blended_surfaces.hpp).
   // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
   BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);

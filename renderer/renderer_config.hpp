@@ -1,12 +1,13 @@
 #pragma once
 #include <string>
 
-#include "core/profiler.hpp"
-#include "gbuffer/gbuffer.hpp"
-#include "lighting/light_clusters.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
+#include "lighting/cluster_config.hpp"
 
 namespace pbr {
+
+class Profiler;  // core/gl/profiler.hpp
 
 // What a renderer is built with, beyond the scene and the frame size.
 struct RendererConfig {

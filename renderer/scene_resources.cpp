@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/gl.hpp"
+#include "core/gl/gl.hpp"
 
 namespace pbr {
 

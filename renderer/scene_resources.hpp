@@ -1,9 +1,9 @@
 #pragma once
 #include <memory>
 
-#include "core/profiler.hpp"
-#include "core/program_cache.hpp"
-#include "core/scene.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/scene/scene.hpp"
 #include "debug/cluster_debug_pass.hpp"
 #include "debug/efficiency_debug_pass.hpp"
 #include "debug/gbuffer_debug_pass.hpp"

@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "core/gl_objects.hpp"
+#include "core/gl/gl_objects.hpp"
 
 namespace pbr {
 

@@ -3,8 +3,8 @@
 #include <memory>
 #include <vector>
 
-#include "core/gl_objects.hpp"
-#include "core/shadow_maps.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/shadow_maps.hpp"
 #include "shadows/shadow_plan.hpp"
 
 namespace pbr {

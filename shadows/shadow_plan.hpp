@@ -5,10 +5,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/bounds.hpp"
-#include "core/camera.hpp"
-#include "core/scene.hpp"
-#include "core/shadow_maps.hpp"
+#include "core/scene/bounds.hpp"
+#include "core/scene/camera.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/shadow_settings.hpp"
 #include "shadows/shadow_receivers.hpp"
 
 namespace pbr {

@@ -5,7 +5,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/bounds.hpp"
+#include "core/scene/bounds.hpp"
 
 namespace pbr {
 

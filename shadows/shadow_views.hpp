@@ -3,7 +3,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/camera.hpp"
+#include "core/scene/camera.hpp"
 #include "shadows/shadow_plan.hpp"
 
 namespace pbr {

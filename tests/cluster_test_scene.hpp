@@ -1,8 +1,8 @@
 #pragma once
 #include <cstdint>
 
-#include "core/builtin_scenes.hpp"
-#include "core/scene.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr::test {
 

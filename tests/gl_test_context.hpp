@@ -1,7 +1,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
-#include "core/context.hpp"
+#include "core/gl/context.hpp"
 
 namespace pbr::test {
 

@@ -4,8 +4,8 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/gl_objects.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/shader_library.hpp"
 
 namespace pbr::test {
 

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/io/image_output.hpp"
+
 namespace pbr::test {
 
 namespace fs = std::filesystem;

@@ -11,7 +11,7 @@
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 
 namespace pbr::test {
 

@@ -3,8 +3,8 @@
 // scene at that size.
 #include <glm/vec2.hpp>
 
-#include "core/mesh.hpp"
-#include "core/scene.hpp"
+#include "core/scene/mesh.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/reference_renderer.hpp"
 
 namespace pbr::test {

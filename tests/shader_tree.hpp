@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-#include "core/shader_library.hpp"
+#include "core/scene/shader_sources.hpp"
 #include "tests/cli_util.hpp"
 
 namespace pbr::test {

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "renderer/offscreen.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cluster_test_scene.hpp"
 #include "tests/gl_test_context.hpp"

@@ -9,8 +9,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/builtin_scenes.hpp"
-#include "core/exposure.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/exposure.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/gl_test_context.hpp"
 

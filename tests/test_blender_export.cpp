@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 

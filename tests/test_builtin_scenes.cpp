@@ -13,8 +13,8 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/vector_relational.hpp>
 
-#include "core/builtin_scenes.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
 namespace fs = std::filesystem;

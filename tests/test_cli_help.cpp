@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "app/accuracy/pair_cost.hpp"
+#include "app/accuracy/pair_cost_settings.hpp"
 #include "app/bench/bench_sweep.hpp"
-#include "core/context.hpp"
-#include "post/fxaa_pass.hpp"
+#include "core/io/context_info.hpp"
+#include "post/anti_aliasing.hpp"
 #include "reference/brdf_form_names.hpp"
 #include "reference/reference_renderer.hpp"
-#include "renderer/renderer.hpp"
+#include "renderer/frame_options.hpp"
+#include "renderer/renderer_config.hpp"
 #include "tests/cli_util.hpp"
 
 using pbr::test::runPbr;

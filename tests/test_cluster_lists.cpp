@@ -7,8 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/frame_block.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/frame_block.hpp"
 #include "tests/gl_test_context.hpp"
 
 using namespace pbr;

@@ -2,7 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "lighting/light_clusters.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "tests/cluster_test_scene.hpp"

@@ -16,8 +16,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/builtin_scenes.hpp"
-#include "core/gltf_loader.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

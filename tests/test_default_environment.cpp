@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/image.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/gltf_builder.hpp"

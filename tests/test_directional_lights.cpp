@@ -10,8 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/accuracy_metrics.hpp"
-#include "core/image.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene_json.hpp"
 #include "reference/display_transform.hpp"
 #include "reference/reference_brdf.hpp"
 #include "reference/reference_renderer.hpp"

@@ -3,8 +3,8 @@
 #include <iterator>
 
 #include "app/experiments/experiments.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/tone_curve.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/tone_curve.hpp"
 #include "tests/gl_test_context.hpp"
 
 using namespace pbr;

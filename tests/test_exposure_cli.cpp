@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/image.hpp"
 #include "ibl/openexr_image.hpp"
 #include "renderer/display_image.hpp"
 #include "tests/cli_scene.hpp"

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "core/builtin_scenes.hpp"
-#include "core/frame_capture.hpp"
-#include "core/program_cache.hpp"
+#include "core/gl/frame_capture.hpp"
+#include "core/gl/program_cache.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "renderer/renderer.hpp"
@@ -223,7 +223,8 @@ TEST_CASE("labels: a program's label is its file and the defines of its permutat
   const ShaderLibrary shaders;
   ProgramCache programs(shaders);
   LightingOptions options;
-  const ShaderDefines defines = concat(LightingPass::permutation(options, true, GL_RGBA16F), lightingBindingDefines());
+  const ShaderDefines defines =
+      concat(lightingPermutation(options, true, HdrFormat::Rgba16f), lightingBindingDefines());
   const std::string label = objectLabel(GL_PROGRAM, programs.compute("lighting/deferred.comp", defines).id());
   CHECK(label == programLabel("lighting/deferred.comp", defines));
   CHECK(label.rfind("lighting/deferred.comp [", 0) == 0);

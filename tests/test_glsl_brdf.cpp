@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 #include "reference/reference_brdf.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/glsl_probe.hpp"

@@ -14,8 +14,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "core/gltf_loader.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/gltf_loader.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

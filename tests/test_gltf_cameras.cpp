@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/gltf_builder.hpp"

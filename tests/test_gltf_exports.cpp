@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/assets.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"

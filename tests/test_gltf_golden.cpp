@@ -10,10 +10,10 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/image.hpp"
-#include "core/model_scene.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/model_scene.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 

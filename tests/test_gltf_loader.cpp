@@ -22,11 +22,11 @@
 #include <webp/encode.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/gltf_loader.hpp"
-#include "core/model_scene.hpp"
-#include "core/mesh_tangent_space.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/gltf_loader.hpp"
+#include "core/scene/model_scene.hpp"
+#include "core/scene/mesh_tangent_space.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

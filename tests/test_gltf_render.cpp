@@ -18,9 +18,9 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/gltf_loader.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/gltf_builder.hpp"

@@ -8,8 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/assets.hpp"
-#include "core/gltf_loader.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

@@ -10,9 +10,9 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "core/builtin_scenes.hpp"
-#include "core/gltf_loader.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/gltf_loader.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/image.hpp"
-#include "renderer/frame_limits.hpp"
+#include "core/scene/image.hpp"
+#include "renderer/driver_limits.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/dfg_table.hpp"
 #include "ibl/ibl_maps.hpp"
 #include "reference/split_sum_dfg.hpp"

@@ -11,9 +11,9 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/assets.hpp"
-#include "core/environment_maps.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/assets.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/ibl_maps.hpp"
 #include "ibl/irradiance_sh.hpp"

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "reference/cube_map_geometry.hpp"
 #include "reference/environment_integrals.hpp"

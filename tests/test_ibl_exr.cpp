@@ -7,8 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "ibl/openexr_image.hpp"
 #include "ibl/radiance_hdr.hpp"
 #include "tests/cli_util.hpp"

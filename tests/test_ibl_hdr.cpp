@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/assets.hpp"
-#include "core/image.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/assets.hpp"
 #include "ibl/environment.hpp"
 #include "ibl/radiance_hdr.hpp"
 #include "tests/cli_util.hpp"

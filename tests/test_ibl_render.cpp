@@ -10,8 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"

@@ -13,11 +13,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/assets.hpp"
-#include "core/environment_maps.hpp"
-#include "core/context.hpp"
-#include "core/profiler.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/assets.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/ibl_maps.hpp"
 #include "reference/environment_integrals.hpp"
 #include "reference/reference_brdf.hpp"

@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
 #include "ibl/environment_cubemap.hpp"
 #include "ibl/specular_prefilter.hpp"
 #include "reference/environment_integrals.hpp"

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/assets.hpp"
-#include "core/image.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/assets.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/json_file.hpp"
-#include "core/json_text.hpp"
+#include "core/scene/json_file.hpp"
+#include "core/scene/json_text.hpp"
 #include "tests/cli_util.hpp"
 
 TEST_CASE("json text: a quoted string cut inside a multi-byte character is still quoted, not thrown on") {

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/exposure.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
-#include "core/builtin_scenes.hpp"
-#include "core/random.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/random.hpp"
 #include "lighting/light_order.hpp"
 
 using namespace pbr;

@@ -12,9 +12,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/model_scene.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/model_scene.hpp"
+#include "core/scene/scene_json.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/cluster_test_scene.hpp"

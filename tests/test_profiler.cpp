@@ -6,8 +6,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/context.hpp"
-#include "core/profiler.hpp"
+#include "core/gl/profiler.hpp"
+#include "core/io/context_info.hpp"
 #include "tests/gl_test_context.hpp"
 
 using pbr::FrameTiming;

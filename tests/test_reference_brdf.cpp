@@ -9,7 +9,7 @@
 
 #include "reference/brdf_form_names.hpp"
 #include "reference/directional_albedo.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "reference/reference_brdf.hpp"
 #include "reference/reference_renderer.hpp"
 

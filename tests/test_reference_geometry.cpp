@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "core/mesh.hpp"
+#include "core/scene/mesh.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/reference_spheres.hpp"

@@ -9,7 +9,7 @@
 #include "app/accuracy/accuracy_metrics.hpp"
 #include "app/accuracy/accuracy_variants.hpp"
 #include "renderer/offscreen.hpp"
-#include "core/gltf_loader.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/raycast.hpp"
 #include "reference/reference_renderer.hpp"
 

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "reference/directional_light.hpp"
 #include "reference/point_light.hpp"
 #include "reference/raycast.hpp"

@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/gl.hpp"
+#include "core/gl/gl.hpp"
 #include "reference/display_transform.hpp"
 #include "reference/plane_reference.hpp"
 #include "tests/gl_test_context.hpp"

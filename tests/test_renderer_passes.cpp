@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "renderer/pass_list.hpp"
 #include "renderer/renderer.hpp"
 #include "tests/gl_test_context.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/assets.hpp"
+#include "core/scene/assets.hpp"
 #include "tests/cli_scene.hpp"
 #include "tests/cli_util.hpp"
 

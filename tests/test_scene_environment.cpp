@@ -8,8 +8,8 @@
 #include <glm/vec3.hpp>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "core/assets.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
 using namespace pbr;

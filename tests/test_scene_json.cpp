@@ -9,12 +9,12 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/assets.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/gltf_loader.hpp"
-#include "core/image.hpp"
-#include "core/model_scene.hpp"
-#include "core/scene_json.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/gltf_loader.hpp"
+#include "core/scene/model_scene.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

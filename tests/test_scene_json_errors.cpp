@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
 using pbr::test::TempDir;

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/binding_table.hpp"
-#include "core/environment_maps.hpp"
-#include "core/gl_objects.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/gl/environment_maps.hpp"
+#include "core/gl/gl_objects.hpp"
+#include "core/gl/shader_library.hpp"
 #include "gbuffer/gbuffer_bindings.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "debug/debug_channel.hpp"
@@ -20,7 +20,7 @@
 #include "lighting/light_clusters.hpp"
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
-#include "core/shading_model.hpp"
+#include "core/scene/shading_model.hpp"
 #include "post/post_pass.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/shader_tree.hpp"
@@ -186,23 +186,23 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         options.stats = stats;
         // The per-pixel pair counts of the efficiency view, alone and with the per-workgroup ones.
         options.pairCounts = &pairCounts;
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true));
         options.pairCounts = nullptr;
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, false, true));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, false, true));
         // With unlit surfaces in the G-buffer, in one dispatch and in light chunks.
         options.unlitSurfaces = true;
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
-        lighting.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true));
         options.unlitSurfaces = false;
         // The IBL permutations exist for PBR only (LightingPass never asks for them with Blinn-Phong).
         const pbr::EnvironmentMaps maps;
         options.environment = &maps;
         if (model == pbr::ShadingModel::Pbr) {
-          ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F));
-          ibl.push_back(pbr::LightingPass::permutation(options, clustered, GL_RGBA16F, true));
+          ibl.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));
+          ibl.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true));
         }
       }
     }
@@ -211,7 +211,7 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
                               "fresnel=schlick-sg", "diffuse=lambert", "diffuse=burley", "diffuse=lambert-1-f-vh"}) {
     pbr::LightingOptions options;
     options.variant = pbr::parseShadingVariant(variant);
-    lighting.push_back(pbr::LightingPass::permutation(options, true, GL_RGBA16F));
+    lighting.push_back(pbr::lightingPermutation(options, true, pbr::HdrFormat::Rgba16f));
   }
   checkComputeCompiles("lighting/deferred.comp", lighting);
   checkComputeCompiles("lighting/deferred.comp", ibl);

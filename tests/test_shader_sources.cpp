@@ -1,6 +1,6 @@
-// Tests of pbr::ShaderLibrary that need no driver: #include resolution and its errors on a scratch shader tree, the
-// #line bookkeeping that maps log lines back to files, and the binding numbers and define names shared between GLSL
-// and C++.
+// Tests of the shader library that need no driver (pbr::ShaderSources): #include resolution and its errors on a
+// scratch shader tree, the #line bookkeeping that maps log lines back to files, and the binding numbers and define
+// names shared between GLSL and C++.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -12,15 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "core/binding_table.hpp"
-#include "core/frame_block.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/binding_table.hpp"
+#include "core/scene/frame_block.hpp"
+#include "core/scene/shader_sources.hpp"
+#include "core/scene/shading_model.hpp"
 #include "gbuffer/gbuffer_bindings.hpp"
-#include "lighting/brdf_grid.hpp"
 #include "lighting/lighting_bindings.hpp"
-#include "lighting/lighting_pass.hpp"
-#include "core/shading_model.hpp"
-#include "post/post_pass.hpp"
+#include "lighting/lighting_options.hpp"
+#include "post/post_bindings.hpp"
 #include "tests/shader_tree.hpp"
 
 namespace fs = std::filesystem;
@@ -51,7 +50,7 @@ TEST_CASE("shader library: includes resolve next to the including file first, th
   tree.write("b.glsl", "// marker root b\n");
   tree.write("top.glsl", "// marker top\n");
 
-  const ShaderLibrary lib(tree.root());
+  const ShaderSources lib(tree.root());
   const pbr::ExpandedShader expanded = lib.expand("main.comp");
   for (const char* marker : {"// marker main", "// marker inc/a", "// marker inc/b", "// marker inc/deep/c",
                              "// marker top"}) {
@@ -77,7 +76,7 @@ TEST_CASE("shader library: include cycles, missing includes and a missing #versi
   tree.write("missing.comp", std::string(kComputeHeader) + "#include \"inc/has_missing.glsl\"\n");
   tree.write("inc/has_missing.glsl", "// first\n#include \"nowhere/gone.glsl\"\n");
   tree.write("noversion.comp", "// a comment before the version\n#version 450 core\nvoid main() {}\n");
-  const ShaderLibrary lib(tree.root());
+  const ShaderSources lib(tree.root());
 
   const std::string cycle = errorOf([&] { lib.expand("cycle.comp"); });
   CHECK(contains(cycle, tree.display("b.glsl") + ":3:"));
@@ -168,7 +167,7 @@ TEST_CASE("shader library: brdf.glsl tests exactly the defines that name the PBR
           CHECK(defines.size() == 4);
           pbr::LightingOptions options;
           options.variant = pbr::parseShadingVariant(text);
-          permutations.insert(describeDefines(pbr::LightingPass::permutation(options, true, GL_RGBA16F)));
+          permutations.insert(describeDefines(pbr::lightingPermutation(options, true, pbr::HdrFormat::Rgba16f)));
           ++variants;
         }
       }

@@ -14,7 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/shadow_metrics.hpp"
-#include "core/mesh.hpp"
+#include "core/scene/mesh.hpp"
 #include "reference/raycast.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/offscreen.hpp"

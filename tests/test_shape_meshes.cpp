@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/mesh.hpp"
+#include "core/scene/mesh.hpp"
 
 namespace {
 

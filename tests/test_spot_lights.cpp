@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "app/accuracy/accuracy_metrics.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/display_image.hpp"
 #include "renderer/offscreen.hpp"

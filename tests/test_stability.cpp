@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/random.hpp"
+#include "core/scene/random.hpp"
 #include "tests/gl_test_context.hpp"
 
 using namespace pbr;

@@ -10,7 +10,7 @@
 
 #include <glm/mat3x3.hpp>
 
-#include "core/gltf_loader.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

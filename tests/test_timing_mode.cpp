@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/profiler.hpp"
+#include "core/io/frame_timing.hpp"
 
 using pbr::TimingMode;
 

@@ -13,7 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "core/gltf_loader.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "debug/transparency_debug_pass.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/json_field.hpp"
-#include "core/scene.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/json_field.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 

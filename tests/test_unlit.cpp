@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/gltf_loader.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "reference/reference_renderer.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/gltf_loader.hpp"
+#include "core/scene/gltf_loader.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"

@@ -16,10 +16,10 @@
 
 #include "app/scene_source.hpp"
 #include "app/viewer/environment_folder.hpp"
-#include "core/assets.hpp"
-#include "core/exposure.hpp"
-#include "core/json_file.hpp"
-#include "core/scene_json.hpp"
+#include "core/scene/assets.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/json_file.hpp"
+#include "core/scene/scene_json.hpp"
 #include "tests/cli_util.hpp"
 
 using pbr::ImageRgba8;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/renderer.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
 

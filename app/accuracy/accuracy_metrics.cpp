@@ -5,9 +5,6 @@
 #include <cstdlib>
 #include <limits>
 
-#include "core/readback.hpp"
-#include "post/post_pass.hpp"
-
 namespace pbr {
 
 namespace {

@@ -2,8 +2,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/image.hpp"
-#include "core/shader_library.hpp"
+#include "core/scene/image.hpp"
 #include "reference/reference_renderer.hpp"
 
 namespace pbr {

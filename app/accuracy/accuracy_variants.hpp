@@ -5,14 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "app/accuracy/pair_cost.hpp"
+#include "app/accuracy/pair_cost_settings.hpp"
 #include "app/frame_settings.hpp"
 #include "app/render_settings.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/scene.hpp"
-#include "gbuffer/gbuffer.hpp"
-#include "core/shading_model.hpp"
-#include "renderer/renderer.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/shading_model.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
+#include "renderer/frame_options.hpp"
+#include "renderer/renderer_config.hpp"
 
 namespace pbr {
 

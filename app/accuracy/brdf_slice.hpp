@@ -3,8 +3,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/shader_library.hpp"
-#include "core/shading_model.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/shading_model.hpp"
 
 namespace pbr {
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "core/image.hpp"
+#include "core/scene/image.hpp"
 
 namespace pbr {
 

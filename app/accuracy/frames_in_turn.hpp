@@ -3,7 +3,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/profiler.hpp"
+#include "core/io/frame_timing.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {

@@ -6,27 +6,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/random.hpp"
+#include "core/scene/random.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
-
-FixtureMaterial parseFixtureMaterial(const std::string& name) {
-  for (const FixtureMaterial m :
-       {FixtureMaterial::Core, FixtureMaterial::Specular, FixtureMaterial::Clearcoat, FixtureMaterial::Sheen}) {
-    if (name == toString(m)) return m;
-  }
-  throw std::invalid_argument("unknown fixture material '" + name + "' (expected core, specular, clearcoat or sheen)");
-}
-
-const char* toString(FixtureMaterial material) {
-  switch (material) {
-    case FixtureMaterial::Core: return "core";
-    case FixtureMaterial::Specular: return "specular";
-    case FixtureMaterial::Clearcoat: return "clearcoat";
-    case FixtureMaterial::Sheen: return "sheen";
-  }
-  return "?";
-}
 
 namespace {
 

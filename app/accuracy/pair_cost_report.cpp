@@ -1,7 +1,7 @@
 #include "app/accuracy/pair_cost_report.hpp"
 
 #include "app/bench/bench_report.hpp"
-#include "core/json_text.hpp"
+#include "core/scene/json_text.hpp"
 
 #include <cstdio>
 #include <string>

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "app/accuracy/accuracy_variants.hpp"
-#include "app/accuracy/pair_cost.hpp"
+#include "app/accuracy/pair_cost_settings.hpp"
 #include "app/bench/csv_provenance.hpp"
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

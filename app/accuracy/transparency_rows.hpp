@@ -6,7 +6,7 @@
 
 #include "app/accuracy/accuracy_metrics.hpp"
 #include "app/bench/bench_sweep.hpp"
-#include "core/blended_surfaces.hpp"
+#include "core/scene/transparency.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {

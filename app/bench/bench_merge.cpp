@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/context.hpp"
-#include "core/json_text.hpp"
-#include "core/provenance.hpp"
+#include "core/io/context_info.hpp"
+#include "core/scene/json_text.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

@@ -10,7 +10,7 @@
 
 #include "app/bench/round_ratios.hpp"
 #include "app/bench/text_table.hpp"
-#include "core/json_text.hpp"
+#include "core/scene/json_text.hpp"
 
 namespace pbr {
 

@@ -7,8 +7,8 @@
 #include "app/bench/bench_shard.hpp"
 #include "app/bench/bench_sweep.hpp"
 #include "app/bench/csv_provenance.hpp"
-#include "core/messages.hpp"
-#include "core/provenance.hpp"
+#include "core/scene/messages.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

@@ -4,8 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/json_field.hpp"
-#include "core/json_file.hpp"
+#include "core/scene/json_field.hpp"
+#include "core/scene/json_file.hpp"
 
 namespace pbr {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "core/provenance.hpp"
+#include "app/provenance.hpp"
 
 namespace pbr {
 

@@ -4,7 +4,8 @@
 #include <memory>
 
 #include "app/bench/bench_sweep.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
+#include "renderer/renderer.hpp"
 
 namespace pbr {
 

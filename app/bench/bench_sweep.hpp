@@ -6,8 +6,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "renderer/renderer.hpp"
-#include "core/profiler.hpp"
+#include "renderer/frame_options.hpp"
+#include "core/io/frame_timing.hpp"
 
 namespace pbr {
 

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "core/profiler.hpp"
+#include "core/io/frame_timing.hpp"
 
 namespace pbr {
 

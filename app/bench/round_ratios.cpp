@@ -5,7 +5,7 @@
 
 #include "app/bench/frame_stats.hpp"
 #include "app/bench/text_table.hpp"
-#include "core/messages.hpp"
+#include "core/scene/messages.hpp"
 
 namespace pbr {
 

@@ -4,7 +4,7 @@
 
 #include "app/experiments/experiments.hpp"
 #include "renderer/offscreen.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "reference/reference_brdf.hpp"
 
 namespace pbr {

@@ -2,7 +2,7 @@
 
 #include "app/experiments/experiments.hpp"
 #include "renderer/offscreen.hpp"
-#include "core/builtin_scenes.hpp"
+#include "core/scene/builtin_scenes.hpp"
 
 namespace pbr {
 

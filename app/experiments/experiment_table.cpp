@@ -1,7 +1,7 @@
 #include <stdexcept>
 
 #include "app/experiments/experiments.hpp"
-#include "core/output_file.hpp"
+#include "core/io/output_file.hpp"
 
 namespace pbr {
 

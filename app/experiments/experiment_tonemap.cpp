@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "app/experiments/experiments.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/exposure.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/exposure.hpp"
 #include "renderer/display_image.hpp"
 #include "renderer/renderer.hpp"
 

@@ -3,8 +3,7 @@
 #include "app/experiments/experiments.hpp"
 #include "app/bench/frame_stats.hpp"
 #include "renderer/offscreen.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/context.hpp"
+#include "core/scene/builtin_scenes.hpp"
 
 namespace pbr {
 

@@ -4,9 +4,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/image.hpp"
-#include "core/scene.hpp"
-#include "core/shader_library.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/scene/image.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr {
 

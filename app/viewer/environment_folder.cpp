@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "core/assets.hpp"
+#include "core/scene/assets.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec3.hpp>
 
-#include "core/camera.hpp"
+#include "core/scene/camera.hpp"
 
 namespace pbr {
 

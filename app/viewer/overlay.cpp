@@ -14,12 +14,12 @@
 #include "app/viewer/environment_folder.hpp"
 #include "app/viewer/overlay_graph.hpp"
 #include "app/viewer/viewer.hpp"
-#include "core/context.hpp"
-#include "core/exposure.hpp"
-#include "core/gl.hpp"
-#include "core/gltf_file.hpp"
-#include "core/gltf_loader.hpp"
-#include "core/shadow_maps.hpp"
+#include "core/gl/context.hpp"
+#include "core/gl/gl.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/gltf_file.hpp"
+#include "core/scene/gltf_loader.hpp"
+#include "core/scene/shadow_settings.hpp"
 #include "shadows/shadow_plan.hpp"
 
 namespace pbr {

@@ -10,10 +10,10 @@
 #include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/exposure.hpp"
-#include "core/json_file.hpp"
-#include "core/output_file.hpp"
-#include "core/scene_json.hpp"
+#include "core/io/output_file.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/json_file.hpp"
+#include "core/scene/scene_json.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

@@ -1,9 +1,9 @@
 #pragma once
 #include <string>
 
-#include "core/builtin_scenes.hpp"
-#include "core/camera.hpp"
-#include "core/scene.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "core/scene/camera.hpp"
+#include "core/scene/scene.hpp"
 
 namespace pbr {
 

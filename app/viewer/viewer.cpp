@@ -13,9 +13,10 @@
 
 #include "app/viewer/overlay.hpp"
 #include "app/viewer/scene_snapshot.hpp"
-#include "core/exposure.hpp"
-#include "core/gltf_loader.hpp"
-#include "core/readback.hpp"
+#include "core/gl/readback.hpp"
+#include "core/io/image_output.hpp"
+#include "core/scene/exposure.hpp"
+#include "core/scene/gltf_loader.hpp"
 
 namespace pbr {
 

@@ -11,8 +11,8 @@
 #include "app/viewer/orbit_camera.hpp"
 #include "app/viewer/pass_history.hpp"
 #include "renderer/renderer.hpp"
-#include "core/builtin_scenes.hpp"
-#include "core/window_context.hpp"
+#include "core/scene/builtin_scenes.hpp"
+#include "app/viewer/window_context.hpp"
 
 namespace pbr {
 

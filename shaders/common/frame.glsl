@@ -1,4 +1,4 @@
-// Mirrors pbr::FrameBlock (core/frame_block.hpp).
+// Mirrors pbr::FrameBlock (core/scene/frame_block.hpp).
 layout(std140, binding = FRAME_UBO) uniform FrameBlock {
   mat4 view;
   mat4 projection;

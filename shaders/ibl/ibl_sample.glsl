@@ -1,5 +1,5 @@
 // Image-based lighting for the lighting pass: the maps pbr::IblMaps precomputes, bound by bindEnvironmentMaps
-// (core/environment_maps.hpp) at the points its table defines:
+// (core/gl/environment_maps.hpp) at the points its table defines:
 //   IBL_UBO            IblBlock: 9 spherical-harmonic radiance coefficients of the environment (diffuse)
 //   IBL_SPECULAR_UNIT  GGX-prefiltered radiance cube map, RGBA16F; level k holds roughness k / (levels - 1)
 //   IBL_DFG_UNIT       split-sum DFG table, RG16F, x = n.v, y = perceptual roughness

@@ -11,7 +11,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "../ibl/ggx_sampling.glsl"
 
-// The table block of core/square_table.hpp; the precomputation runs alone, hence binding 0.
+// The table block of core/gl/square_table.hpp; the precomputation runs alone, hence binding 0.
 layout(std140, binding = 0) uniform AmbientAlbedoBlock {
   ivec4 sizes;  // x: table size, y: samples per texel
 } pass;

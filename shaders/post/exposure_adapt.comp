@@ -2,7 +2,7 @@
 // The automatic exposure's meter, second step (one invocation): the mean log2 luminance of the pixels between the
 // METER_LOW_SHARE and METER_HIGH_SHARE of the histogram, mapped to the key value (Reinhard et al. 2002, "Photographic
 // Tone Reproduction for Digital Images", eq. 2: exposure = key / mean luminance), as the EV100 of a camera
-// (exposure = 1 / (1.2 2^EV100), core/exposure.hpp); the applied exposure moves toward it; the histogram is
+// (exposure = 1 / (1.2 2^EV100), core/scene/exposure.hpp); the applied exposure moves toward it; the histogram is
 // cleared for the next frame.
 layout(local_size_x = 1) in;
 

@@ -1,4 +1,4 @@
-// Shadow-map visibility of a light at a surface point (pbr::ShadowMaps, core/shadow_maps.hpp): 1 lit, 0 shadowed,
+// Shadow-map visibility of a light at a surface point (pbr::ShadowMaps, core/gl/shadow_maps.hpp): 1 lit, 0 shadowed,
 // between inside the filter's penumbra. The atlas holds reversed-Z depth (1 nearest the light); a comparison passes
 // where the receiver is at least as near the light as the nearest caster.
 

@@ -1,0 +1,41 @@
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "app/accuracy/shadow_rows.hpp"
+#include "core/gl/shader_library.hpp"
+#include "core/io/frame_timing.hpp"
+
+namespace pbr {
+
+// What every row is compared with, made once: the scene's shadowed reference frame, and per light that casts, the
+// reference frame of that light alone (its shadow rays) and the unshadowed GPU frame of that light alone (the
+// denominator of visibilityRatio). Lights alone are rendered without ambient light, whose share would blur the
+// ratio.
+class ShadowComparison {
+ public:
+  ShadowComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
+                   const reference::ReferenceOptions& referenceOptions, TimingMode timing,
+                   ToneCurve curve = ToneCurve::AcesHill);
+  ShadowRowResult measure(const ShadowRow& row) const;
+  size_t castingLights() const { return lights_.size(); }
+
+ private:
+  struct LightAlone {
+    Scene scene;
+    reference::ReferenceFrame reference;
+    ImageRgbaF unshadowed;
+  };
+  const ShaderLibrary& shaders_;
+  Scene scene_;
+  glm::ivec2 size_;
+  ToneCurve curve_;  // of the display images the error in 8-bit levels is measured on
+  TimingMode timing_;
+  reference::ReferenceFrame reference_;
+  ImageRgba8 referenceLdr_;
+  std::vector<LightAlone> lights_;
+};
+
+}  // namespace pbr

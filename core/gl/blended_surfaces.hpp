@@ -1,0 +1,34 @@
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/gl/program_cache.hpp"
+#include "core/scene/binding_table.hpp"
+
+namespace pbr {
+
+// The program one draw of a BLEND object is made with, by the module that draws the objects for its own purpose
+// (the forward lighting and the clusters' occupancy, lighting/), from what the geometry pass's draws need: its
+// vertex shader, the object's material permutation (gbuffer/gbuffer_pass.hpp) and the geometry pass's binding points
+// (object block, material maps). `repeat` counts the object's draws in a row (BlendedSurfaces::draw).
+using BlendedProgram = std::function<const Program&(int repeat, const std::string& vertexShader,
+                                                    const ShaderDefines& material,
+                                                    const std::vector<BindingPoint>& bindings)>;
+
+// The order of the draws: any (each object once, both faces of a double-sided one together), or back to front for
+// compositing: by the view depth of the objects' bounds' centres, farthest first, a double-sided object's back
+// faces before its front faces.
+enum class BlendOrder { Any, BackToFront };
+
+// The scene's surfaces with alphaMode BLEND, which the G-buffer leaves out. The contract between the pass that owns
+// their geometry and materials (gbuffer/) and the passes that shade and cull them (lighting/), neither of which
+// knows the other.
+struct BlendedSurfaces {
+  // Draws every BLEND object `repeats` times in a row, in `order`, each through the program `program` returns for
+  // the repeat, into the frame's radiance target (colour attachment 0) over the G-buffer's depth, which tests the
+  // draws (reversed Z: only what lies in front of the opaque surfaces is drawn) and which they leave as it is.
+  std::function<void(const BlendedProgram& program, BlendOrder order, int repeats)> draw;
+};
+
+}  // namespace pbr

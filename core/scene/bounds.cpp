@@ -1,0 +1,54 @@
+#include "core/scene/bounds.hpp"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+
+namespace pbr {
+
+void WorldBounds::add(const glm::vec3& p) {
+  min = glm::min(min, p);
+  max = glm::max(max, p);
+}
+
+void WorldBounds::add(const WorldBounds& b) {
+  if (b.empty()) return;
+  add(b.min);
+  add(b.max);
+}
+
+bool overlaps(const WorldBounds& a, const WorldBounds& b) {
+  return !a.empty() && !b.empty() && glm::all(glm::lessThanEqual(a.min, b.max)) &&
+         glm::all(glm::lessThanEqual(b.min, a.max));
+}
+
+bool overlapsSphere(const WorldBounds& box, const glm::vec3& centre, float radius) {
+  if (box.empty()) return false;
+  const glm::vec3 d = centre - glm::clamp(centre, box.min, box.max);
+  return glm::dot(d, d) <= radius * radius;
+}
+
+WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform) {
+  WorldBounds b;
+  for (const Vertex& v : mesh.vertices) b.add(glm::vec3(transform * glm::vec4(v.position, 1.0f)));
+  return b;
+}
+
+FrustumPlanes frustumPlanes(const glm::mat4& m) {
+  const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]),
+      r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);
+  return {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
+}
+
+bool outsideFrustum(const FrustumPlanes& planes, const WorldBounds& box) {
+  if (box.empty()) return true;
+  for (const glm::vec4& p : planes) {
+    // The box's corner furthest along the plane's normal.
+    const glm::vec3 far(p.x >= 0.0f ? box.max.x : box.min.x, p.y >= 0.0f ? box.max.y : box.min.y,
+                        p.z >= 0.0f ? box.max.z : box.min.z);
+    if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return true;
+  }
+  return false;
+}
+
+}  // namespace pbr

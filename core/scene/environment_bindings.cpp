@@ -1,0 +1,7 @@
+#include "core/scene/environment_bindings.hpp"
+
+namespace pbr {
+
+ShaderDefines environmentBindingDefines() { return bindingDefines({kIblUbo, kIblSpecularUnit, kIblDfgUnit}); }
+
+}  // namespace pbr

@@ -1,0 +1,33 @@
+#include "gbuffer/gbuffer_precision.hpp"
+
+#include <stdexcept>
+
+namespace pbr {
+
+GBufferPrecision parseGBufferPrecision(const std::string& name) {
+  if (name == "lean") return GBufferPrecision::Lean;
+  if (name == "float") return GBufferPrecision::Float;
+  throw std::invalid_argument("unknown G-buffer precision '" + name + "' (expected lean or float)");
+}
+
+const char* toString(GBufferPrecision precision) { return precision == GBufferPrecision::Lean ? "lean" : "float"; }
+
+int GBufferLayout::extraBytesPerPixel(GBufferPrecision p) const {
+  const int channel = p == GBufferPrecision::Lean ? 8 : 16;
+  return (specular ? channel : 0) + (clearcoat ? channel : 0) + (sheen ? (p == GBufferPrecision::Lean ? 4 : 16) : 0);
+}
+
+std::string GBufferLayout::describe(GBufferPrecision p) const {
+  const int bytes = gbufferBytesPerPixel(p) + extraBytesPerPixel(p);
+  std::string name = toString(p), channels = "base colour, normal, material, depth";
+  if (specular) name += " + specular", channels += ", dielectric F0 and F90";
+  if (clearcoat) name += " + clearcoat", channels += ", clearcoat strength, roughness and normal";
+  if (sheen) name += " + sheen", channels += ", sheen colour and roughness";
+  return name + ", " + std::to_string(bytes) + " bytes per pixel (" + channels + ")";
+}
+
+GBufferLayout gbufferLayout(const Scene& scene) {
+  return {hasSpecularMaterial(scene, false), hasClearcoatMaterial(scene, false), hasSheenMaterial(scene, false)};
+}
+
+}  // namespace pbr

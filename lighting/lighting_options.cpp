@@ -1,0 +1,51 @@
+#include "lighting/lighting_options.hpp"
+
+#include <string>
+#include <utility>
+
+#include "core/scene/binding_table.hpp"
+
+namespace pbr {
+
+std::pair<const char*, const char*> radianceImageFormat(HdrFormat format) {
+  switch (format) {
+    case HdrFormat::R11g11b10f: return {"r11f_g11f_b10f", "64512.0"};  // the 10-bit blue channel's maximum
+    case HdrFormat::Rgba32f: return {"rgba32f", "FP16_MAX"};
+    case HdrFormat::Rgba16f: break;
+  }
+  return {"rgba16f", "FP16_MAX"};
+}
+
+ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrFormat radiance, bool chunked,
+                                  bool spotLights, uint32_t lightWindow) {
+  const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  const auto [qualifier, maximum] = radianceImageFormat(radiance);
+  // Each model sees only its own terms, so that a term of the other model never splits a permutation.
+  ShaderDefines defines = shaderDefines(blinnPhong ? ShadingVariant{} : o.variant);
+  if (blinnPhong) defines.push_back(blinnPhongDefine(o.variant));
+  defines.insert(defines.begin(), {"SHADING_MODEL_BLINN_PHONG", flag(blinnPhong)});
+  defines.push_back({"HDR_IMAGE_FORMAT", qualifier});
+  defines.push_back({"HDR_MAX", maximum});
+  defines.push_back({"CLUSTERED", flag(clustered)});
+  defines.push_back({"LIGHTING_STATS", flag(o.stats)});
+  defines.push_back({"LIGHTING_PAIR_IMAGE", flag(o.pairCounts != nullptr)});
+  defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
+  defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
+  defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
+  defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
+  defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
+  defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});
+  defines.push_back({"MATERIAL_CLEARCOAT", flag(o.clearcoatMaterials && !blinnPhong)});
+  defines.push_back({"MATERIAL_SHEEN", flag(o.sheenMaterials && !blinnPhong)});
+  if (o.shadows) {
+    defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
+    defines = concat(defines, shadowViewDefines());
+  }
+  defines.push_back({"SHADOW_LIGHT_IMAGE", flag(o.shadows && o.shadowLight)});
+  if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
+  defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
+  return defines;
+}
+
+}  // namespace pbr
