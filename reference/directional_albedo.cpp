@@ -34,33 +34,31 @@ dvec3 directionalAlbedo(const ReferenceMaterial& m, double NoV, const BrdfForms&
   const double coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
   dvec3 specular(0.0), diffuse(0.0);
   double coat = 0.0;
+  // A GGX normal visible from V (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"), so that
+  // pdf(l) = D(h) G1(v) / (4 n.v): at grazing views D-sampling wastes most samples on normals facing away. The
+  // lobes at the reflected direction, each times n.l / pdf, or nothing where it falls below the horizon.
+  const auto ggxSample = [&](double a, double u1, double u2) {
+    const dvec3 H = sampleVisibleNormal(V, a, u1, u2);
+    const double VoH = glm::dot(V, H);
+    const dvec3 L = 2.0 * VoH * H - V;
+    if (L.z <= 0.0 || VoH <= 0.0) return BrdfLobes{};
+    const double weight = L.z / (ggxD(H.z, a) * smithG1(cv, a) / (4.0 * cv));
+    BrdfLobes lobes = evaluateBrdf(N, V, L, m, forms);
+    lobes.specular *= weight;
+    lobes.coat *= weight;
+    return lobes;
+  };
   for (int i = 0; i < samples; ++i) {
     for (int j = 0; j < samples; ++j) {
       const double u = (i + 0.5) / samples, phi = 2.0 * kPi * (j + 0.5) / samples;
-      // A GGX normal visible from V (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"), so that
-      // pdf(l) = D(h) G1(v) / (4 n.v): at grazing views D-sampling wastes most samples on normals facing away.
-      const dvec3 H = sampleVisibleNormal(V, alpha, u, (j + 0.5) / samples);
-      const double VoH = glm::dot(V, H);
-      const dvec3 L = 2.0 * VoH * H - V;
-      if (L.z > 0.0 && VoH > 0.0) {
-        const double pdf = ggxD(H.z, alpha) * smithG1(cv, alpha) / (4.0 * cv);
-        specular += evaluateBrdf(N, V, L, m, forms).specular * (L.z / pdf);
-      }
+      specular += ggxSample(alpha, u, (j + 0.5) / samples).specular;
       // Cosine-weighted directions: pdf(l) = n.l / pi.
       const double sinL = std::sqrt(u);
       const dvec3 Ld(sinL * std::cos(phi), sinL * std::sin(phi), std::sqrt(1.0 - u));
       // The sheen lobe (KHR_materials_sheen) is broad: cosine-weighted directions serve it too.
       const BrdfLobes cosineSampled = evaluateBrdf(N, V, Ld, m, forms);
       diffuse += (cosineSampled.diffuse + cosineSampled.sheen) * kPi;
-      if (m.clearcoat > 0.0) {
-        const dvec3 Hc = sampleVisibleNormal(V, coatAlpha, u, (j + 0.5) / samples);
-        const double VoHc = glm::dot(V, Hc);
-        const dvec3 Lc = 2.0 * VoHc * Hc - V;
-        if (Lc.z > 0.0 && VoHc > 0.0) {
-          const double pdf = ggxD(Hc.z, coatAlpha) * smithG1(cv, coatAlpha) / (4.0 * cv);
-          coat += evaluateBrdf(N, V, Lc, m, forms).coat * (Lc.z / pdf);
-        }
-      }
+      if (m.clearcoat > 0.0) coat += ggxSample(coatAlpha, u, (j + 0.5) / samples).coat;
     }
   }
   return (specular + diffuse + dvec3(coat)) / (double(samples) * samples);

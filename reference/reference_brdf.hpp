@@ -85,8 +85,8 @@ double fresnelSchlickSG(double c, double f0);
 // over the base's, which are scaled by 1 - max(sheenColor) E(n.v) (KHR_materials_sheen's albedo scaling in the
 // form that depends on the view alone, which the extension allows for direct and ambient light alike).
 struct BrdfLobes {
-  dvec3 diffuse;
-  dvec3 specular;
+  dvec3 diffuse{0.0};
+  dvec3 specular{0.0};
   double coat = 0.0;
   dvec3 sheen{0.0};
   dvec3 sum() const { return diffuse + specular + dvec3(coat) + sheen; }

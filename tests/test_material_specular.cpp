@@ -59,15 +59,35 @@ pbr::RenderedFrames renderFloat(const pbr::Scene& scene, const pbr::ShadingVaria
   return pbr::renderOffscreen(shaders, scene, kSize, options, 2, config);
 }
 
+// Pixels of `a` and `b` whose radiance differs in any colour channel, in the frame's left and right halves.
+std::pair<int, int> differingHalves(const pbr::RenderedFrames& a, const pbr::RenderedFrames& b) {
+  int left = 0, right = 0;
+  for (int y = 0; y < kSize.y; ++y) {
+    for (int x = 0; x < kSize.x; ++x) {
+      const size_t i = 4 * (size_t(y) * kSize.x + x);
+      const bool same = a.hdr.pixels[i] == b.hdr.pixels[i] && a.hdr.pixels[i + 1] == b.hdr.pixels[i + 1] &&
+                        a.hdr.pixels[i + 2] == b.hdr.pixels[i + 2];
+      (x < kSize.x / 2 ? left : right) += same ? 0 : 1;
+    }
+  }
+  return {left, right};
+}
+
+// Relative RMSE of the GPU frame of `scene` against the reference's, both with the Fresnel form `fresnel`.
+double referenceError(const pbr::Scene& scene, const char* fresnel) {
+  const pbr::ShadingVariant variant = pbr::parseShadingVariant(std::string("fresnel=") + fresnel);
+  pbr::reference::ReferenceOptions options;
+  options.forms = pbr::reference::BrdfForms(variant);
+  const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, options);
+  return pbr::test::relativeRmse(renderFloat(scene, variant).hdr, ref.radiance);
+}
+
 }  // namespace
 
 TEST_CASE("material specular: ior, specular strength and colour match the CPU reference, direct light alone") {
   PBR_REQUIRE_GL();
   // The reference's forms: exact Fresnel, each channel's index of refraction taken from F0 / F90.
-  const pbr::Scene scene = grid(0.0f);
-  const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y);
-  const pbr::RenderedFrames gpu = renderFloat(scene, pbr::parseShadingVariant("fresnel=exact"));
-  const double error = pbr::test::relativeRmse(gpu.hdr, ref.radiance);
+  const double error = referenceError(grid(0.0f), "exact");
   MESSAGE("relative RMSE " << error);
   CHECK(error < 1e-4);  // 1e-5 measured on llvmpipe
 }
@@ -76,12 +96,7 @@ TEST_CASE("material specular: with uniform ambient light, Schlick's forms on bot
   PBR_REQUIRE_GL();
   // The ambient term takes a dielectric's albedo from Schlick's split F0 A + F90 B of the variant's table, which
   // is exact for Schlick's form: the default model's, within its budget of 1e-3.
-  const pbr::Scene scene = grid(0.02f);
-  const pbr::ShadingVariant schlick = pbr::parseShadingVariant("fresnel=schlick");
-  pbr::reference::ReferenceOptions options;
-  options.forms = pbr::reference::BrdfForms(schlick);
-  const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, options);
-  const double error = pbr::test::relativeRmse(renderFloat(scene, schlick).hdr, ref.radiance);
+  const double error = referenceError(grid(0.02f), "schlick");
   MESSAGE("relative RMSE " << error);
   CHECK(error < 1e-3);  // 2e-4 measured on llvmpipe
 }
@@ -109,15 +124,7 @@ TEST_CASE("material specular: the core material renders bit for bit where the G-
     options.variant = pbr::parseShadingVariant(variant);
     const pbr::test::RenderedFrame a = pbr::test::renderScene(plain, kSize, options);
     const pbr::test::RenderedFrame b = pbr::test::renderScene(extended, kSize, options);
-    int differentLeft = 0, differentRight = 0;
-    for (int y = 0; y < kSize.y; ++y) {
-      for (int x = 0; x < kSize.x; ++x) {
-        const size_t i = 4 * (size_t(y) * kSize.x + x);
-        const bool same = a.hdr.pixels[i] == b.hdr.pixels[i] && a.hdr.pixels[i + 1] == b.hdr.pixels[i + 1] &&
-                          a.hdr.pixels[i + 2] == b.hdr.pixels[i + 2];
-        (x < kSize.x / 2 ? differentLeft : differentRight) += same ? 0 : 1;
-      }
-    }
+    const auto [differentLeft, differentRight] = differingHalves(a, b);
     CHECK(differentLeft == 0);
     CHECK(differentRight > 100);  // the half-strength sphere does change
   }
@@ -170,20 +177,12 @@ TEST_CASE("material clearcoat: the coat over dielectric and metal bases matches 
   // Direct light with the reference's forms, then uniform ambient light with Schlick's on both sides (the ambient
   // table's split is Schlick's); smooth coats' sharp highlights leave 4e-4 of float arithmetic (llvmpipe).
   {
-    const pbr::Scene scene = coatGrid(0.0f);
-    const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y);
-    const double error =
-        pbr::test::relativeRmse(renderFloat(scene, pbr::parseShadingVariant("fresnel=exact")).hdr, ref.radiance);
+    const double error = referenceError(coatGrid(0.0f), "exact");
     MESSAGE("direct: relative RMSE " << error);
     CHECK(error < 1e-3);
   }
   {
-    const pbr::Scene scene = coatGrid(0.02f);
-    const pbr::ShadingVariant schlick = pbr::parseShadingVariant("fresnel=schlick");
-    pbr::reference::ReferenceOptions options;
-    options.forms = pbr::reference::BrdfForms(schlick);
-    const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, options);
-    const double error = pbr::test::relativeRmse(renderFloat(scene, schlick).hdr, ref.radiance);
+    const double error = referenceError(coatGrid(0.02f), "schlick");
     MESSAGE("with ambient: relative RMSE " << error);
     CHECK(error < 1e-3);
   }
@@ -205,15 +204,7 @@ TEST_CASE("material clearcoat: a coat of strength 0 renders the base model bit f
   REQUIRE(pbr::gbufferLayout(extended).clearcoat);
   const pbr::test::RenderedFrame a = pbr::test::renderScene(plain, kSize, {});
   const pbr::test::RenderedFrame b = pbr::test::renderScene(extended, kSize, {});
-  int differentLeft = 0, differentRight = 0;
-  for (int y = 0; y < kSize.y; ++y) {
-    for (int x = 0; x < kSize.x; ++x) {
-      const size_t i = 4 * (size_t(y) * kSize.x + x);
-      const bool same = a.hdr.pixels[i] == b.hdr.pixels[i] && a.hdr.pixels[i + 1] == b.hdr.pixels[i + 1] &&
-                        a.hdr.pixels[i + 2] == b.hdr.pixels[i + 2];
-      (x < kSize.x / 2 ? differentLeft : differentRight) += same ? 0 : 1;
-    }
-  }
+  const auto [differentLeft, differentRight] = differingHalves(a, b);
   CHECK(differentLeft == 0);
   CHECK(differentRight > 100);
 }
@@ -248,20 +239,12 @@ TEST_CASE("material sheen: the Charlie lobe and its albedo scaling match the CPU
   PBR_REQUIRE_GL();
   // The GPU's E table (sheen_albedo.comp, 1024 samples a texel) against the reference's own quadrature.
   {
-    const pbr::Scene scene = sheenGrid(0.0f);
-    const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y);
-    const double error =
-        pbr::test::relativeRmse(renderFloat(scene, pbr::parseShadingVariant("fresnel=exact")).hdr, ref.radiance);
+    const double error = referenceError(sheenGrid(0.0f), "exact");
     MESSAGE("direct: relative RMSE " << error);
     CHECK(error < 1e-3);  // 4e-4 measured on llvmpipe
   }
   {
-    const pbr::Scene scene = sheenGrid(0.02f);
-    const pbr::ShadingVariant schlick = pbr::parseShadingVariant("fresnel=schlick");
-    pbr::reference::ReferenceOptions options;
-    options.forms = pbr::reference::BrdfForms(schlick);
-    const pbr::reference::ReferenceFrame ref = pbr::reference::renderReference(scene, kSize.x, kSize.y, options);
-    const double error = pbr::test::relativeRmse(renderFloat(scene, schlick).hdr, ref.radiance);
+    const double error = referenceError(sheenGrid(0.02f), "schlick");
     MESSAGE("with ambient: relative RMSE " << error);
     CHECK(error < 1e-3);
   }
@@ -288,15 +271,7 @@ TEST_CASE("material sheen: a black sheen renders the base model bit for bit") {
     }
     const pbr::test::RenderedFrame fa = pbr::test::renderScene(a, kSize, {});
     const pbr::test::RenderedFrame fb = pbr::test::renderScene(b, kSize, {});
-    int differentLeft = 0, differentRight = 0;
-    for (int y = 0; y < kSize.y; ++y) {
-      for (int x = 0; x < kSize.x; ++x) {
-        const size_t i = 4 * (size_t(y) * kSize.x + x);
-        const bool same = fa.hdr.pixels[i] == fb.hdr.pixels[i] && fa.hdr.pixels[i + 1] == fb.hdr.pixels[i + 1] &&
-                          fa.hdr.pixels[i + 2] == fb.hdr.pixels[i + 2];
-        (x < kSize.x / 2 ? differentLeft : differentRight) += same ? 0 : 1;
-      }
-    }
+    const auto [differentLeft, differentRight] = differingHalves(fa, fb);
     CHECK(differentLeft == 0);
     CHECK(differentRight > 100);
   }
