@@ -139,6 +139,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
 
   // Every G-buffer draw writes the channels the scene's layout has.
   layout_ = gbufferLayout(scene);
+  blendedExtensions_ = materialExtensions(scene, true);
   const ShaderDefines layoutDefines = {{"MATERIAL_SPECULAR", layout_.specular ? "1" : "0"},
                                        {"MATERIAL_CLEARCOAT", layout_.clearcoat ? "1" : "0"},
                                        {"MATERIAL_SHEEN", layout_.sheen ? "1" : "0"}};

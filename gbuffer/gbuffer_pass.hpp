@@ -45,6 +45,8 @@ class GBufferPass {
   // The channels the scene's materials need (gbufferLayout), which every G-buffer program writes: the target
   // render() draws into must have them.
   const GBufferLayout& layout() const { return layout_; }
+  // The extensions the BLEND materials use (materialExtensions), which drawBlended's programs shade.
+  const GBufferLayout& blendedExtensions() const { return blendedExtensions_; }
   // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
   // the program `program` makes from this pass's vertex shader and the object's permutation; BackToFront orders
   // them as seen by `camera`.
@@ -103,6 +105,7 @@ class GBufferPass {
   size_t opaqueDraws_ = 0;
   bool unlit_ = false;
   GBufferLayout layout_;
+  GBufferLayout blendedExtensions_;
   std::vector<ShaderDefines> blendedPermutations_;
   GLsizeiptr blockStride_;
   GLsizeiptr shadowViewStride_;  // renderDepth's blocks of view-projections, at the offset alignment

@@ -26,8 +26,18 @@ std::string GBufferLayout::describe(GBufferPrecision p) const {
   return name + ", " + std::to_string(bytes) + " bytes per pixel (" + channels + ")";
 }
 
-GBufferLayout gbufferLayout(const Scene& scene) {
-  return {hasSpecularMaterial(scene, false), hasClearcoatMaterial(scene, false), hasSheenMaterial(scene, false)};
+GBufferLayout materialExtensions(const Scene& scene, bool blended) {
+  GBufferLayout used;
+  for (const SceneObject& o : scene.objects) {
+    const Material& m = o.material;
+    if ((m.alphaMode == AlphaMode::Blend) != blended) continue;
+    used.specular = used.specular || hasDielectricSpecular(m);
+    used.clearcoat = used.clearcoat || m.clearcoat > 0.0f;
+    used.sheen = used.sheen || m.sheenColor != glm::vec3(0.0f);
+  }
+  return used;
 }
+
+GBufferLayout gbufferLayout(const Scene& scene) { return materialExtensions(scene, false); }
 
 }  // namespace pbr

@@ -17,11 +17,12 @@ constexpr int gbufferBytesPerPixel(GBufferPrecision precision) {
 }
 
 // The channels a scene's materials need beyond the core metal-rough ones (gbuffer/README.md): chosen when the scene
-// loads, so that a scene whose materials use no extension keeps the 16-byte layout and its programs.
+// loads, so that a scene whose materials use no extension keeps the 16-byte layout and its programs. Each is set
+// where a material sets its extension to other than the core material's values.
 struct GBufferLayout {
-  bool specular = false;   // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasSpecularMaterial)
-  bool clearcoat = false;  // KHR_materials_clearcoat: its strength, roughness and normal (hasClearcoatMaterial)
-  bool sheen = false;      // KHR_materials_sheen: its colour and roughness (hasSheenMaterial)
+  bool specular = false;   // KHR_materials_ior / _specular: the dielectric's F0 and F90 (hasDielectricSpecular)
+  bool clearcoat = false;  // KHR_materials_clearcoat: its strength, roughness and normal (a strength above 0)
+  bool sheen = false;      // KHR_materials_sheen: its colour and roughness (a colour other than black)
   int extraBytesPerPixel(GBufferPrecision precision) const;
   // "base colour, normal, material, depth" and the extra channels, with bytes per pixel: "lean, 16 bytes per pixel
   // (base colour, normal, material, depth)", "lean + specular, 24 bytes per pixel (...)".
@@ -30,6 +31,9 @@ struct GBufferLayout {
     return specular == o.specular && clearcoat == o.clearcoat && sheen == o.sheen;
   }
 };
-GBufferLayout gbufferLayout(const Scene& scene);
+// The extensions the scene's BLEND materials (`blended`), or its other materials, use: for the others, the
+// G-buffer's layout; for the BLEND ones, the permutation the transparency pass shades them with.
+GBufferLayout materialExtensions(const Scene& scene, bool blended);
+GBufferLayout gbufferLayout(const Scene& scene);  // materialExtensions(scene, false)
 
 }  // namespace pbr

@@ -220,9 +220,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.environment = ibl ? &maps : nullptr;
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
-                        lighting.specularMaterials = hasSpecularMaterial(sceneData_, true);
-                        lighting.clearcoatMaterials = hasClearcoatMaterial(sceneData_, true);
-                        lighting.sheenMaterials = hasSheenMaterial(sceneData_, true);
+                        const GBufferLayout& extensions = scene_.geometry.blendedExtensions();
+                        lighting.specularMaterials = extensions.specular;
+                        lighting.clearcoatMaterials = extensions.clearcoat;
+                        lighting.sheenMaterials = extensions.sheen;
                         OitTargets oit;
                         GLuint target = t.blendTarget.id();
                         if (options.transparency == Transparency::Oit) {

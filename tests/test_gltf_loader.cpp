@@ -27,6 +27,7 @@
 #include "core/scene/gltf_loader.hpp"
 #include "core/scene/model_scene.hpp"
 #include "core/scene/mesh_tangent_space.hpp"
+#include "gbuffer/gbuffer_precision.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gltf_builder.hpp"
 
@@ -1146,8 +1147,8 @@ TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warne
   CHECK(scene.objects[0].material.clearcoat == 0.75f);
   CHECK(scene.objects[0].material.clearcoatRoughness == 0.25f);
   CHECK(warnings.text().find("KHR_materials_clearcoat.clearcoatNormalTexture: not drawn") != std::string::npos);
-  CHECK(pbr::hasClearcoatMaterial(scene, false));
-  CHECK_FALSE(pbr::hasClearcoatMaterial(scene, true));
+  CHECK(pbr::materialExtensions(scene, false).clearcoat);
+  CHECK_FALSE(pbr::materialExtensions(scene, true).clearcoat);
 }
 
 TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of") {
@@ -1170,5 +1171,5 @@ TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of
   CHECK(scene.objects[0].material.sheenColor == glm::vec3(1.0f, 0.5f, 0.25f));
   CHECK(scene.objects[0].material.sheenRoughness == 0.75f);
   CHECK(warnings.text().find("KHR_materials_sheen.sheenColorTexture: not drawn") != std::string::npos);
-  CHECK(pbr::hasSheenMaterial(scene, false));
+  CHECK(pbr::materialExtensions(scene, false).sheen);
 }

@@ -279,14 +279,14 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
     return texture(info.Get("index").GetNumberAsInt(), srgb, field);
   };
   m.baseColorTexture = textureInfo("diffuseTexture", true, m.baseColorUvTransform, m.baseColorTexCoord);
-  const auto cachedBefore = loaded_.textures;
+  const size_t decodedBefore = loaded_.textures.size();
   const int glossMap = textureInfo("specularGlossinessTexture", false, m.metallicRoughnessUvTransform,
                                    m.metallicRoughnessTexCoord);
   if (glossMap >= 0) {
     // Roughness 1 - glossinessFactor x alpha in the green channel, as a metallic-roughness map holds it; the
     // factor is folded in, the material's roughness factor becomes 1 and its metalness stays 0. A map decoded for
     // this material alone is rewritten in place (and forgotten by the cache), so that no unused copy is uploaded.
-    const bool decodedHere = loaded_.textures.size() != cachedBefore.size();
+    const bool decodedHere = loaded_.textures.size() != decodedBefore;
     TextureData roughness = scene_.textures[size_t(glossMap)];
     roughness.name += " (roughness from glossiness)";
     for (size_t i = 0; i < roughness.rgba.size(); i += 4) {
@@ -297,7 +297,7 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
       roughness.rgba[i + 3] = 255;
     }
     if (decodedHere) {
-      loaded_.textures = cachedBefore;
+      loaded_.textures.erase({v.Get("specularGlossinessTexture").Get("index").GetNumberAsInt(), false});
       scene_.textures[size_t(glossMap)] = std::move(roughness);
       m.metallicRoughnessTexture = glossMap;
     } else {

@@ -206,24 +206,6 @@ glm::vec4 dielectricSpecular(const Material& m) {
 
 bool hasDielectricSpecular(const Material& m) { return dielectricSpecular(m) != glm::vec4(glm::vec3(0.04f), 1.0f); }
 
-bool hasSpecularMaterial(const Scene& scene, bool blended) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
-    return (o.material.alphaMode == AlphaMode::Blend) == blended && hasDielectricSpecular(o.material);
-  });
-}
-
-bool hasClearcoatMaterial(const Scene& scene, bool blended) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
-    return (o.material.alphaMode == AlphaMode::Blend) == blended && o.material.clearcoat > 0.0f;
-  });
-}
-
-bool hasSheenMaterial(const Scene& scene, bool blended) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) {
-    return (o.material.alphaMode == AlphaMode::Blend) == blended && o.material.sheenColor != glm::vec3(0.0f);
-  });
-}
-
 bool hasUnlitSurface(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
     return o.material.unlit && o.material.alphaMode != AlphaMode::Blend;

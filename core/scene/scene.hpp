@@ -209,14 +209,6 @@ struct Scene {
 bool hasBlendMaterial(const Scene& scene);
 // Whether an opaque or MASK object's material is unlit: the deferred pass then reads the G-buffer's unlit flag.
 bool hasUnlitSurface(const Scene& scene);
-// Whether the material of an object, among the BLEND ones (`blended`) or the others, sets KHR_materials_ior or
-// _specular to other than the core material's: the G-buffer then holds each pixel's dielectric F0 and F90
-// (gbuffer/README.md), or the transparency pass shades with them.
-bool hasSpecularMaterial(const Scene& scene, bool blended);
-// The same for KHR_materials_clearcoat, set where the factor is above 0, and KHR_materials_sheen, where the colour
-// is not black.
-bool hasClearcoatMaterial(const Scene& scene, bool blended);
-bool hasSheenMaterial(const Scene& scene, bool blended);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
 bool readsTexCoord1(const Material& material);
 

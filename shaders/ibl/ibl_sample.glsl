@@ -37,7 +37,7 @@ vec3 iblSpecular(vec3 R, float roughness) {
 // Engine 4"); texel centres lie on the ends of both ranges (ibl/dfg.comp).
 vec2 iblDfg(float NoV, float roughness) {
   vec2 size = vec2(textureSize(iblDfgTable, 0));
-  vec2 uv = (vec2(saturate(NoV), saturate(roughness)) * (size - 1.0) + 0.5) / size;
+  vec2 uv = tableUv(vec2(NoV, roughness), size);
   return textureLod(iblDfgTable, uv, 0.0).rg;
 }
 

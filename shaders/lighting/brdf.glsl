@@ -37,6 +37,12 @@ vec3 F_Schlick(vec3 F0, float VoH) { return F0 + (1.0 - F0) * pow5(1.0 - VoH); }
 // Schlick's term with (1 - c)^5 fitted by a spherical Gaussian (Karis 2013, "Real Shading in Unreal Engine 4").
 vec3 F_SchlickSG(vec3 F0, float VoH) { return F0 + (1.0 - F0) * exp2((-5.55473 * VoH - 6.98316) * VoH); }
 
+// Both with a grazing reflectance F90 other than 1 (glTF's KHR_materials_specular).
+vec3 F_Schlick(vec3 F0, float F90, float VoH) { return F0 + (F90 - F0) * pow5(1.0 - VoH); }
+vec3 F_SchlickSG(vec3 F0, float F90, float VoH) {
+  return F0 + (F90 - F0) * exp2((-5.55473 * VoH - 6.98316) * VoH);
+}
+
 // Separable (uncorrelated) Smith G1(l) G1(v) / (4 NoL NoV) for GGX (Heitz 2014, "Understanding the
 // Masking-Shadowing Function"), G1 = 2 NoX / (NoX + sqrt(a^2 + (1 - a^2) NoX^2)) with the 2s cancelled.
 float V_SmithGGXSeparable(float NoV, float NoL, float a) {
@@ -122,7 +128,7 @@ vec4 gDielectric = vec4(vec3(0.04), 1.0);
 vec3 fresnel(vec3 baseColor, float metalness, vec4 dielectric, float c) {
 #if defined(FRESNEL_EXACT)
   // Each channel's index of refraction from F0 / F90, the exact term scaled to F90.
-  vec3 metal = baseColor + (1.0 - baseColor) * pow5(1.0 - c);
+  vec3 metal = F_Schlick(baseColor, c);
   vec3 f0 = dielectric.rgb / max(dielectric.a, 1e-6);
   vec3 exact =
       vec3(F_Dielectric(c, iorFromF0(f0.r)), F_Dielectric(c, iorFromF0(f0.g)), F_Dielectric(c, iorFromF0(f0.b)));
@@ -131,9 +137,9 @@ vec3 fresnel(vec3 baseColor, float metalness, vec4 dielectric, float c) {
   vec3 F0 = mix(dielectric.rgb, baseColor, metalness);
   float F90 = dielectric.a + (1.0 - dielectric.a) * metalness;  // 1 exactly for the core material
 #if defined(FRESNEL_SCHLICK_SG)
-  return F0 + (F90 - F0) * exp2((-5.55473 * c - 6.98316) * c);
+  return F_SchlickSG(F0, F90, c);
 #else
-  return F0 + (F90 - F0) * pow5(1.0 - c);
+  return F_Schlick(F0, F90, c);
 #endif
 #endif
 }

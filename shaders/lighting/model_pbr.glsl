@@ -11,7 +11,7 @@ float gSheenE, gSheenScale, gSheenR;
 
 float sheenAlbedoAt(float NoV, float roughness) {
   vec2 size = vec2(textureSize(sheenAlbedo, 0));
-  vec2 uv = (vec2(saturate(NoV), saturate(roughness)) * (size - 1.0) + 0.5) / size;
+  vec2 uv = tableUv(vec2(NoV, roughness), size);
   return textureLod(sheenAlbedo, uv, 0.0).r;
 }
 
@@ -53,7 +53,7 @@ layout(binding = AMBIENT_ALBEDO_UNIT) uniform sampler2D ambientAlbedo;
 // Uniform ambient radiance times the directional albedo of the whole BRDF, f n.l integrated over the hemisphere.
 vec3 shadeAmbient(Surface s) {
   vec2 size = vec2(textureSize(ambientAlbedo, 0));
-  vec2 uv = (vec2(saturate(s.NoV), saturate(s.roughness)) * (size - 1.0) + 0.5) / size;
+  vec2 uv = tableUv(vec2(s.NoV, s.roughness), size);
   vec4 t = textureLod(ambientAlbedo, uv, 0.0);
 #if MATERIAL_SPECULAR
   // The dielectric's albedo moved from the core material's by the split F0 A + F90 B (exact for Schlick's form).
@@ -77,7 +77,7 @@ vec3 shadeAmbient(Surface s) {
 #endif
 #if MATERIAL_CLEARCOAT
   // The coat's albedo is its lobe's with F 1: the metals' table at F0 1, A + B.
-  vec2 coatUv = (vec2(saturate(gCoatNoV), saturate(s.clearcoatRoughness)) * (size - 1.0) + 0.5) / size;
+  vec2 coatUv = tableUv(vec2(gCoatNoV, s.clearcoatRoughness), size);
   vec4 coat = textureLod(ambientAlbedo, coatUv, 0.0);
   albedo = (1.0 - gCoatWeight) * albedo + gCoatWeight * (coat.x + coat.y);
 #endif
