@@ -175,6 +175,8 @@ def hdr_seeds(assets, out):
     write(out, "flat.hdr", header + bytes(range(64)))
     write(out, "half.exr", openexr(4, 4, 1))
     write(out, "float.exr", openexr(4, 4, 2))
+    write(out, "tiled.exr", openexr_tiled(4, 4, 2, 0))
+    write(out, "tiled-mipmap.exr", openexr_tiled(4, 4, 2, 1))
 
 
 def openexr(width, height, pixel_type):
@@ -197,6 +199,40 @@ def openexr(width, height, pixel_type):
     value = struct.pack("<e", 0.5) if pixel_type == 1 else struct.pack("<f", 0.5)
     blocks = b"".join(struct.pack("<ii", y, row_bytes) + value * (3 * width) for y in range(height))
     return header + offsets + blocks
+
+
+def openexr_tiled(width, height, tile, mode):
+    """An uncompressed single-part tiled OpenEXR picture of float B, G and R channels in square tiles, one level
+    (mode 0) or mipmapped rounding down (mode 1): the version's tiled bit, a tile description, the type field, one
+    offset a tile of every level and each tile's block."""
+    def attribute(name, kind, value):
+        return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value)) + value
+    channels = b"".join(c + b"\0" + struct.pack("<iBxxxii", 2, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    box = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    header = (struct.pack("<ii", 20000630, 2 | 0x200) + attribute(b"channels", b"chlist", channels) +
+              attribute(b"compression", b"compression", b"\0") + attribute(b"dataWindow", b"box2i", box) +
+              attribute(b"displayWindow", b"box2i", box) + attribute(b"lineOrder", b"lineOrder", b"\0") +
+              attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0)) +
+              attribute(b"screenWindowCenter", b"v2f", struct.pack("<ff", 0.0, 0.0)) +
+              attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0)) +
+              attribute(b"tiles", b"tiledesc", struct.pack("<IIB", tile, tile, mode)) +
+              attribute(b"type", b"string", b"tiledimage") + b"\0")
+    levels = [(width, height)]
+    while mode == 1 and max(levels[-1]) > 1:
+        levels.append((max(levels[-1][0] // 2, 1), max(levels[-1][1] // 2, 1)))
+    blocks = []
+    for level, (w, h) in enumerate(levels):
+        for ty in range(-(-h // tile)):
+            for tx in range(-(-w // tile)):
+                tw, th = min(tile, w - tx * tile), min(tile, h - ty * tile)
+                data = struct.pack("<f", 0.5) * (3 * tw * th)
+                blocks.append(struct.pack("<iiiii", tx, ty, level, level, len(data)) + data)
+    first = len(header) + 8 * len(blocks)
+    offsets, at = b"", first
+    for block in blocks:
+        offsets += struct.pack("<Q", at)
+        at += len(block)
+    return header + offsets + b"".join(blocks)
 
 
 def png(width, height, colour_type, depth, rows, palette=None):

@@ -3,7 +3,10 @@
 #include <tinyexr.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -26,6 +29,62 @@ std::string takeError(const char* err, const std::string& fallback) {
   return text.empty() ? fallback : text;
 }
 
+uint32_t littleEndian32(const std::string& bytes, size_t at) {
+  uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | uint8_t(bytes[at + size_t(i)]);
+  return v;
+}
+
+// Debian's tinyexr keeps its asserts, and it asserts, rather than returning an error, on header fields that
+// contradict each other: a type that is not the image's kind, a tile description of the wrong size, a level mode
+// the format does not define, a tile too large for its level arithmetic. Those fields are read here first, walking
+// the attributes as tinyexr does (name, type name, 32-bit size, value). tinyexr converts what it read before
+// damage too, so the walk stops where it would and still checks what came before; the damage is tinyexr's to name.
+void checkHeaderFields(const std::string& bytes, const EXRVersion& version, const std::string& path) {
+  std::string type;
+  bool tiles = false;
+  size_t at = 8;  // past the magic number and the version field
+  while (at < bytes.size() && bytes[at] != '\0') {
+    const size_t nameEnd = bytes.find('\0', at);
+    const size_t typeEnd = nameEnd == std::string::npos ? nameEnd : bytes.find('\0', nameEnd + 1);
+    if (typeEnd == std::string::npos || bytes.size() - typeEnd < 5) break;
+    const size_t value = typeEnd + 5, size = littleEndian32(bytes, typeEnd + 1);
+    if (size > bytes.size() - value) break;
+    // tinyexr takes an empty value for a string only.
+    if (size == 0 && bytes.compare(nameEnd + 1, typeEnd - nameEnd - 1, "string") != 0) break;
+    const std::string name = bytes.substr(at, nameEnd - at);
+    if (name == "type") {
+      // An empty value leaves the type read before, as tinyexr leaves it.
+      const std::string read(bytes.data() + value, strnlen(bytes.data() + value, size));
+      if (!read.empty()) type = read;
+    } else if (name == "tiles" && version.tiled) {
+      if (size != 9) {
+        throw std::runtime_error(path + ": OpenEXR header field tiles holds " + std::to_string(size) +
+                                 " bytes (a tile description is 9)");
+      }
+      const uint32_t tileX = littleEndian32(bytes, value), tileY = littleEndian32(bytes, value + 4);
+      if (tileX < 1 || tileY < 1 || tileX > uint32_t(kMaxSide) || tileY > uint32_t(kMaxSide)) {
+        throw std::runtime_error(path + ": OpenEXR tile size " + std::to_string(tileX) + "x" +
+                                 std::to_string(tileY) + " out of range (1 to " + std::to_string(kMaxSide) +
+                                 " a side)");
+      }
+      if ((uint8_t(bytes[value + 8]) & 0x3) > TINYEXR_TILE_RIPMAP_LEVELS) {
+        throw std::runtime_error(path + ": OpenEXR header field tiles names level mode 3 (0 to 2 are defined)");
+      }
+      tiles = true;
+    }
+    at = value + size;
+  }
+  // tinyexr reads an image as tiled when the version field says so and a tile description is present.
+  const char* kind = tiles ? "tiledimage" : "scanlineimage";
+  if (!type.empty() && type != kind) {
+    for (char& c : type) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    if (type.size() > 40) type = type.substr(0, 40) + "...";
+    throw std::runtime_error(path + ": OpenEXR header field type is \"" + type + "\", but the header describes a " +
+                             (tiles ? "tiled" : "scanline") + " image");
+  }
+}
+
 }  // namespace
 
 bool hasOpenExrMagic(const std::string& bytes) {
@@ -43,6 +102,7 @@ ImageRgbaF readOpenExr(const std::string& path) {
   if (version.multipart || version.non_image) {
     throw std::runtime_error(path + ": a multi-part or deep OpenEXR file (an environment is one scanline image)");
   }
+  checkHeaderFields(bytes, version, path);
   // The header and the image are freed on every path: tinyexr's LoadEXRFromMemory leaks the header when the pixels
   // fail to decode, so its parts are called here instead.
   struct Parts {
@@ -108,8 +168,14 @@ ImageRgbaF readOpenExr(const std::string& path) {
   if (exr.image.tiles) {
     for (int t = 0; t < exr.image.num_tiles; ++t) {
       const EXRTile& tile = exr.image.tiles[t];
-      place(tile.images, tile.offset_x * header.tile_size_x, tile.offset_y * header.tile_size_y, tile.width,
-            tile.height);
+      // The tile's place as its block names it, which tinyexr passes on unchecked.
+      const int64_t x0 = int64_t(tile.offset_x) * header.tile_size_x, y0 = int64_t(tile.offset_y) * header.tile_size_y;
+      if (x0 < 0 || y0 < 0 || x0 >= w || y0 >= h || tile.width < 1 || tile.height < 1 ||
+          tile.width > header.tile_size_x || tile.height > header.tile_size_y) {
+        throw std::runtime_error(path + ": OpenEXR tile (" + std::to_string(tile.offset_x) + ", " +
+                                 std::to_string(tile.offset_y) + ") lies outside the data window");
+      }
+      place(tile.images, int(x0), int(y0), tile.width, tile.height);
     }
   } else if (exr.image.images && exr.image.width == w && exr.image.height == h) {
     place(exr.image.images, 0, 0, w, h);

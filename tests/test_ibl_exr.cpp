@@ -1,8 +1,9 @@
 // OpenEXR environments (ibl/openexr_image.*): the same radiance as an .exr and as an .hdr lights a frame alike,
-// and a damaged, oversized or non-finite file is named in one line.
+// and a damaged, oversized, self-contradicting or non-finite file is named in one line.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -98,6 +99,29 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
   const std::string overPath = dir.write("over.exr", wide);
   CHECK(errorOf(overPath) == overPath + ": OpenEXR image size 30000x3000 is 90000000 pixels, over the limit of "
                                         "67108864 (1 GiB as float RGBA)");
+  // Header fields that contradict each other, on which tinyexr would assert: refused, naming the field.
+  const auto withField = [&](const std::string& name, const std::string& kind, const std::string& value, bool tiled) {
+    std::string edited = bytes;
+    if (tiled) edited[5] = char(edited[5] | 0x02);  // the version field's tiled bit (bit 9)
+    const uint32_t size = uint32_t(value.size());
+    edited.insert(8, name + '\0' + kind + '\0' + std::string(reinterpret_cast<const char*>(&size), 4) + value);
+    return dir.write(name + "-" + std::to_string(edited.size()) + ".exr", edited);
+  };
+  const std::string typed = withField("type", "string", "tiledimage", false);
+  CHECK(errorOf(typed) == typed + ": OpenEXR header field type is \"tiledimage\", but the header describes a "
+                                  "scanline image");
+  // tinyexr converts the fields it read before damage it stops at: those are checked too.
+  std::string cutShort = bytes;
+  cutShort.insert(8, std::string("type\0string\0\2\0\0\0ow", 18) + std::string("x\0y\0\xff\xff\xff\x7f", 8));
+  const std::string damaged = dir.write("damaged.exr", cutShort);
+  CHECK(errorOf(damaged) == damaged + ": OpenEXR header field type is \"ow\", but the header describes a "
+                                      "scanline image");
+  const std::string shortTiles = withField("tiles", "tiledesc", std::string(4, '\2'), true);
+  CHECK(errorOf(shortTiles) == shortTiles + ": OpenEXR header field tiles holds 4 bytes (a tile description is 9)");
+  const std::string levelMode = withField("tiles", "tiledesc", std::string("\2\0\0\0\2\0\0\0\3", 9), true);
+  CHECK(errorOf(levelMode) == levelMode + ": OpenEXR header field tiles names level mode 3 (0 to 2 are defined)");
+  const std::string noTile = withField("tiles", "tiledesc", std::string("\0\0\0\0\2\0\0\0\0", 9), true);
+  CHECK(errorOf(noTile) == noTile + ": OpenEXR tile size 0x2 out of range (1 to 32767 a side)");
   const std::string notExr = dir.write("plain.exr", "not an image");
   CHECK(errorOf(notExr) == notExr + ": not an OpenEXR file (no EXR magic number)");
 }
