@@ -26,7 +26,7 @@ void TransparencyDebugPass::render(const BlendedSurfaces& surfaces, const Textur
           const std::vector<BindingPoint>& bindings) -> const Program& {
         return programs.get(vertexShader, material, bindings);
       },
-      BlendOrder::Any, 1);
+      BlendOrder::Any, 1, BlendedSet::Blend);
   glDisable(GL_BLEND);
 
   programs_.compute("lighting/transparency_debug.comp",

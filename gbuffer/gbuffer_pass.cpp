@@ -65,6 +65,9 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
     b.dielectric = dielectricSpecular(m);
     b.layers = glm::vec4(m.clearcoat, m.clearcoatRoughness, m.sheenRoughness, 0.0f);
     b.sheenColor = glm::vec4(m.sheenColor, 0.0f);
+    const bool absorbs = std::isfinite(m.attenuationDistance);
+    b.transmission = glm::vec4(m.transmission, m.thickness, absorbs ? m.attenuationDistance : 0.0f, m.ior);
+    b.attenuationColor = glm::vec4(m.attenuationColor, 0.0f);
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
     b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
     b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
@@ -117,13 +120,16 @@ ShaderDefines GBufferPass::streamPermutation(const MeshData& mesh) {
 
 ShaderDefines GBufferPass::permutation(const Material& m) {
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
-  return {{"BASE_COLOR_MAP", flag(m.baseColorTexture >= 0)},
-          {"METALLIC_ROUGHNESS_MAP", flag(m.metallicRoughnessTexture >= 0)},
-          {"NORMAL_MAP", flag(m.normalTexture >= 0)},
-          {"OCCLUSION_MAP", flag(m.occlusionTexture >= 0)},
-          {"EMISSIVE_MAP", flag(m.emissiveTexture >= 0)},
-          {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)},
-          {"UNLIT", flag(m.unlit)}};
+  ShaderDefines defines = {{"BASE_COLOR_MAP", flag(m.baseColorTexture >= 0)},
+                           {"METALLIC_ROUGHNESS_MAP", flag(m.metallicRoughnessTexture >= 0)},
+                           {"NORMAL_MAP", flag(m.normalTexture >= 0)},
+                           {"OCCLUSION_MAP", flag(m.occlusionTexture >= 0)},
+                           {"EMISSIVE_MAP", flag(m.emissiveTexture >= 0)},
+                           {"ALPHA_MASK", flag(m.alphaMode == AlphaMode::Mask)},
+                           {"UNLIT", flag(m.unlit)}};
+  // Named only where used, so that the other permutations keep their define lists (an undefined name is 0 in #if).
+  if (isTransmissive(m)) defines.push_back({"MATERIAL_TRANSMISSION", "1"});
+  return defines;
 }
 
 GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
@@ -151,7 +157,9 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     std::string key;
     for (const ShaderDefine& d : defines) key += d.value;
     Draw d{};
-    d.blended = o.material.alphaMode == AlphaMode::Blend;
+    d.blended = isForwardShaded(o.material);
+    d.transmissive = isTransmissive(o.material);
+    d.castsShadow = !passesShadowRays(o.material);
     if (d.blended) {
       // Drawn by other passes' programs (drawBlended): no G-buffer program.
       auto it = blendedIndex.find(key);
@@ -174,7 +182,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
     d.doubleSided = o.material.doubleSided;
     d.mirrored = mirrors(o.transform);
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
-    d.castsCutOut = o.material.alphaMode == AlphaMode::Mask || d.blended;
+    d.castsCutOut = o.material.alphaMode == AlphaMode::Mask || o.material.alphaMode == AlphaMode::Blend;
     d.cutOutTexture = d.castsCutOut && o.material.baseColorTexture >= 0;
     d.cutOutColors = d.castsCutOut && !mesh.colors.empty();
     d.cutOutUv1 = d.cutOutTexture && !mesh.uv1.empty();
@@ -206,6 +214,7 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   });
   unlit_ = hasUnlitSurface(scene);
   opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
+  transmissive_ = std::any_of(draws_.begin(), draws_.end(), [](const Draw& d) { return d.transmissive; });
 }
 
 void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changedMeshes) {
@@ -295,9 +304,12 @@ const GpuMesh& GBufferPass::casterMesh(const Draw& d, const ShadowCasterView& v,
 }
 
 void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const BlendedProgram& program,
-                              BlendOrder order, int repeats) const {
+                              BlendOrder order, int repeats, BlendedSet set) const {
   std::vector<const Draw*> blended;
-  for (size_t i = opaqueDraws_; i < draws_.size(); ++i) blended.push_back(&draws_[i]);
+  for (size_t i = opaqueDraws_; i < draws_.size(); ++i) {
+    const bool transmissive = draws_[i].transmissive;
+    if (set == BlendedSet::All || transmissive == (set == BlendedSet::Transmissive)) blended.push_back(&draws_[i]);
+  }
   if (order == BlendOrder::BackToFront) {
     // By the distance of the bounds' centres, which orders them as their view depths do for objects ahead of the
     // camera and keeps the order when the camera turns on the spot (glTF-Sample-Viewer sorts by the centre's depth);
@@ -313,7 +325,7 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  glDepthMask(GL_FALSE);
+  glDepthMask(set == BlendedSet::Transmissive ? GL_TRUE : GL_FALSE);
   const std::vector<BindingPoint> bindings = {gbuffer_binding::kObjectUbo, gbuffer_binding::kBaseColorMapUnit,
                                               gbuffer_binding::kMetallicRoughnessMapUnit,
                                               gbuffer_binding::kNormalMapUnit, gbuffer_binding::kOcclusionMapUnit,
@@ -417,6 +429,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
     const Program* bound = nullptr;
     for (size_t d = 0; d < draws_.size(); ++d) {
       const Draw& draw = draws_[d];
+      if (!draw.castsShadow) continue;
       // The tessellation each view draws the caster with; none where the view cannot see it.
       bool any = false;
       for (size_t i = 0; i < count; ++i) {

@@ -38,20 +38,23 @@ class GBufferPass {
   size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views, bool viewportFromVertex);
   // Views one shadow draw may cover: GL's least number of viewports (shaders/gbuffer/shadow_depth.vert).
   static constexpr size_t kViewsPerDraw = 16;
-  // Whether the scene has BLEND objects, which the G-buffer leaves out and drawBlended draws.
+  // Whether the scene has forward-shaded objects (BLEND or transmissive), which the G-buffer leaves out and
+  // drawBlended draws.
   bool hasBlended() const { return opaqueDraws_ < draws_.size(); }
   // Whether the G-buffer holds unlit surfaces (hasUnlitSurface), whose pixels the lighting pass leaves unlit.
   bool hasUnlit() const { return unlit_; }
   // The channels the scene's materials need (gbufferLayout), which every G-buffer program writes: the target
   // render() draws into must have them.
   const GBufferLayout& layout() const { return layout_; }
-  // The extensions the BLEND materials use (materialExtensions), which drawBlended's programs shade.
+  // The extensions the forward-shaded materials use (materialExtensions), which drawBlended's programs shade.
   const GBufferLayout& blendedExtensions() const { return blendedExtensions_; }
-  // The BLEND objects into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth left as it is, each through
-  // the program `program` makes from this pass's vertex shader and the object's permutation; BackToFront orders
-  // them as seen by `camera`.
+  // The forward-shaded objects of `set` into `framebuffer` (BlendedSurfaces::draw): depth-tested, depth written by
+  // the transmissive set alone, each through the program `program` makes from this pass's vertex shader and the
+  // object's permutation; BackToFront orders them as seen by `camera`.
   void drawBlended(GLuint framebuffer, const Camera& camera, const BlendedProgram& program, BlendOrder order,
-                   int repeats) const;
+                   int repeats, BlendedSet set) const;
+  // Whether the scene has transmissive objects (BlendedSet::Transmissive).
+  bool hasTransmissive() const { return transmissive_; }
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }
 
@@ -66,7 +69,9 @@ class GBufferPass {
   static constexpr size_t kMapCount = 5;
   struct Draw {
     int mesh;
-    bool blended;    // alphaMode BLEND: not in the G-buffer
+    bool blended;    // forward-shaded (isForwardShaded): not in the G-buffer
+    bool transmissive;  // KHR_materials_transmission (isTransmissive)
+    bool castsShadow;   // drawn into the shadow maps (all but passesShadowRays)
     size_t program;  // programs_ index, or for a blended draw blendedPermutations_ index
     GLintptr blockOffset;
     bool doubleSided;
@@ -104,6 +109,7 @@ class GBufferPass {
   std::vector<Draw> draws_;  // the opaque and masked first, then the blended
   size_t opaqueDraws_ = 0;
   bool unlit_ = false;
+  bool transmissive_ = false;
   GBufferLayout layout_;
   GBufferLayout blendedExtensions_;
   std::vector<ShaderDefines> blendedPermutations_;

@@ -30,7 +30,7 @@ GBufferLayout materialExtensions(const Scene& scene, bool blended) {
   GBufferLayout used;
   for (const SceneObject& o : scene.objects) {
     const Material& m = o.material;
-    if ((m.alphaMode == AlphaMode::Blend) != blended) continue;
+    if (isForwardShaded(m) != blended) continue;
     used.specular = used.specular || hasDielectricSpecular(m);
     used.clearcoat = used.clearcoat || m.clearcoat > 0.0f;
     used.sheen = used.sheen || m.sheenColor != glm::vec3(0.0f);

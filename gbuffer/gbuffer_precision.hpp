@@ -31,8 +31,9 @@ struct GBufferLayout {
     return specular == o.specular && clearcoat == o.clearcoat && sheen == o.sheen;
   }
 };
-// The extensions the scene's BLEND materials (`blended`), or its other materials, use: for the others, the
-// G-buffer's layout; for the BLEND ones, the permutation the transparency pass shades them with.
+// The extensions the scene's forward-shaded materials (`blended`: BLEND or transmissive, isForwardShaded), or its
+// other materials, use: for the others, the G-buffer's layout; for the forward-shaded ones, the permutation the
+// transparency pass shades them with.
 GBufferLayout materialExtensions(const Scene& scene, bool blended);
 GBufferLayout gbufferLayout(const Scene& scene);  // materialExtensions(scene, false)
 

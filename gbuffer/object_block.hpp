@@ -19,11 +19,14 @@ struct ObjectBlock {
   glm::vec4 dielectric;    // the dielectric's F0 colour and F90 (dielectricSpecular, core/scene/scene.hpp)
   glm::vec4 layers;        // clearcoat strength and roughness (KHR_materials_clearcoat), sheen roughness; w unused
   glm::vec4 sheenColor;    // KHR_materials_sheen's colour, linear; w unused
+  glm::vec4 transmission;  // KHR_materials_transmission's factor, KHR_materials_volume's thickness (object space)
+                           // and attenuation distance (0: no absorption), the index of refraction
+  glm::vec4 attenuationColor;  // KHR_materials_volume's attenuation colour; w unused
   // Each material map's UV transform by texture unit: the GLSL mat2x3 whose two columns, each padded to a vec4 by
   // std140, are the rows of the 2x3 affine map (Material::*UvTransform transposed).
   glm::mat2x4 uvTransform[5];
 };
-static_assert(offsetof(ObjectBlock, uvTransform) == 2 * 64 + 7 * 16, "ObjectBlock must match its std140 layout");
-static_assert(sizeof(ObjectBlock) == 2 * 64 + 7 * 16 + 5 * 32, "ObjectBlock must match its std140 layout");
+static_assert(offsetof(ObjectBlock, uvTransform) == 2 * 64 + 9 * 16, "ObjectBlock must match its std140 layout");
+static_assert(sizeof(ObjectBlock) == 2 * 64 + 9 * 16 + 5 * 32, "ObjectBlock must match its std140 layout");
 
 }  // namespace pbr

@@ -345,7 +345,7 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
           const std::vector<BindingPoint>& bindings) -> const Program& {
         return programs.get(vertexShader, material, bindings);
       },
-      BlendOrder::Any, 1);
+      BlendOrder::Any, 1, BlendedSet::All);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

@@ -26,7 +26,7 @@ ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
   std::vector<BindingPoint> points = {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo,
                                       kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo, kSpotConeSsbo,
                                       kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
-                                      kShadowAtlasUnit,
+                                      kShadowAtlasUnit, kTransmissionBackgroundUnit,
                                       kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kLayerNodeSsbo};
   points.insert(points.end(), geometry.begin(), geometry.end());
   return bindingDefines(points);

@@ -56,6 +56,9 @@ constexpr BindingPoint kLayerNodeSsbo{"LAYER_NODE_SSBO", BindingKind::StorageBuf
 constexpr BindingPoint kAmbientAlbedoUnit{"AMBIENT_ALBEDO_UNIT", BindingKind::TextureUnit, 10};
 // KHR_materials_sheen's albedo table (lighting/ambient_albedo.hpp's SheenAlbedoTable).
 constexpr BindingPoint kSheenAlbedoUnit{"SHEEN_ALBEDO_UNIT", BindingKind::TextureUnit, 15};
+// The opaque frame transmissive surfaces see through, with its mip chain (TransmissionTargets); past the sixteen
+// units the other programs share (GL 4.5 has at least 80 in all, 16 a stage).
+constexpr BindingPoint kTransmissionBackgroundUnit{"TRANSMISSION_BACKGROUND_UNIT", BindingKind::TextureUnit, 16};
 }  // namespace lighting_binding
 
 // Where shaders/lighting/brdf_grid.comp writes its values (evaluateBrdfGrid, brdf_grid.hpp), a program run alone.

@@ -118,9 +118,10 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
                   GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights,
-                                 const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
-                                 const Texture& radiance, const LightClusters* clusters, const OitTargets& oit) {
+void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const TransmissionTargets& transmission,
+                                 const LightBuffer& lights, const LightingOptions& options,
+                                 const UniformBuffer<FrameBlock>& frame, const Texture& radiance,
+                                 const LightClusters* clusters, const OitTargets& oit) {
   // The counts and pictures of the debug views are the deferred pass's.
   LightingOptions forward = options;
   forward.stats = false;
@@ -132,14 +133,50 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
   const uint32_t perDispatch = lightsPerDispatch(clustered);
   const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
   const bool chunked = chunks > 1;
-  ShaderDefines lighting =
+  const ShaderDefines lighting =
       lightingPermutation(forward, clustered, hdrFormatOf(radiance.format()), chunked, lights.hasSpotLights(),
                           lightWindow_);
-  lighting.push_back({"OIT_WEIGHTED", weighted ? "1" : "0"});
-  lighting.push_back({"OIT_EXACT", exact ? "1" : "0"});
   bindShading(lights, forward, frame, clusters);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // Each object's later light chunks write alpha 0 (and no weight, no revealage): they add to what its first one
+  // composited.
+  const auto draw = [&](const BlendedSurfaces& set, BlendedSet which, bool weightedSums, bool lists) {
+    const ShaderDefines defines =
+        concat(lighting, {{"OIT_WEIGHTED", weightedSums ? "1" : "0"}, {"OIT_EXACT", lists ? "1" : "0"}});
+    BlendedPrograms programs(programs_, "lighting/forward.frag", [&](const std::vector<BindingPoint>& bindings) {
+      return concat(defines, forwardBindingDefines(bindings));
+    });
+    set.draw(
+        [&](int repeat, const std::string& vertexShader, const ShaderDefines& material,
+            const std::vector<BindingPoint>& bindings) -> const Program& {
+          const Program& p = programs.get(vertexShader, material, bindings);
+          const uint32_t first = uint32_t(repeat) * perDispatch;
+          if (!clustered) lights.bindWindow(first, perDispatch);
+          if (chunked) {
+            glProgramUniform4ui(p.id(), 0, first, first + perDispatch, repeat == 0 ? 1u : 0u,
+                                uint32_t(repeat) + 1 == chunks ? 1u : 0u);
+          }
+          return p;
+        },
+        weightedSums || lists ? BlendOrder::Any : BlendOrder::BackToFront, int(chunks), which);
+  };
+  if (transmission.surfaces) {
+    // What lies behind the transmissive surfaces: the opaque frame, blurred by roughness through its mip chain.
+    const Texture& background = *transmission.background;
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glCopyImageSubData(radiance.id(), GL_TEXTURE_2D, 0, 0, 0, 0, background.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       radiance.width(), radiance.height(), 1);
+    glGenerateTextureMipmap(background.id());
+    glBindTextureUnit(lighting_binding::kTransmissionBackgroundUnit.index, background.id());
+    glBindSampler(lighting_binding::kTransmissionBackgroundUnit.index, backgroundSampler_.id());
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over", as for sorted BLEND surfaces
+    draw(*transmission.surfaces, BlendedSet::Transmissive, false, false);
+    glDisable(GL_BLEND);
+    glBindSampler(lighting_binding::kTransmissionBackgroundUnit.index, 0);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
   if (exact) {
     // Empty lists; the fragments write nodes, no colour.
     const size_t pixels = size_t(radiance.width()) * size_t(radiance.height());
@@ -165,24 +202,7 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const LightBuf
     // Premultiplied "over" (forward.frag writes the lit colour times alpha, and alpha).
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   }
-  // Each object's later light chunks write alpha 0 (and no weight, no revealage): they add to what its first one
-  // composited.
-  BlendedPrograms programs(programs_, "lighting/forward.frag", [&](const std::vector<BindingPoint>& bindings) {
-    return concat(lighting, forwardBindingDefines(bindings));
-  });
-  surfaces.draw(
-      [&](int repeat, const std::string& vertexShader, const ShaderDefines& material,
-          const std::vector<BindingPoint>& bindings) -> const Program& {
-        const Program& p = programs.get(vertexShader, material, bindings);
-        const uint32_t first = uint32_t(repeat) * perDispatch;
-        if (!clustered) lights.bindWindow(first, perDispatch);
-        if (chunked) {
-          glProgramUniform4ui(p.id(), 0, first, first + perDispatch, repeat == 0 ? 1u : 0u,
-                              uint32_t(repeat) + 1 == chunks ? 1u : 0u);
-        }
-        return p;
-      },
-      orderIndependent ? BlendOrder::Any : BlendOrder::BackToFront, int(chunks));
+  draw(surfaces, BlendedSet::Blend, weighted, exact);
   glDisable(GL_BLEND);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (!orderIndependent) return;

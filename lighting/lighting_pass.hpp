@@ -59,6 +59,13 @@ constexpr uint32_t kMaxLayersPerPixel = 32;
 // - Weighted blended (McGuire & Bavoil 2013): RGBA32F accumulation (the sums of w a C and of w a; float, as lit HDR
 //   colour times weights up to 3,000 overflows fp16) and R16F revealage (the product of 1 - a).
 // - Exact: the lists, LayerListHeader, then a head per pixel and kLayerNodesPerPixel nodes per pixel.
+// The transmissive surfaces (BlendedSurfaces drawing BlendedSet::Transmissive into the radiance target) and the
+// texture, of the radiance target's format and size with a full mip chain, that the opaque frame behind them is
+// copied to before they are drawn.
+struct TransmissionTargets {
+  const BlendedSurfaces* surfaces = nullptr;
+  const Texture* background = nullptr;
+};
 struct OitTargets {
   const Texture* accumulation = nullptr;
   const Texture* revealage = nullptr;
@@ -91,6 +98,8 @@ class LightingPass {
         ambientAlbedo_(programs.library()),
         sheenAlbedo_(programs.library()),
         ambientSampler_("lighting.ambientAlbedo.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR),
+        backgroundSampler_("lighting.transmissionBackground.sampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE,
+                           GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
         lightWindow_(lightWindowLights()) {}
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
@@ -107,9 +116,12 @@ class LightingPass {
   // (shaders/lighting/oit_composite.comp); or with its lists, each fragment kept in its pixel's list and the lists
   // composited in depth order (shaders/lighting/layer_resolve.comp). Over kLightsPerDispatch lights (or a
   // brute-force window), each object is drawn once per chunk of lights, the later chunks adding to the first.
-  void renderBlended(const BlendedSurfaces& surfaces, const LightBuffer& lights, const LightingOptions& options,
-                     const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,
-                     const OitTargets& oit);
+  // Before them, with `transmission`'s surfaces, the opaque frame is copied to its background with a mip chain,
+  // and the transmissive surfaces drawn back to front over `radiance`, seeing the background through them
+  // (KHR_materials_transmission and _volume) and writing depth, whatever `oit` says.
+  void renderBlended(const BlendedSurfaces& surfaces, const TransmissionTargets& transmission,
+                     const LightBuffer& lights, const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
+                     const Texture& radiance, const LightClusters* clusters, const OitTargets& oit);
 
   // Whether a frame of `lights` lights takes several dispatches, and so a running-sum image.
   bool needsLightChunks(uint32_t lights, bool clustered) const { return lights > lightsPerDispatch(clustered); }
@@ -130,6 +142,7 @@ class LightingPass {
   AmbientAlbedoTables ambientAlbedo_;  // PBR's response to uniform ambient light, per variant
   SheenAlbedoTable sheenAlbedo_;       // KHR_materials_sheen's albedo, made for the first scene with a sheen
   Sampler ambientSampler_;
+  Sampler backgroundSampler_;  // trilinear over the transmission background's mip chain
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;
   uint32_t lightWindow_;  // lights in the uniform-buffer window of the brute-force path

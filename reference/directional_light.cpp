@@ -10,7 +10,8 @@ dvec3 reflectedRadiance(const DirectionalLight& light, const dvec3& N, const dve
                         const BrdfForms& forms) {
   const dvec3 L = towardsLight(light);
   const double NoL = glm::dot(N, L);
-  if (NoL <= 0.0) return dvec3(0.0);
+  if (NoL < 0.0) return transmissionLobe(N, V, L, m, forms) * dvec3(light.color) * (double(light.illuminance) * -NoL);
+  if (NoL == 0.0) return dvec3(0.0);
   return evaluateBrdf(N, V, L, m, forms).sum() * dvec3(light.color) * (double(light.illuminance) * NoL);
 }
 

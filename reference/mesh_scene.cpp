@@ -87,6 +87,23 @@ std::optional<Hit> MeshScene::closestHit(const Ray& ray, double tMin, double tMa
   return best;
 }
 
+std::optional<Hit> MeshScene::exitHit(const Ray& ray, double tMin, double tMax, size_t object) const {
+  std::optional<Hit> best;
+  bvh_.traverse(ray, tMin, tMax, [&](uint32_t i, double tFar) {
+    const Triangle& triangle = triangles_[i];
+    if (triangle.object != object) return tFar;
+    const std::optional<Crossing> c = cross(triangle, ray, tMin, tFar, true);
+    if (!c || c->front) return tFar;
+    const Object& o = objects_[triangle.object];
+    const uint32_t* index = &(*o.indices)[triangle.firstIndex];
+    const dvec3 n = glm::normalize((1.0 - c->u - c->v) * o.normals[index[0]] + c->u * o.normals[index[1]] +
+                                   c->v * o.normals[index[2]]);
+    best = Hit{c->t, ray.origin + c->t * ray.direction, n, triangle.object};
+    return c->t;
+  });
+  return best;
+}
+
 bool MeshScene::occluded(const Ray& ray, double tMin, double tMax) const {
   return bvh_.any(ray, tMin, tMax, [&](uint32_t i) {
     const Triangle& triangle = triangles_[i];

@@ -23,6 +23,7 @@ class MeshScene final : public RayCaster {
   explicit MeshScene(const Scene& scene);
   std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const override;
   bool occluded(const Ray& ray, double tMin, double tMax) const override;
+  std::optional<Hit> exitHit(const Ray& ray, double tMin, double tMax, size_t object) const override;
   double extent() const override { return extent_; }
 
  private:

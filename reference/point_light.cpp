@@ -25,8 +25,12 @@ LightIncidence incidence(const PointLight& light, const dvec3& P, const dvec3& N
 dvec3 reflectedRadiance(const PointLight& light, const dvec3& P, const dvec3& N, const dvec3& V,
                         const ReferenceMaterial& m, const BrdfForms& forms) {
   const LightIncidence in = incidence(light, P, N);
-  if (in.NoL <= 0.0 || in.attenuation <= 0.0) return dvec3(0.0);
+  if (in.attenuation <= 0.0) return dvec3(0.0);
   const double intensity = light.luminousPower / (4.0 * kPi);
+  if (in.NoL < 0.0) {
+    return transmissionLobe(N, V, in.L, m, forms) * dvec3(light.color) * (intensity * in.attenuation * -in.NoL);
+  }
+  if (in.NoL == 0.0) return dvec3(0.0);
   return evaluateBrdf(N, V, in.L, m, forms).sum() * dvec3(light.color) * (intensity * in.attenuation * in.NoL);
 }
 

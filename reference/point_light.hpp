@@ -16,7 +16,8 @@ struct LightIncidence {
 LightIncidence incidence(const PointLight& light, const dvec3& P, const dvec3& N);
 
 // Radiance towards V that the reference PBR model reflects from one point light, in the renderer's photometric
-// units: f(l, v) I att n.l with intensity I = P / (4 pi) from the luminous power; 0 where n.l <= 0.
+// units: f(l, v) I att n.l with intensity I = P / (4 pi) from the luminous power; from behind the surface
+// (n.l < 0), what a transmissive material lets through, f_T I att |n.l| (transmissionLobe; 0 for the others).
 dvec3 reflectedRadiance(const PointLight& light, const dvec3& P, const dvec3& N, const dvec3& V,
                         const ReferenceMaterial& m, const BrdfForms& forms);
 

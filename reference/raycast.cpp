@@ -97,7 +97,8 @@ Ray objectRay(const glm::dmat4& toObject, const Ray& ray) {
 }  // namespace
 
 bool stopsShadowRays(const Material& material) {
-  return material.alphaMode != AlphaMode::Blend || material.alpha >= kBlendShadowCutoff;
+  return (material.alphaMode != AlphaMode::Blend || material.alpha >= kBlendShadowCutoff) &&
+         !passesShadowRays(material);
 }
 
 AnalyticScene::AnalyticScene(const Scene& scene) {
@@ -133,6 +134,23 @@ std::optional<Hit> AnalyticScene::closestHit(const Ray& ray, double tMin, double
     best = Hit{*t, ray.origin + *t * ray.direction, glm::normalize(s.normalToWorld * n), i};
   }
   return best;
+}
+
+std::optional<Hit> AnalyticScene::exitHit(const Ray& ray, double tMin, double tMax, size_t object) const {
+  const Shape& s = shapes_.at(object);
+  if (s.kind == pbr::Shape::Plane) return std::nullopt;
+  const auto [o, d] = objectRay(s.toObject, ray);
+  const std::optional<Span> span = s.kind == pbr::Shape::Sphere ? sphereSpan(o, d) : boxSpan(o, d);
+  if (!span || span->leave < tMin || span->leave > tMax) return std::nullopt;
+  const dvec3 p = o + span->leave * d;
+  dvec3 n = p;  // a sphere's outward normal, or for the box the axis of the face it leaves through
+  if (s.kind == pbr::Shape::Box) {
+    int axis = 0;
+    for (int i = 1; i < 3; ++i) axis = std::abs(p[i]) > std::abs(p[axis]) ? i : axis;
+    n = dvec3(0.0);
+    n[axis] = p[axis] > 0.0 ? 1.0 : -1.0;
+  }
+  return Hit{span->leave, ray.origin + span->leave * ray.direction, glm::normalize(s.normalToWorld * n), object};
 }
 
 bool AnalyticScene::occluded(const Ray& ray, double tMin, double tMax) const {

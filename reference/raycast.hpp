@@ -32,13 +32,19 @@ class RayCaster {
   // Whether the ray meets any surface that stops shadow rays (stopsShadowRays below) within [tMin, tMax],
   // front or back face: the GPU draws its shadow casters without back-face culling. Stops at the first found.
   virtual bool occluded(const Ray& ray, double tMin, double tMax) const = 0;
+  // Where a ray inside object `object`'s volume leaves it: the nearest of its back faces along the ray within
+  // [tMin, tMax], the hit's normal the outward one (KHR_materials_volume's boundary). None for an open mesh the ray
+  // leaves through a hole, or a plane, which has no inside.
+  virtual std::optional<Hit> exitHit(const Ray& ray, double tMin, double tMax, size_t object) const = 0;
   // The diagonal of a box around all the geometry, 0 for none: the scene's scale.
   virtual double extent() const = 0;
 };
 
 // Whether a surface of this material stops shadow rays: every one but a BLEND surface whose alpha factor is below
 // kBlendShadowCutoff (0.5, core/scene/scene.hpp), where the GPU's shadow maps cut BLEND casters out (textures are not
-// read here, so the factor decides for the whole surface; MASK surfaces are solid for the same reason).
+// read here, so the factor decides for the whole surface; MASK surfaces are solid for the same reason), and a
+// transmissive one that lets more than kTransmissionShadowCutoff through (passesShadowRays), which the shadow maps
+// leave out.
 bool stopsShadowRays(const Material& material);
 
 // The analytic shapes of a scene, each with its transform inverted once, intersected exactly in double.
@@ -49,6 +55,7 @@ class AnalyticScene final : public RayCaster {
   explicit AnalyticScene(const Scene& scene);
   std::optional<Hit> closestHit(const Ray& ray, double tMin, double tMax) const override;
   bool occluded(const Ray& ray, double tMin, double tMax) const override;
+  std::optional<Hit> exitHit(const Ray& ray, double tMin, double tMax, size_t object) const override;
   double extent() const override { return extent_; }
 
  private:

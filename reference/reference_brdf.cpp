@@ -92,6 +92,65 @@ double fresnelSchlickSG(double c, double f0) {
   return f0 + (1.0 - f0) * std::exp2((-5.55473 * c - 6.98316) * c);
 }
 
+namespace {
+
+// The dielectric and metal parts' Fresnel reflectance apart, at incidence cosine c: KHR_materials_specular weights
+// the diffuse lobe by the dielectric Fresnel's largest channel, and F90 is the dielectric's `specular` where a
+// metal's is 1. Schlick's forms scale from F0 to F90 (F0 + (F90 - F0) s(c) = F90 (F0 / F90 + (1 - F0 / F90) s(c)));
+// the exact form takes each channel's index of refraction from F0 / F90 and scales by F90 the same way.
+void fresnelParts(double c, const ReferenceMaterial& m, const BrdfForms& forms, dvec3& dielectricPart,
+                  dvec3& metalPart) {
+  const dvec3 dielectric = dielectricF0(m);
+  const auto schlick = [&](double f0, double f90) {
+    switch (forms.fresnel) {
+      case Fresnel::SchlickSG: return f90 > 0.0 ? f90 * fresnelSchlickSG(c, f0 / f90) : 0.0;
+      case Fresnel::Schlick:
+      case Fresnel::Exact: break;
+    }
+    return f90 > 0.0 ? f90 * fresnelSchlick(c, f0 / f90) : 0.0;
+  };
+  const auto exact = [&](double f0, double f90) {
+    return f90 > 0.0 ? f90 * fresnelDielectric(c, iorFromF0(f0 / f90)) : 0.0;
+  };
+  for (int i = 0; i < 3; ++i) {
+    dielectricPart[i] = forms.fresnel == Fresnel::Exact ? exact(dielectric[i], m.specular)
+                                                        : schlick(dielectric[i], m.specular);
+    // Metals take Schlick from their base colour, or its spherical-Gaussian fit with the SG variant.
+    metalPart[i] = forms.fresnel == Fresnel::SchlickSG ? fresnelSchlickSG(c, m.baseColor[i])
+                                                       : fresnelSchlick(c, m.baseColor[i]);
+  }
+}
+
+// The largest channel of the dielectric's Fresnel reflectance: glTF's fresnel_mix weights the base by 1 - max_value(F)
+// (grey for the core material, where it changes nothing).
+double largestDielectricFresnel(double c, const ReferenceMaterial& m, const BrdfForms& forms) {
+  dvec3 d(0.0), metal(0.0);
+  fresnelParts(c, m, forms, d, metal);
+  return std::max({d.x, d.y, d.z});
+}
+
+double visibilityForm(double NoV, double NoL, double a, const BrdfForms& forms) {
+  switch (forms.visibility) {
+    case Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, a);
+    case Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, a);
+    case Visibility::HeightCorrelated: break;
+  }
+  return smithVisibilityExact(NoV, NoL, a);
+}
+
+// What the layers over the base leave of it at n.v: KHR_materials_sheen's albedo scaling, 1 - max(sheenColor)
+// E(n.v), and KHR_materials_clearcoat's 1 - clearcoat Fc(n.v).
+double baseLayerWeight(double NoV, const ReferenceMaterial& m) {
+  double weight = 1.0;
+  if (m.sheenColor != dvec3(0.0)) {
+    weight *= 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) * sheenAlbedo(NoV, m.sheenRoughness);
+  }
+  if (m.clearcoat > 0.0) weight *= 1.0 - m.clearcoat * fresnelSchlick(NoV, 0.04);
+  return weight;
+}
+
+}  // namespace
+
 BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
                        const BrdfForms& forms) {
   if (forms.ndf != Ndf::Ggx) throw std::logic_error("the reference has GGX alone (BrdfForms refuses another NDF)");
@@ -101,52 +160,18 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
   const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
   const double alpha = alphaFromRoughness(m.roughness);
-  // The dielectric and metal parts apart: KHR_materials_specular weights the diffuse lobe by the dielectric
-  // Fresnel's largest channel, and F90 is the dielectric's `specular` where a metal's is 1. Schlick's forms scale
-  // from F0 to F90 (F0 + (F90 - F0) s(c) = F90 (F0 / F90 + (1 - F0 / F90) s(c))); the exact form takes each
-  // channel's index of refraction from F0 / F90 and scales by F90 the same way.
-  const dvec3 dielectric = dielectricF0(m);
-  auto fresnelParts = [&](double c, dvec3& dielectricPart, dvec3& metalPart) {
-    const auto schlick = [&](double f0, double f90) {
-      switch (forms.fresnel) {
-        case Fresnel::SchlickSG: return f90 > 0.0 ? f90 * fresnelSchlickSG(c, f0 / f90) : 0.0;
-        case Fresnel::Schlick:
-        case Fresnel::Exact: break;
-      }
-      return f90 > 0.0 ? f90 * fresnelSchlick(c, f0 / f90) : 0.0;
-    };
-    const auto exact = [&](double f0, double f90) {
-      return f90 > 0.0 ? f90 * fresnelDielectric(c, iorFromF0(f0 / f90)) : 0.0;
-    };
-    for (int i = 0; i < 3; ++i) {
-      dielectricPart[i] = forms.fresnel == Fresnel::Exact ? exact(dielectric[i], m.specular)
-                                                          : schlick(dielectric[i], m.specular);
-      // Metals take Schlick from their base colour, or its spherical-Gaussian fit with the SG variant.
-      metalPart[i] = forms.fresnel == Fresnel::SchlickSG ? fresnelSchlickSG(c, m.baseColor[i])
-                                                         : fresnelSchlick(c, m.baseColor[i]);
-    }
-  };
   auto fresnel = [&](double c) {
     dvec3 d(0.0), metal(0.0);
-    fresnelParts(c, d, metal);
+    fresnelParts(c, m, forms, d, metal);
     return (1.0 - m.metalness) * d + m.metalness * metal;
   };
-  // The share of light the specular lobe can take at most, as the diffuse lobe's weight sees it: glTF's fresnel_mix
-  // weights the base by 1 - max_value(F) of the dielectric (grey for the core material, where it changes nothing).
   auto diffuseFresnel = [&](double c) {
     dvec3 d(0.0), metal(0.0);
-    fresnelParts(c, d, metal);
+    fresnelParts(c, m, forms, d, metal);
     const double largest = std::max({d.x, d.y, d.z});
     return (1.0 - m.metalness) * dvec3(largest) + m.metalness * metal;
   };
-  auto visibility = [&](double a) {
-    switch (forms.visibility) {
-      case Visibility::Hammon: return smithVisibilityHammon(NoV, NoL, a);
-      case Visibility::Separable: return smithVisibilitySeparable(NoV, NoL, a);
-      case Visibility::HeightCorrelated: break;
-    }
-    return smithVisibilityExact(NoV, NoL, a);
-  };
+  auto visibility = [&](double a) { return visibilityForm(NoV, NoL, a, forms); };
   auto diffuseWeight = [&] {
     switch (forms.diffuse) {
       case Diffuse::LambertOneMinusFVh: return dvec3(1.0) - diffuseFresnel(VoH);
@@ -157,7 +182,8 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
     return dvec3(1.0) - diffuseFresnel(NoV);
   };
   dvec3 specular = ggxD(NoH, alpha) * visibility(alpha) * fresnel(VoH);
-  dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * m.baseColor / kPi;
+  // KHR_materials_transmission: the base is mix(diffuse, specular_btdf, transmission); the BTDF is transmissionLobe.
+  dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * (1.0 - m.transmission) * m.baseColor / kPi;
   dvec3 sheen(0.0);
   if (m.sheenColor != dvec3(0.0)) {
     const double scaling = 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) *
@@ -173,6 +199,44 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   const double weight = m.clearcoat * fresnelSchlick(NoV, 0.04);
   return {(1.0 - weight) * diffuse, (1.0 - weight) * specular, weight * ggxD(NoH, coatAlpha) * visibility(coatAlpha),
           (1.0 - weight) * sheen};
+}
+
+dvec3 transmissionLobe(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
+                       const BrdfForms& forms) {
+  const double NoL = -glm::dot(N, L);
+  if (m.transmission <= 0.0 || NoL <= 0.0) return dvec3(0.0);
+  const double NoV = std::max(glm::dot(N, V), 1e-4);
+  const dvec3 mirrored = L + 2.0 * NoL * N;
+  const dvec3 H = glm::normalize(V + mirrored);
+  const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
+  const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+  const double alpha = alphaFromRoughness(m.roughness);
+  const double f = ggxD(NoH, alpha) * visibilityForm(NoV, NoL, alpha, forms);
+  return (1.0 - largestDielectricFresnel(VoH, m, forms)) * m.transmission * (1.0 - m.metalness) * f *
+         baseLayerWeight(NoV, m) * m.baseColor;
+}
+
+dvec3 smoothTransmittance(const dvec3& N, const dvec3& V, const ReferenceMaterial& m, const BrdfForms& forms) {
+  if (m.transmission <= 0.0) return dvec3(0.0);
+  const double NoV = std::max(glm::dot(N, V), 1e-4);
+  return (1.0 - largestDielectricFresnel(NoV, m, forms)) * m.transmission * (1.0 - m.metalness) *
+         baseLayerWeight(NoV, m) * m.baseColor;
+}
+
+dvec3 sampledTransmittance(const dvec3& N, const dvec3& V, const dvec3& H, const ReferenceMaterial& m,
+                           const BrdfForms& forms, dvec3& L) {
+  const dvec3 reflected = 2.0 * glm::dot(V, H) * H - V;
+  const double NoR = glm::dot(N, reflected);
+  L = reflected - 2.0 * NoR * N;
+  if (m.transmission <= 0.0 || NoR <= 0.0) return dvec3(0.0);
+  const double NoV = std::max(glm::dot(N, V), 1e-4);
+  const double NoH = std::clamp(glm::dot(N, H), 1e-8, 1.0);
+  const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+  const double alpha = alphaFromRoughness(m.roughness);
+  // f |n.l| / pdf with pdf = D(h) n.h / (4 v.h): D cancels.
+  const double weight = visibilityForm(NoV, NoR, alpha, forms) * 4.0 * NoR * VoH / NoH;
+  return (1.0 - largestDielectricFresnel(VoH, m, forms)) * m.transmission * (1.0 - m.metalness) * weight *
+         baseLayerWeight(NoV, m) * m.baseColor;
 }
 
 namespace {

@@ -1,4 +1,6 @@
 #pragma once
+#include <limits>
+
 #include <glm/vec3.hpp>
 
 #include "core/scene/shading_model.hpp"
@@ -29,6 +31,12 @@ struct ReferenceMaterial {
   // KHR_materials_sheen: the fibre lobe's colour (0: none) and roughness.
   dvec3 sheenColor{0.0};
   double sheenRoughness = 0.0;
+  // KHR_materials_transmission's factor and KHR_materials_volume's thickness (0: thin-walled), attenuation colour
+  // and distance (infinite: no absorption).
+  double transmission = 0.0;
+  double thickness = 0.0;
+  dvec3 attenuationColor{1.0};
+  double attenuationDistance = std::numeric_limits<double>::infinity();
 };
 
 // The sheen roughness the renderer clamps to, as the reference does: the "Charlie" distribution's exponent 1 / r
@@ -95,6 +103,22 @@ struct BrdfLobes {
 // f_d and f_s for unit vectors N, V, L (n.l > 0; n.v is clamped to 1e-4 like the renderer does).
 BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
                        const BrdfForms& forms = {});
+
+// KHR_materials_transmission's thin-walled specular_btdf f_T for light from L behind the surface (n.l < 0), which
+// the light's E |n.l| multiplies. The specification's microfacet BTDF: GGX D and the form's visibility
+// about the transmission half vector H_T = normalize(V + L'), L' = L mirrored through the surface's plane, weighted
+// as fresnel_mix weights the base, (1 - max_value(F(v.h))) transmission (1 - metalness) baseColor, and by what a
+// sheen or coat leaves of the base. 0 for light in front.
+dvec3 transmissionLobe(const dvec3& N, const dvec3& V, const dvec3& L, const ReferenceMaterial& m,
+                       const BrdfForms& forms = {});
+// The share of the radiance behind a smooth transmissive surface that reaches V through it (the BTDF's delta
+// lobe along the view): (1 - max_value(F(n.v))) transmission (1 - metalness) baseColor, times the layers' weight.
+dvec3 smoothTransmittance(const dvec3& N, const dvec3& V, const ReferenceMaterial& m, const BrdfForms& forms = {});
+// One importance sample of a rough thin-walled surface's BTDF: for the microfacet normal H drawn with density
+// D(h) n.h, the direction L behind the surface it sends V's light from (V reflected about H, mirrored through the
+// surface's plane) and the estimator's weight f_T |n.l| / pdf(L); 0 where the reflection falls below the surface.
+dvec3 sampledTransmittance(const dvec3& N, const dvec3& V, const dvec3& H, const ReferenceMaterial& m,
+                           const BrdfForms& forms, dvec3& L);
 
 // Windowed inverse-square falloff, capped at 1.
 double attenuation(double d, double radius);

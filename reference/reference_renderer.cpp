@@ -40,7 +40,8 @@ void parallelFor(int count, int threads, Work work) {
 ReferenceMaterial toReference(const Material& m) {
   return {dvec3(m.baseColor), double(m.roughness), double(m.metalness), double(m.ior), double(m.specular),
           dvec3(m.specularColor), double(m.clearcoat), double(m.clearcoatRoughness), dvec3(m.sheenColor),
-          double(m.sheenRoughness)};
+          double(m.sheenRoughness), isTransmissive(m) ? double(m.transmission) : 0.0, double(m.thickness),
+          dvec3(m.attenuationColor), double(m.attenuationDistance)};
 }
 
 // One albedo table per object, empty where no ambient light makes it needed.
@@ -96,17 +97,19 @@ class ShadowRays {
   int reaching_ = 0;
 };
 
-// Adds to `color` the radiance the lights reflect from a hit towards V, each light that casts shadows only where it
-// reaches the hit. Lights are added in the order of the frames measured before shadows, so that those stay identical.
+// Adds to `color` the radiance the lights reflect from a hit towards V, or from behind a transmissive surface let
+// through it, each light that casts shadows only where it reaches the hit. Lights are added in the order of the
+// frames measured before shadows, so that those stay identical.
 void addDirectLight(const Scene& scene, const Hit& hit, const dvec3& V, const ReferenceMaterial& m,
                     const BrdfForms& forms, ShadowRays& shadows, dvec3& color) {
+  const auto adds = [&](double NoL) { return NoL > 0.0 || (NoL < 0.0 && m.transmission > 0.0); };
   for (const DirectionalLight& light : scene.directionalLights) {
-    if (glm::dot(hit.normal, towardsLight(light)) <= 0.0 || !shadows.reaches(light)) continue;
+    if (!adds(glm::dot(hit.normal, towardsLight(light))) || !shadows.reaches(light)) continue;
     color += reflectedRadiance(light, hit.normal, V, m, forms);
   }
   for (const PointLight& light : scene.lights) {
     const LightIncidence in = incidence(light, hit.position, hit.normal);
-    if (in.NoL <= 0.0 || in.attenuation <= 0.0 || !shadows.reaches(light)) continue;
+    if (!adds(in.NoL) || in.attenuation <= 0.0 || !shadows.reaches(light)) continue;
     color += reflectedRadiance(light, hit.position, hit.normal, V, m, forms);
   }
 }
@@ -133,6 +136,144 @@ dvec3 shade(const Scene& scene, const Hit& hit, const Ray& ray, const AlbedoTabl
 // beside it along a shared edge), far short of any gap a frame resolves. Surfaces nearer each other than that along
 // the ray count as one, the nearer.
 constexpr double kLayerGap = 1e-6;
+
+// A rough thin-walled transmissive surface's BTDF is integrated over this many microfacet normals, drawn in
+// proportion to D(h) n.h on an 8 x 8 grid of strata (their centres: a deterministic frame).
+constexpr int kTransmissionStrata = 8;
+// A ray refracted into a volume may reflect totally inside it this many times before it is dropped.
+constexpr int kMaxInternalReflections = 8;
+
+// The first surface a camera ray meets, for ReferenceFrame's objectIds and visibility.
+struct FirstSurface {
+  int object = -1;
+  float visibility = -1.0f;
+};
+
+// Follows rays through a scene: front to back through BLEND layers and transmissive surfaces, shading each surface
+// met (shade) and compositing what shows behind it.
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const RayCaster& geometry, const std::vector<AlbedoTable>& albedo,
+             const ReferenceOptions& options, std::atomic<int>& truncatedRays)
+      : scene_(scene), geometry_(geometry), albedo_(albedo), options_(options),
+        layerGap_(kLayerGap * geometry.extent()), truncatedRays_(truncatedRays) {}
+
+  // The radiance arriving back along `ray` (a unit direction) from what it meets within [tMin, tMax], `layers`
+  // layers having been crossed before. Front to back; T, the share of what lies behind the surfaces crossed that
+  // still shows, per channel. A BLEND surface composites "over" with its alpha factor a (Porter & Duff 1984, A over
+  // B with premultiplied colour a L: C += T a L, and B shows through by 1 - a). A transmissive one
+  // (KHR_materials_transmission) adds its reflection and, for its covered share a, what shows through it: straight
+  // on, times smoothTransmittance, when smooth and thin-walled; with the microfacet BTDF sampled when rough and
+  // `sampleRough` (the first rough surface of a camera ray; the later ones are taken as smooth); refracted through
+  // its volume (throughVolume) with KHR_materials_volume. The first surface that is neither ends the walk: alone on
+  // the ray, it gives C = 0 + 1 L = L exactly. `first`, where given, receives the first surface met.
+  dvec3 trace(const Ray& ray, double tMin, double tMax, int layers, bool sampleRough, FirstSurface* first) const {
+    dvec3 color(0.0), T(1.0);
+    for (int layer = layers; T != dvec3(0.0); ++layer) {
+      const std::optional<Hit> hit = geometry_.closestHit(ray, tMin, tMax);
+      if (!hit) break;
+      const Material& material = scene_.objects[hit->object].material;
+      const bool blend = material.alphaMode == AlphaMode::Blend;
+      const ReferenceMaterial m = toReference(material);
+      const bool transmits = m.transmission > 0.0;
+      if ((blend || transmits) && layer == kMaxBlendLayers) {
+        ++truncatedRays_;
+        break;
+      }
+      ShadowRays shadows(geometry_, options_.shadows, *hit);
+      const dvec3 L = shade(scene_, *hit, ray, albedo_[hit->object], options_.forms, shadows);
+      if (first && layer == layers) *first = {int(hit->object), shadows.visibility()};
+      const double a = blend ? double(material.alpha) : 1.0;
+      color += T * a * L;
+      if (!blend && !transmits) break;
+      tMin = hit->t + layerGap_;
+      if (!transmits) {
+        T *= 1.0 - a;
+        continue;
+      }
+      const dvec3 V = -ray.direction;
+      const bool rough = sampleRough && m.roughness > kMinRoughness;
+      if (m.thickness <= 0.0 && !rough) {
+        // Thin and smooth: the light behind comes straight on, as through the uncovered share.
+        T *= (1.0 - a) + a * smoothTransmittance(hit->normal, V, m, options_.forms);
+        continue;
+      }
+      const dvec3 through = m.thickness > 0.0 ? throughVolume(*hit, ray, m, layer, sampleRough)
+                                              : throughRoughSurface(*hit, V, m, layer);
+      color += T * a * through;
+      T *= 1.0 - a;
+    }
+    return color;
+  }
+
+ private:
+  // What reaches V through a rough thin-walled surface: the BTDF integrated over its microfacet normals
+  // (sampledTransmittance), each direction traced on from the surface.
+  dvec3 throughRoughSurface(const Hit& hit, const dvec3& V, const ReferenceMaterial& m, int layer) const {
+    const dvec3 N = hit.normal;
+    const dvec3 t = glm::normalize(std::abs(N.x) > 0.5 ? glm::cross(N, dvec3(0, 1, 0)) : glm::cross(N, dvec3(1, 0, 0)));
+    const dvec3 b = glm::cross(N, t);
+    const double alpha = alphaFromRoughness(m.roughness);
+    dvec3 sum(0.0);
+    for (int i = 0; i < kTransmissionStrata; ++i) {
+      for (int j = 0; j < kTransmissionStrata; ++j) {
+        // GGX's normals in proportion to D(h) n.h (Walter et al. 2007, eq. 35 and 36).
+        const double u1 = (i + 0.5) / kTransmissionStrata, u2 = (j + 0.5) / kTransmissionStrata;
+        const double cosTheta = std::sqrt((1.0 - u1) / (1.0 + (alpha * alpha - 1.0) * u1));
+        const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+        const double phi = 2.0 * kPi * u2;
+        const dvec3 H = sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * N;
+        dvec3 L;
+        const dvec3 weight = sampledTransmittance(N, V, H, m, options_.forms, L);
+        if (weight == dvec3(0.0)) continue;
+        sum += weight * trace({hit.position, L}, layerGap_, std::numeric_limits<double>::infinity(), layer + 1, false,
+                              nullptr);
+      }
+    }
+    return sum / double(kTransmissionStrata * kTransmissionStrata);
+  }
+
+  // What reaches V through a smooth transmissive volume entered at `hit` (KHR_materials_volume: the mesh is its
+  // boundary, the thickness factor only says that there is one): the view ray refracted in by the index of
+  // refraction (Snell), weighted by smoothTransmittance on the way in, attenuated by Beer-Lambert's law inside,
+  // exp(-sigma d) with sigma = -ln(attenuationColor) / attenuationDistance, and refracted out where it leaves the
+  // volume, weighted by 1 - F of the exact dielectric Fresnel there, or reflected inside where it cannot leave
+  // (at most kMaxInternalReflections times). A volume the ray finds no way out of (an open mesh) is left along the
+  // refracted ray. A rough volume is taken as smooth.
+  dvec3 throughVolume(const Hit& hit, const Ray& ray, const ReferenceMaterial& m, int layer, bool sampleRough) const {
+    if (m.ior < 1.0) return dvec3(0.0);  // ior 0 (F0 1) reflects everything
+    const double inf = std::numeric_limits<double>::infinity();
+    dvec3 weight = smoothTransmittance(hit.normal, -ray.direction, m, options_.forms);
+    dvec3 sigma(0.0);
+    if (std::isfinite(m.attenuationDistance)) {
+      for (int i = 0; i < 3; ++i) sigma[i] = -std::log(std::max(m.attenuationColor[i], 1e-300)) / m.attenuationDistance;
+    }
+    // An interpolated normal leaning away from the ray (at a silhouette) refracts nothing in.
+    const dvec3 in = glm::refract(ray.direction, hit.normal, 1.0 / m.ior);
+    if (in == dvec3(0.0)) return dvec3(0.0);
+    Ray inside{hit.position, glm::normalize(in)};
+    for (int bounce = 0; bounce <= kMaxInternalReflections; ++bounce) {
+      const std::optional<Hit> exit = geometry_.exitHit(inside, layerGap_, inf, hit.object);
+      if (!exit) return weight * trace(inside, layerGap_, inf, layer + 1, sampleRough, nullptr);
+      weight *= glm::exp(-sigma * exit->t);
+      const dvec3 out = glm::refract(inside.direction, -exit->normal, m.ior);
+      if (out == dvec3(0.0)) {
+        inside = {exit->position, glm::reflect(inside.direction, -exit->normal)};
+        continue;
+      }
+      weight *= 1.0 - fresnelDielectric(glm::dot(inside.direction, exit->normal), 1.0 / m.ior);
+      return weight * trace({exit->position, glm::normalize(out)}, layerGap_, inf, layer + 1, sampleRough, nullptr);
+    }
+    return dvec3(0.0);
+  }
+
+  const Scene& scene_;
+  const RayCaster& geometry_;
+  const std::vector<AlbedoTable>& albedo_;
+  const ReferenceOptions& options_;
+  double layerGap_;
+  std::atomic<int>& truncatedRays_;
+};
 
 }  // namespace
 
@@ -170,8 +311,8 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
   const size_t pixels = size_t(width) * height;
   ReferenceFrame frame{{width, height, std::vector<float>(pixels * 4, 0.0f)}, std::vector<int>(pixels, -1),
                        std::vector<float>(options.shadows != ShadowMode::None ? pixels : 0, -1.0f), 0};
-  const double layerGap = kLayerGap * geometry->extent();
   std::atomic<int> truncatedRays{0};
+  const PathTracer tracer(scene, *geometry, albedo, options, truncatedRays);
 
   auto shadeRow = [&](int y) {
     for (int x = 0; x < width; ++x) {
@@ -180,35 +321,11 @@ ReferenceFrame renderReference(const Scene& scene, int width, int height, const 
       // Clip to the camera's near and far planes along the view axis, as the rasterizer does.
       const double axial = glm::dot(ray.direction, forward);
       const double tMax = scene.camera.farPlane / axial;
-      double tMin = scene.camera.nearPlane / axial;
-      // Front to back through the BLEND layers; T is the share of what lies behind them that still shows. The first
-      // surface that is not a layer ends the walk: alone on the ray, it gives C = 0 + 1 L = L exactly.
-      dvec3 color(0.0);
-      double T = 1.0;
-      for (int layer = 0; T > 0.0; ++layer) {
-        const std::optional<Hit> hit = geometry->closestHit(ray, tMin, tMax);
-        if (!hit) break;
-        const Material& material = scene.objects[hit->object].material;
-        const bool blend = material.alphaMode == AlphaMode::Blend;
-        if (blend && layer == kMaxBlendLayers) {
-          ++truncatedRays;
-          break;
-        }
-        ShadowRays shadows(*geometry, options.shadows, *hit);
-        const dvec3 L = shade(scene, *hit, ray, albedo[hit->object], options.forms, shadows);
-        if (layer == 0) {
-          frame.objectIds[pixel] = int(hit->object);
-          if (!frame.visibility.empty()) frame.visibility[pixel] = shadows.visibility();
-        }
-        if (!blend) {
-          color += T * L;
-          break;
-        }
-        // Porter & Duff 1984, A over B with premultiplied colour a L: C += T a L, and B shows through by 1 - a.
-        color += T * double(material.alpha) * L;
-        T *= 1.0 - double(material.alpha);
-        tMin = hit->t + layerGap;
-      }
+      const double tMin = scene.camera.nearPlane / axial;
+      FirstSurface first;
+      const dvec3 color = tracer.trace(ray, tMin, tMax, 0, true, &first);
+      frame.objectIds[pixel] = first.object;
+      if (!frame.visibility.empty()) frame.visibility[pixel] = first.visibility;
       float* p = &frame.radiance.pixels[pixel * 4];
       p[0] = float(color.x);
       p[1] = float(color.y);

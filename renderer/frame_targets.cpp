@@ -1,5 +1,7 @@
 #include "renderer/frame_targets.hpp"
 
+#include <algorithm>
+
 #include "core/gl/hdr_format.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "renderer/driver_limits.hpp"
@@ -36,6 +38,16 @@ const Texture& FrameTargets::partialRadiance() {
     partialRadiance_ = std::make_unique<Texture>("frame.partialRadiance", GL_RGBA32F, width, height);
   }
   return *partialRadiance_;
+}
+
+const Texture& FrameTargets::transmissionBackground() {
+  if (!transmissionBackground_) {
+    int levels = 1;
+    while ((std::max(width, height) >> levels) > 0) ++levels;
+    transmissionBackground_ =
+        std::make_unique<Texture>("frame.transmissionBackground", hdr.format(), width, height, levels);
+  }
+  return *transmissionBackground_;
 }
 
 const Texture& FrameTargets::beforeAntiAliasing() {

@@ -29,6 +29,9 @@ struct FrameTargets {
   // RGBA32F running sums of the lighting pass when it needs several dispatches (over kLightsPerDispatch lights):
   // made on first use, as only such frames need its 16 bytes per pixel.
   const Texture& partialRadiance();
+  // The opaque frame that transmissive surfaces see through (TransmissionTargets): the radiance target's format
+  // with a full mip chain, 4/3 of its bytes, made on first use.
+  const Texture& transmissionBackground();
   // The tone-mapped RGBA8 frame before anti-aliasing, which writes `ldr`: made on first use.
   const Texture& beforeAntiAliasing();
   // RG32UI light-pixel pairs of each pixel (evaluated, contributing) for the efficiency debug view: made on first use.
@@ -55,7 +58,7 @@ struct FrameTargets {
   const LayerCount& layerCount();
 
  private:
-  std::unique_ptr<Texture> partialRadiance_, beforeAntiAliasing_, pairCounts_, shadowLight_;
+  std::unique_ptr<Texture> partialRadiance_, transmissionBackground_, beforeAntiAliasing_, pairCounts_, shadowLight_;
   std::unique_ptr<OrderIndependent> orderIndependent_;
   std::unique_ptr<LayerCount> layerCount_;
   std::unique_ptr<Buffer> layerLists_;

@@ -105,10 +105,10 @@ bool Renderer::shadowDrawsPerLight(ShadowDraws draws) {
 }
 
 BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {
-  return {[this, framebuffer](const BlendedProgram& program, BlendOrder order, int repeats) {
+  return {[this, framebuffer](const BlendedProgram& program, BlendOrder order, int repeats, BlendedSet set) {
     frame_.bind(kFrameUbo.index);
     glViewport(0, 0, width(), height());
-    scene_.geometry.drawBlended(framebuffer, camera_, program, order, repeats);
+    scene_.geometry.drawBlended(framebuffer, camera_, program, order, repeats, set);
   }};
 }
 
@@ -234,8 +234,14 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         } else if (options.transparency == Transparency::Exact) {
                           oit.layerLists = &t.layerLists();
                         }
-                        scene_.lighting.renderBlended(blendedSurfaces(target), scene_.lights, lighting, frame_,
-                                                      t.hdr, clustered ? &t.clusters : nullptr, oit);
+                        const BlendedSurfaces transmissive = blendedSurfaces(t.blendTarget.id());
+                        TransmissionTargets transmission;
+                        if (scene_.geometry.hasTransmissive()) {
+                          transmission.surfaces = &transmissive;
+                          transmission.background = &t.transmissionBackground();
+                        }
+                        scene_.lighting.renderBlended(blendedSurfaces(target), transmission, scene_.lights, lighting,
+                                                      frame_, t.hdr, clustered ? &t.clusters : nullptr, oit);
                       }});
   }
   // A debug channel other than the cluster views replaces the display image: nothing to anti-alias. The cluster

@@ -1151,6 +1151,46 @@ TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warne
   CHECK_FALSE(pbr::materialExtensions(scene, true).clearcoat);
 }
 
+TEST_CASE("gltf materials: KHR_materials_transmission and _volume's factors, their textures warned of") {
+  const TempDir dir;
+  GltfBuilder builder;
+  const int glass = builder.addMaterial(
+      {{"extensions",
+        {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", 0}}}}},
+         {"KHR_materials_volume",
+          {{"thicknessFactor", 0.5},
+           {"attenuationDistance", 2.0},
+           {"attenuationColor", {1.0, 0.5, 0.25}},
+           {"thicknessTexture", {{"index", 0}}}}}}}});
+  builder.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+  QuadSpec quad;
+  quad.material = glass;
+  builder.addRootNode({{"mesh", pbr::test::addQuad(builder, quad)}});
+  pbr::Scene scene;
+  const pbr::test::CapturedStderr warnings;
+  pbr::appendGltf(scene, builder.writeGltf(dir.path(), "glass"));
+  REQUIRE(scene.objects.size() == 1);
+  const pbr::Material& m = scene.objects[0].material;
+  CHECK(m.transmission == 0.75f);
+  CHECK(m.thickness == 0.5f);
+  CHECK(m.attenuationDistance == 2.0f);
+  CHECK(m.attenuationColor == glm::vec3(1.0f, 0.5f, 0.25f));
+  CHECK(warnings.text().find("KHR_materials_transmission.transmissionTexture: not drawn") != std::string::npos);
+  CHECK(warnings.text().find("KHR_materials_volume.thicknessTexture: not drawn") != std::string::npos);
+  CHECK(warnings.text().find("extensionsUsed") == std::string::npos);
+  // Forward-shaded: its extensions are the transparency pass's, not the G-buffer's.
+  CHECK(pbr::isForwardShaded(m));
+  // A negative thickness names the field.
+  GltfBuilder bad;
+  const int negative = bad.addMaterial({{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", -1.0}}}}}});
+  QuadSpec badQuad;
+  badQuad.material = negative;
+  bad.addRootNode({{"mesh", pbr::test::addQuad(bad, badQuad)}});
+  pbr::Scene refused;
+  CHECK_THROWS_WITH_AS(pbr::appendGltf(refused, bad.writeGltf(dir.path(), "bad")),
+                       doctest::Contains("KHR_materials_volume.thicknessFactor: must be >= 0"), pbr::SceneError);
+}
+
 TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of") {
   const TempDir dir;
   GltfBuilder builder;

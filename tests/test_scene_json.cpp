@@ -404,7 +404,9 @@ TEST_CASE("scene file: the glTF extensions' material fields reach the material, 
     "objects": [{"shape": "sphere", "material": {"ior": 1.33, "specular": 0.25, "specular_color": [2, 1, 0.5],
                                                  "clearcoat": 0.5, "clearcoat_roughness": 0.125,
                                                  "sheen_color": [1, 0.5, 0], "sheen_roughness": 0.25}},
-                {"shape": "sphere", "material": {"ior": 0, "specular_color": 0.5}},
+                {"shape": "sphere", "material": {"ior": 0, "specular_color": 0.5, "transmission": 0.75,
+                                                 "thickness": 0.5, "attenuation_color": [1, 0.5, 0.25],
+                                                 "attenuation_distance": 2}},
                 {"shape": "sphere"}]
   })"));
   REQUIRE(s.objects.size() == 3);
@@ -417,9 +419,18 @@ TEST_CASE("scene file: the glTF extensions' material fields reach the material, 
   CHECK(s.objects[0].material.sheenRoughness == 0.25f);
   CHECK(s.objects[1].material.ior == 0.0f);
   checkVec(s.objects[1].material.specularColor, glm::vec3(0.5f));
+  CHECK(s.objects[1].material.transmission == 0.75f);
+  CHECK(s.objects[1].material.thickness == 0.5f);
+  checkVec(s.objects[1].material.attenuationColor, {1, 0.5f, 0.25f});
+  CHECK(s.objects[1].material.attenuationDistance == 2.0f);
   CHECK(s.objects[2].material.ior == 1.5f);
   CHECK(s.objects[2].material.specular == 1.0f);
+  CHECK(s.objects[2].material.transmission == 0.0f);
+  CHECK(std::isinf(s.objects[2].material.attenuationDistance));  // no absorption
   const std::string bad = dir.write("bad.json", R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
                                                       "objects": [{"shape": "sphere", "material": {"ior": 0.5}}]})");
   CHECK_THROWS_WITH_AS(pbr::loadSceneFile(bad), doctest::Contains("ior"), pbr::SceneError);
+  const std::string none = dir.write("none.json", R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+    "objects": [{"shape": "sphere", "material": {"attenuation_distance": 0}}]})");
+  CHECK_THROWS_WITH_AS(pbr::loadSceneFile(none), doctest::Contains("attenuation_distance"), pbr::SceneError);
 }

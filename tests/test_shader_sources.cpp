@@ -111,6 +111,7 @@ TEST_CASE("shader library: every binding point a shader names comes from a bindi
   // The names GLSL reads in layout(binding = NAME): each must be a define of the table its module compiles with.
   std::set<std::string> declared;
   for (const ShaderDefines& table : {pbr::lightingBindingDefines(), pbr::gbufferBindingDefines(),
+                                     pbr::forwardBindingDefines({}),
                                      pbr::bindingDefines({pbr::kPostUbo, pbr::kExposureSsbo}),
                                      pbr::bindingDefines({pbr::kBrdfGridSsbo})}) {
     for (const pbr::ShaderDefine& d : table) declared.insert(d.name);

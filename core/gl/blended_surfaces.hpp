@@ -21,14 +21,20 @@ using BlendedProgram = std::function<const Program&(int repeat, const std::strin
 // faces before its front faces.
 enum class BlendOrder { Any, BackToFront };
 
-// The scene's surfaces with alphaMode BLEND, which the G-buffer leaves out. The contract between the pass that owns
-// their geometry and materials (gbuffer/) and the passes that shade and cull them (lighting/), neither of which
-// knows the other.
+// Which of the forward-shaded surfaces a draw takes: every one (the clusters' occupancy), the transmissive ones
+// (KHR_materials_transmission: drawn first, over the opaque frame they see through, writing depth as the opaque
+// surfaces they stand for do), or the BLEND ones that do not transmit (composited after them).
+enum class BlendedSet { All, Transmissive, Blend };
+
+// The scene's forward-shaded surfaces (alphaMode BLEND, or transmissive), which the G-buffer leaves out. The
+// contract between the pass that owns their geometry and materials (gbuffer/) and the passes that shade and cull
+// them (lighting/), neither of which knows the other.
 struct BlendedSurfaces {
-  // Draws every BLEND object `repeats` times in a row, in `order`, each through the program `program` returns for
-  // the repeat, into the frame's radiance target (colour attachment 0) over the G-buffer's depth, which tests the
-  // draws (reversed Z: only what lies in front of the opaque surfaces is drawn) and which they leave as it is.
-  std::function<void(const BlendedProgram& program, BlendOrder order, int repeats)> draw;
+  // Draws every object of `set` `repeats` times in a row, in `order`, each through the program `program` returns
+  // for the repeat, into the frame's radiance target (colour attachment 0) over the G-buffer's depth, which tests
+  // the draws (reversed Z: only what lies in front of the opaque surfaces is drawn) and which only the
+  // transmissive set writes.
+  std::function<void(const BlendedProgram& program, BlendOrder order, int repeats, BlendedSet set)> draw;
 };
 
 }  // namespace pbr

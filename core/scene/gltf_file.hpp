@@ -39,7 +39,8 @@ inline const char* const kSupportedGltfExtensions[] = {"KHR_lights_punctual", "K
                                                        "EXT_meshopt_compression", "KHR_materials_ior",
                                                        "KHR_materials_specular",
                                                        "KHR_materials_pbrSpecularGlossiness",
-                                                       "KHR_materials_clearcoat", "KHR_materials_sheen"};
+                                                       "KHR_materials_clearcoat", "KHR_materials_sheen",
+                                                       "KHR_materials_transmission", "KHR_materials_volume"};
 
 // Reads a .gltf or .glb file (a .glb by its extension or the GLB magic) with its buffers, every file through
 // readInputFile. Before tinygltf sees the file, the GLB container is checked (readGlbChunks), the JSON's nesting

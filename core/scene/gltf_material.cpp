@@ -135,6 +135,7 @@ Material GltfMaterials::convert(int index, const std::string& field) {
   if (!readSpecularGlossiness(g, name, m)) readSpecular(g, name, m);
   readClearcoat(g, name, m);
   readSheen(g, name, m);
+  readTransmission(g, name, m);
 
   if (g.alphaMode == "MASK") {
     m.alphaMode = AlphaMode::Mask;
@@ -220,6 +221,43 @@ void GltfMaterials::readSheen(const tinygltf::Material& g, const std::string& na
   for (const char* map : {"sheenColorTexture", "sheenRoughnessTexture"}) {
     if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
   }
+}
+
+void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::string& name, Material& m) {
+  const auto number = [&](const tinygltf::Value& v, const std::string& where) {
+    if (!v.IsNumber()) file_.fail(where + ": must be a number");
+    return finite(file_, v.GetNumberAsDouble(), where);
+  };
+  if (const auto found = g.extensions.find("KHR_materials_transmission"); found != g.extensions.end()) {
+    const tinygltf::Value& v = found->second;
+    const std::string where = name + ".extensions.KHR_materials_transmission";
+    if (v.Has("transmissionFactor")) {
+      m.transmission = unitFactor(file_, number(v.Get("transmissionFactor"), where + ".transmissionFactor"),
+                                  where + ".transmissionFactor");
+    }
+    if (v.Has("transmissionTexture")) file_.warn(where + ".transmissionTexture: not drawn, the factor alone is");
+  }
+  const auto found = g.extensions.find("KHR_materials_volume");
+  if (found == g.extensions.end()) return;
+  const tinygltf::Value& v = found->second;
+  const std::string where = name + ".extensions.KHR_materials_volume";
+  if (v.Has("thicknessFactor")) {
+    m.thickness = number(v.Get("thicknessFactor"), where + ".thicknessFactor");
+    if (!(m.thickness >= 0.0f)) file_.fail(where + ".thicknessFactor: must be >= 0");
+  }
+  if (v.Has("attenuationDistance")) {
+    m.attenuationDistance = number(v.Get("attenuationDistance"), where + ".attenuationDistance");
+    if (!(m.attenuationDistance > 0.0f)) file_.fail(where + ".attenuationDistance: must be > 0");
+  }
+  if (v.Has("attenuationColor")) {
+    const tinygltf::Value& c = v.Get("attenuationColor");
+    if (!c.IsArray() || c.ArrayLen() != 3) file_.fail(where + ".attenuationColor: must have 3 components");
+    for (int i = 0; i < 3; ++i) {
+      m.attenuationColor[i] = unitFactor(file_, number(c.Get(i), where + ".attenuationColor"),
+                                         where + ".attenuationColor");
+    }
+  }
+  if (v.Has("thicknessTexture")) file_.warn(where + ".thicknessTexture: not drawn, the factor alone is");
 }
 
 // KHR_materials_specular's specification converts a specular-glossiness material so: a dielectric of ior 0 (F0 1)

@@ -26,6 +26,8 @@ class GltfMaterials {
   void readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_sheen's factors into `m`; its textures are warned of, not drawn.
   void readSheen(const tinygltf::Material& g, const std::string& name, Material& m);
+  // KHR_materials_transmission and KHR_materials_volume's factors into `m`; their textures are warned of, not drawn.
+  void readTransmission(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_pbrSpecularGlossiness into `m` by KHR_materials_specular's conversion; false without it.
   bool readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m);
   // Index into Scene::textures of glTF texture `index`.

@@ -204,6 +204,12 @@ glm::vec4 dielectricSpecular(const Material& m) {
   return glm::vec4(glm::vec3(color), m.specular);
 }
 
+bool isTransmissive(const Material& m) { return m.transmission > 0.0f && !m.unlit; }
+
+bool isForwardShaded(const Material& m) { return m.alphaMode == AlphaMode::Blend || isTransmissive(m); }
+
+bool passesShadowRays(const Material& m) { return isTransmissive(m) && m.transmission > kTransmissionShadowCutoff; }
+
 bool hasDielectricSpecular(const Material& m) { return dielectricSpecular(m) != glm::vec4(glm::vec3(0.04f), 1.0f); }
 
 bool hasUnlitSurface(const Scene& scene) {

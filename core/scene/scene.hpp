@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -85,7 +86,29 @@ struct Material {
   // KHR_materials_sheen: the colour (linear, 0: no sheen) and roughness of a "Charlie" fibre lobe over the base.
   glm::vec3 sheenColor{0.0f};
   float sheenRoughness = 0.0f;
+  // KHR_materials_transmission: the share of the light entering the dielectric (not reflected) that passes through
+  // it rather than being diffused, tinted by the base colour (0: none).
+  float transmission = 0.0f;
+  // KHR_materials_volume: the thickness of the volume under the surface, in the object's space (0: thin-walled, no
+  // refraction), and the colour white light keeps after attenuationDistance inside it (Beer-Lambert; infinite: no
+  // absorption).
+  float thickness = 0.0f;
+  glm::vec3 attenuationColor{1.0f};
+  float attenuationDistance = std::numeric_limits<float>::infinity();
 };
+
+// A transmissive material lets light through its surface (KHR_materials_transmission), so it is drawn over the
+// opaque frame behind it rather than into the G-buffer; an unlit one reflects and transmits nothing.
+bool isTransmissive(const Material& material);
+// A transmissive material casts a shadow where at most this share of the light entering it passes through, and
+// none above: a clear pane casts nothing, a frosted lamp shade with a little transmission its full shadow.
+constexpr float kTransmissionShadowCutoff = 0.5f;
+// Whether a transmissive material lets shadow rays through, and is left out of the shadow maps: more than
+// kTransmissionShadowCutoff of its light passes.
+bool passesShadowRays(const Material& material);
+// Whether a surface of this material is shaded by the forward pass over the opaque frame rather than through the
+// G-buffer: alphaMode BLEND or transmissive.
+bool isForwardShaded(const Material& material);
 
 // The dielectric part's F0 colour (rgb) and F90 (a) of KHR_materials_specular: min(((ior - 1) / (ior + 1))^2
 // specularColor, 1) specular and specular; the core material's 0.04 and 1 (exactly: ior 1.5 gives 0.25 / 6.25).

@@ -159,6 +159,12 @@ Material readMaterial(const JsonField& f, const fs::path& folder, Scene& scene) 
   m.clearcoatRoughness = f["clearcoat_roughness"].number(R::closed(0.0, 1.0), m.clearcoatRoughness);
   m.sheenColor = f["sheen_color"].vec3OrNumber(R::closed(0.0, 1.0), m.sheenColor);
   m.sheenRoughness = f["sheen_roughness"].number(R::closed(0.0, 1.0), m.sheenRoughness);
+  // KHR_materials_transmission and KHR_materials_volume's factors.
+  m.transmission = f["transmission"].number(R::closed(0.0, 1.0), m.transmission);
+  m.thickness = f["thickness"].number(R::atLeast(0.0), m.thickness);
+  m.attenuationColor = f["attenuation_color"].vec3OrNumber(R::closed(0.0, 1.0), m.attenuationColor);
+  const JsonField distance = f["attenuation_distance"];
+  if (distance.present()) m.attenuationDistance = distance.number(R::above(0.0), m.attenuationDistance);
   m.alpha = f["alpha"].number(R::closed(0.0, 1.0), m.alpha);
   const JsonField mode = f["alpha_mode"];
   if (mode.present()) {

@@ -56,6 +56,9 @@ struct MaterialSample {
   vec3 clearcoatNormal;
   vec3 sheenColor;  // KHR_materials_sheen: the fibre lobe's colour (black: none) and roughness
   float sheenRoughness;
+#if MATERIAL_TRANSMISSION
+  float transmission;  // KHR_materials_transmission's factor
+#endif
 };
 
 MaterialSample sampleMaterial() {
@@ -106,5 +109,8 @@ MaterialSample sampleMaterial() {
   m.clearcoatRoughness = object.layers.y;
   m.sheenColor = object.sheenColor.rgb;
   m.sheenRoughness = object.layers.z;
+#if MATERIAL_TRANSMISSION
+  m.transmission = object.transmission.x;
+#endif
   return m;
 }

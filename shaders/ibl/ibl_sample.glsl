@@ -74,6 +74,11 @@ vec3 shadeIbl(vec3 N, vec3 V, vec3 baseColor, float roughness, float metalness, 
   vec3 weightAlbedo = specularAlbedo;
 #endif
   vec3 specular = specularAlbedo * iblSpecular(reflect(-V, N), roughness);
+#if MATERIAL_TRANSMISSION
+  // KHR_materials_transmission: the base's share gTransmission shows what lies behind instead of diffusing.
+  vec3 diffuse = (1.0 - weightAlbedo) * (1.0 - metalness) * baseColor * mix(iblDiffuse(N), gBehind, gTransmission);
+#else
   vec3 diffuse = (1.0 - weightAlbedo) * (1.0 - metalness) * baseColor * iblDiffuse(N);
+#endif
   return (diffuse + specular) * occlusion;
 }

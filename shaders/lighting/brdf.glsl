@@ -165,6 +165,14 @@ vec3 fresnel(vec3 baseColor, float metalness, float c) {
 #endif
 }
 
+#if MATERIAL_TRANSMISSION
+// KHR_materials_transmission (a transmissive material's forward draw, lighting/forward.frag): the base that
+// fresnel_mix weights is mix(diffuse, specular_btdf baseColor, transmission). The surface being shaded sets its
+// transmission factor and the radiance seen through it (transmission.glsl) before its BRDF is evaluated.
+float gTransmission = 0.0;
+vec3 gBehind = vec3(0.0);
+#endif
+
 // The diffuse lobe f_d, weighted by (1 - metalness). The default weight (1 - F(n.v)) takes Fresnel at the view
 // angle, the share of light the specular lobe can take at most. Weighting by (1 - F(v.h)) instead, as glTF's
 // sample viewer does, gives a white dielectric a directional albedo up to 1.84 at grazing views (roughness 0.05,
@@ -183,7 +191,11 @@ vec3 diffuseLobe(vec3 baseColor, float metalness, float roughness, float NoV, fl
 #elif defined(DIFFUSE_LAMBERT_1_F)
   vec3 weight = 1.0 - fresnel(baseColor, metalness, NoV);
 #endif
+#if MATERIAL_TRANSMISSION
+  return weight * (1.0 - metalness) * (1.0 - gTransmission) * baseColor / PI;
+#else
   return weight * (1.0 - metalness) * baseColor / PI;
+#endif
 }
 
 // The terms of brdfCookTorrance that depend on the surface and the view only: a pixel computes them once for

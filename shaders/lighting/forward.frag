@@ -1,15 +1,20 @@
 #version 450 core
-// Forward lighting of a BLEND material's fragment, drawn after the deferred pass over the radiance it left: the
-// material (../gbuffer/material.glsl) lit by the same lights, lists, models, environment and shadows as the deferred
-// pass (shade_lights.glsl), written premultiplied by its alpha for the blend unit's src + (1 - src.a) dst, the
-// "over" of Porter & Duff 1984, "Compositing Digital Images". With LIGHT_CHUNKS a draw adds one chunk of the lights:
-// the first also brings the environment, the directional lights and the emission, and the alpha that composites;
-// the others write alpha 0 and so add to it.
+// Forward lighting of a BLEND or transmissive material's fragment, drawn after the deferred pass over the radiance
+// it left: the material (../gbuffer/material.glsl) lit by the same lights, lists, models, environment and shadows
+// as the deferred pass (shade_lights.glsl), written premultiplied by its alpha for the blend unit's
+// src + (1 - src.a) dst, the "over" of Porter & Duff 1984, "Compositing Digital Images". With LIGHT_CHUNKS a draw
+// adds one chunk of the lights: the first also brings the environment, the directional lights and the emission,
+// and the alpha that composites; the others write alpha 0 and so add to it. With MATERIAL_TRANSMISSION the surface
+// also shows the opaque frame behind it (transmission.glsl) through the model's transmission terms (brdf.glsl,
+// model_pbr.glsl, ibl_sample.glsl).
 // With OIT_WEIGHTED the fragment is instead summed into weighted blended order-independent transparency's targets
 // (McGuire & Bavoil 2013), resolved by oit_composite.comp; with OIT_EXACT it is kept in its pixel's list
 // (layer_lists.glsl), resolved by layer_resolve.comp.
 #include "../gbuffer/material.glsl"
 #include "shade_lights.glsl"
+#if MATERIAL_TRANSMISSION
+#include "transmission.glsl"
+#endif
 
 #if OIT_EXACT
 #include "layer_lists.glsl"
@@ -47,6 +52,11 @@ void main() {
   s.sheenColor = m.sheenColor;
   s.sheenRoughness = m.sheenRoughness;
 #endif
+#if MATERIAL_TRANSMISSION && !SHADING_MODEL_BLINN_PHONG
+  // Before beginShading, which weighs the diffuse lobe by it.
+  gTransmission = m.transmission;
+  gBehind = transmittedRadiance(s);
+#endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
 #if LIGHT_CHUNKS
@@ -66,6 +76,10 @@ void main() {
   gColor = first ? m.emitted + shadeEnvironment(s) : vec3(0.0);
 #endif
   visitLights(s, begin, end);
+#if MATERIAL_TRANSMISSION && SHADING_MODEL_BLINN_PHONG
+  // Blinn-Phong has no Fresnel to share light by: the transmitted share replaces that of the lit colour.
+  gColor = gColor * (1.0 - m.transmission) + (first ? m.transmission * m.base.rgb * transmittedRadiance(s) : vec3(0.0));
+#endif
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));

@@ -71,9 +71,19 @@ vec3 shadeAmbient(Surface s) {
 #else
   vec3 weight = vec3(t.w);  // a dielectric's: exact for metalness 0 and 1, interpolated between
 #endif
+#if MATERIAL_TRANSMISSION
+  // KHR_materials_transmission: the base's share gTransmission shows what lies behind instead of diffusing.
+  vec3 base = weight * (1.0 - s.metalness) * s.baseColor;
+  vec3 albedo = base * (1.0 - gTransmission) + specular;
+  vec3 through = base * gTransmission * gBehind;
+#else
   vec3 albedo = weight * (1.0 - s.metalness) * s.baseColor + specular;
+#endif
 #if MATERIAL_SHEEN
   if (s.sheenColor != vec3(0.0)) albedo = gSheenScale * albedo + s.sheenColor * gSheenE;
+#endif
+#if MATERIAL_SHEEN && MATERIAL_TRANSMISSION
+  if (s.sheenColor != vec3(0.0)) through *= gSheenScale;
 #endif
 #if MATERIAL_CLEARCOAT
   // The coat's albedo is its lobe's with F 1: the metals' table at F0 1, A + B.
@@ -81,7 +91,14 @@ vec3 shadeAmbient(Surface s) {
   vec4 coat = textureLod(ambientAlbedo, coatUv, 0.0);
   albedo = (1.0 - gCoatWeight) * albedo + gCoatWeight * (coat.x + coat.y);
 #endif
+#if MATERIAL_CLEARCOAT && MATERIAL_TRANSMISSION
+  through *= 1.0 - gCoatWeight;
+#endif
+#if MATERIAL_TRANSMISSION
+  return (lighting.ambient.rgb * albedo + through) * s.occlusion;
+#else
   return lighting.ambient.rgb * albedo * s.occlusion;
+#endif
 }
 #endif
 
@@ -105,6 +122,28 @@ void beginShading(Surface s) {
 #endif
 }
 
+#if MATERIAL_TRANSMISSION
+// KHR_materials_transmission's specular_btdf for light from behind the surface, times |n.l|: the specification's
+// thin-walled microfacet BTDF, GGX D and visibility about the transmission half vector H_T = normalize(V + L'),
+// L' the light's direction mirrored through the surface's plane, weighted as the base of fresnel_mix is
+// (1 - F of the dielectric, its largest channel) and tinted by the base colour.
+vec3 transmissionLobe(Surface s, vec3 L) {
+  float NoL = -dot(s.normal, L);
+  vec3 mirrored = L + 2.0 * NoL * s.normal;
+  vec3 H = normalize(s.V + mirrored);
+  vec3 NxH = cross(s.normal, H);
+  float NoH = clamp(dot(s.normal, H), 0.0, 1.0);
+  float VoH = clamp(dot(s.V, H), 0.0, 1.0);
+#if MATERIAL_SPECULAR
+  vec3 F = diffuseFresnel(s.baseColor, 0.0, gDielectric, VoH);
+#else
+  vec3 F = fresnel(s.baseColor, 0.0, VoH);
+#endif
+  float lobe = distribution(NoH, dot(NxH, NxH), gBrdf.a) * visibility(s.NoV, NoL, gBrdf.a) * NoL;
+  return (1.0 - F) * (gTransmission * (1.0 - s.metalness) * lobe) * s.baseColor;
+}
+#endif
+
 // Light of colour `color` arriving from unit direction L with `strength` lux on a surface facing it: f E n.l.
 vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
 #if MATERIAL_CLEARCOAT || MATERIAL_SHEEN
@@ -113,6 +152,9 @@ vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
   if (strength <= 0.0) return vec3(0.0);
   float NoL = dot(s.normal, L);
   vec3 radiance = NoL > 0.0 ? brdfCookTorrance(gBrdf, L) * color * (strength * NoL) : vec3(0.0);
+#if MATERIAL_TRANSMISSION
+  if (NoL < 0.0 && gTransmission > 0.0) radiance = transmissionLobe(s, L) * color * strength;
+#endif
 #if MATERIAL_SHEEN
   if (s.sheenColor != vec3(0.0)) {
     radiance = gSheenScale * radiance + s.sheenColor * sheenLobe(s, L) * color * strength;
@@ -124,6 +166,9 @@ vec3 shadeIncident(Surface s, vec3 L, vec3 color, float strength) {
   return radiance;
 #else
   float NoL = dot(s.normal, L);
+#if MATERIAL_TRANSMISSION
+  if (NoL < 0.0 && strength > 0.0 && gTransmission > 0.0) return transmissionLobe(s, L) * color * strength;
+#endif
   if (NoL <= 0.0 || strength <= 0.0) return vec3(0.0);
   vec3 f = brdfCookTorrance(gBrdf, L);
   return f * color * (strength * NoL);
