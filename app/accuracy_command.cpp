@@ -236,7 +236,7 @@ class AccuracyTable {
             "shadow_ms_median,lighting_ms_median,passes_ms_median,passes_ms_p10,passes_ms_p90,misclassified_share,"
             "shadow_pixels,transparency,transparency_ms_median,transparency_ms_p10,transparency_ms_p90,"
             "frame_ms_median,frame_ms_p10,frame_ms_p90\n";
-    std::printf("%-16s %-18s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
+    std::printf("%-16s %-22s %9s %17s %10s %8s %6s %8s\n", "variant", "scene", "ns/pair", "p10-p90", "rel RMSE",
                 "mean lv", "max", ">2 lv");
   }
 
@@ -248,7 +248,7 @@ class AccuracyTable {
     const std::string perPair = c ? fixedDecimals(c->nsPerPair.median, 3) : "-";
     const std::string spread =
         c ? fixedDecimals(c->nsPerPair.p10, 3) + "-" + fixedDecimals(c->nsPerPair.p90, 3) : std::string("-");
-    std::printf("%-16s %-18s %9s %17s %10.4g %8.3f %6.0f %8.4f\n", name.c_str(), scene.c_str(), perPair.c_str(),
+    std::printf("%-16s %-22s %9s %17s %10.4g %8.3f %6.0f %8.4f\n", name.c_str(), scene.c_str(), perPair.c_str(),
                 spread.c_str(), m.relativeRmse, m.meanLevels, m.maxLevels, m.shareOver2);
   }
 

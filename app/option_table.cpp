@@ -200,7 +200,8 @@ std::vector<OptionSpec> makeTable() {
        "transparency row) once, in turn", std::to_string(pairCost.rounds), ""},
       {"--scenes", "LIST",
        "comma-separated scenes of analytic shapes; fresnel-floor:DEG sets the view angle; textures are removed",
-       "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80", ""},
+       "sphere-grid,fresnel-floor:0,fresnel-floor:40,fresnel-floor:65,fresnel-floor:80,material-specular,"
+       "material-clearcoat,material-sheen,material-transmission", ""},
       {"--variants", "LIST", "comma-separated variants or all: " + ladderNames(), "all", ""},
       {"--no-cost", "",
        "skip the timings: cost per pair and the shadow and transparency rows' pass times (the chart needs them)"},

@@ -111,7 +111,8 @@ TEST_CASE("built-in scenes: each name is a file of scenes/ that loads as that sc
   CHECK_THROWS_WITH_AS(
       pbr::makeBuiltinScene("nope"),
       "unknown scene 'nope' (built-in scenes: default, sphere-grid, light-wall, fresnel-floor, stress, helmet, "
-      "helmet-grid, many-lights, shadow-trio, transparency)",
+      "helmet-grid, many-lights, shadow-trio, transparency, material-specular, material-clearcoat, material-sheen, "
+      "material-transmission, materials)",
       pbr::SceneError);
   CHECK_THROWS_WITH_AS(pbr::makeBuiltinScene("default", withLights(-1)), "default: light count must be >= 0",
                        pbr::SceneError);

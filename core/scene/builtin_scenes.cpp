@@ -117,7 +117,12 @@ const Builtin kBuiltins[] = {{"default", nullptr, nullptr},
                              {"helmet-grid", nullptr, nullptr},
                              {"many-lights", nullptr, nullptr},
                              {"shadow-trio", nullptr, nullptr},
-                             {"transparency", nullptr, nullptr}};
+                             {"transparency", nullptr, nullptr},
+                             {"material-specular", nullptr, nullptr},
+                             {"material-clearcoat", nullptr, nullptr},
+                             {"material-sheen", nullptr, nullptr},
+                             {"material-transmission", nullptr, nullptr},
+                             {"materials", nullptr, nullptr}};
 
 const Builtin* findBuiltin(const std::string& name) {
   const auto it =
