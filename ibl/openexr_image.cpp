@@ -85,6 +85,53 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
   }
 }
 
+// A tiled image's offset table with an empty entry (a file whose writing was interrupted) makes tinyexr rebuild
+// the table by walking the tile blocks without bounds (ReconstructTileOffsets), reading past the file: such a
+// table is refused here. Its entries are counted as tinyexr counts them: the tiles of every level of the
+// header's level mode (one level, mipmaps or ripmaps, their sides rounded down or up), one 64-bit offset each,
+// after the header. A table that runs past the file is left to tinyexr, which says so.
+void checkTileOffsets(const std::string& bytes, const EXRHeader& header, int64_t width, int64_t height,
+                      const std::string& path) {
+  if (!header.tiled) return;
+  const bool up = header.tile_rounding_mode == TINYEXR_TILE_ROUND_UP;
+  const auto log2Rounded = [&](int64_t x) {
+    int y = 0;
+    bool remainder = false;
+    for (; x > 1; x >>= 1, ++y) remainder = remainder || (x & 1);
+    return y + (up && remainder ? 1 : 0);
+  };
+  const auto levelSize = [&](int64_t top, int level) {
+    const int64_t size = top >> level;
+    return std::max<int64_t>(size + (up && (size << level) < top ? 1 : 0), 1);
+  };
+  const auto tiles = [](int64_t side, int64_t tile) { return (side + tile - 1) / tile; };
+  int xLevels = 1, yLevels = 1;
+  if (header.tile_level_mode == TINYEXR_TILE_MIPMAP_LEVELS) {
+    xLevels = yLevels = log2Rounded(std::max(width, height)) + 1;
+  } else if (header.tile_level_mode == TINYEXR_TILE_RIPMAP_LEVELS) {
+    xLevels = log2Rounded(width) + 1;
+    yLevels = log2Rounded(height) + 1;
+  }
+  int64_t entries = 0;
+  for (int lx = 0; lx < xLevels; ++lx) {
+    for (int ly = 0; ly < yLevels; ++ly) {
+      // Mipmaps pair the levels (lx == ly); ripmaps take every pair; one level is level 0 alone.
+      if (header.tile_level_mode != TINYEXR_TILE_RIPMAP_LEVELS && lx != ly) continue;
+      entries += tiles(levelSize(width, lx), header.tile_size_x) * tiles(levelSize(height, ly), header.tile_size_y);
+    }
+  }
+  const size_t first = 8 + size_t(header.header_len);
+  if (first > bytes.size() || uint64_t(entries) > (bytes.size() - first) / 8) return;
+  for (int64_t i = 0; i < entries; ++i) {
+    uint64_t offset = 0;
+    for (int b = 7; b >= 0; --b) offset = (offset << 8) | uint8_t(bytes[first + size_t(i) * 8 + size_t(b)]);
+    if (int64_t(offset) <= 0) {
+      throw std::runtime_error(path + ": OpenEXR tile offset table entry " + std::to_string(i) + " of " +
+                               std::to_string(entries) + " is empty (a file whose writing was interrupted?)");
+    }
+  }
+}
+
 }  // namespace
 
 bool hasOpenExrMagic(const std::string& bytes) {
@@ -148,6 +195,7 @@ ImageRgbaF readOpenExr(const std::string& path) {
   if ((red < 0 || green < 0 || blue < 0) && grey < 0) {
     throw std::runtime_error(path + ": OpenEXR image without R, G and B channels (nor Y)");
   }
+  checkTileOffsets(bytes, header, width, height, path);
   if (LoadEXRImageFromMemory(&exr.image, &header, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
     // A failed load frees what it made itself, leaving pointers FreeEXRImage would free again.
     InitEXRImage(&exr.image);
