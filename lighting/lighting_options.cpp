@@ -38,6 +38,8 @@ ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrF
   defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});
   defines.push_back({"MATERIAL_CLEARCOAT", flag(o.clearcoatMaterials && !blinnPhong)});
   defines.push_back({"MATERIAL_SHEEN", flag(o.sheenMaterials && !blinnPhong)});
+  // Named only when on, so that the permutations of frames that shade the lobe keep their define lists.
+  if (o.transmissionOff) defines.push_back({"TRANSMISSION_OFF", "1"});
   if (o.shadows) {
     defines.push_back({shadowFilterDefine(o.shadowFilter), "1"});
     defines = concat(defines, shadowViewDefines());
@@ -46,6 +48,18 @@ ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrF
   if (!clustered) defines.push_back({"LIGHT_WINDOW", std::to_string(lightWindow)});
   defines.push_back({"MAX_DIRECTIONAL_LIGHTS", std::to_string(kMaxDirectionalLights)});
   return defines;
+}
+
+MaterialLobes usedLobes(const Scene& scene) {
+  MaterialLobes used{false, false, false, false};
+  for (const SceneObject& o : scene.objects) {
+    const Material& m = o.material;
+    used.specular = used.specular || hasDielectricSpecular(m);
+    used.clearcoat = used.clearcoat || m.clearcoat > 0.0f;
+    used.sheen = used.sheen || m.sheenColor != glm::vec3(0.0f);
+    used.transmission = used.transmission || isTransmissive(m);
+  }
+  return used;
 }
 
 }  // namespace pbr

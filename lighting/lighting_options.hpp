@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/scene/scene.hpp"
 #include "core/scene/shader_sources.hpp"
 #include "core/scene/shading_model.hpp"
 #include "core/scene/shadow_settings.hpp"
@@ -44,7 +45,21 @@ struct LightingOptions {
   bool clearcoatMaterials = false;
   // PBR only: the surfaces shaded may have a sheen (KHR_materials_sheen), likewise.
   bool sheenMaterials = false;
+  // Transmissive surfaces (KHR_materials_transmission) shaded as if without the extension (MaterialLobes).
+  bool transmissionOff = false;
 };
+
+// The material extensions' lobes a frame shades, each on unless switched off to compare a scene with and without
+// it (the viewer's overlay): off, the lobe is shaded as for a material without the extension (the lighting passes'
+// permutation leaves it out; the G-buffer keeps its channels).
+struct MaterialLobes {
+  bool specular = true;      // KHR_materials_ior / _specular: off, the core material's F0 0.04 and F90 1
+  bool clearcoat = true;     // KHR_materials_clearcoat
+  bool sheen = true;         // KHR_materials_sheen
+  bool transmission = true;  // KHR_materials_transmission / _volume: off, the surface diffuses all it takes in
+};
+// The lobes some material of `scene` uses (every field false where none does): what there is to switch off.
+MaterialLobes usedLobes(const Scene& scene);
 
 // Light-pixel pairs a frame's lighting pass counted (LightingOptions::stats).
 struct PairCounts {

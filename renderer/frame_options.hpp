@@ -37,6 +37,7 @@ struct FrameOptions {
   // since the last frame); infinite, the headless default, applies each frame's own metering.
   bool autoExposure = false;
   float adaptSeconds = std::numeric_limits<float>::infinity();
+  MaterialLobes lobes;  // the material extensions' lobes shaded (all, unless one is switched off to compare)
 };
 
 // Light statistics of the last frame. Cluster figures are zero with culling none; visible lights and pair

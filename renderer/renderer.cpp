@@ -196,9 +196,9 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                                                        options.shadows.filter,
                                                        shadowView ? &t.shadowLight() : nullptr,
                                                        scene_.geometry.hasUnlit(),
-                                                       t.gbuffer.layout.specular,
-                                                       t.gbuffer.layout.clearcoat,
-                                                       t.gbuffer.layout.sheen};
+                                                       t.gbuffer.layout.specular && options.lobes.specular,
+                                                       t.gbuffer.layout.clearcoat && options.lobes.clearcoat,
+                                                       t.gbuffer.layout.sheen && options.lobes.sheen};
                         const bool chunked = scene_.lighting.needsLightChunks(scene_.lights.count(), clustered);
                         const Texture* partial = chunked ? &t.partialRadiance() : nullptr;
                         markCulling(CullingChoice::LightingBegin);
@@ -221,9 +221,10 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         lighting.shadows = shadows ? &shadowMaps : nullptr;
                         lighting.shadowFilter = options.shadows.filter;
                         const GBufferLayout& extensions = scene_.geometry.blendedExtensions();
-                        lighting.specularMaterials = extensions.specular;
-                        lighting.clearcoatMaterials = extensions.clearcoat;
-                        lighting.sheenMaterials = extensions.sheen;
+                        lighting.specularMaterials = extensions.specular && options.lobes.specular;
+                        lighting.clearcoatMaterials = extensions.clearcoat && options.lobes.clearcoat;
+                        lighting.sheenMaterials = extensions.sheen && options.lobes.sheen;
+                        lighting.transmissionOff = !options.lobes.transmission;
                         OitTargets oit;
                         GLuint target = t.blendTarget.id();
                         if (options.transparency == Transparency::Oit) {

@@ -276,3 +276,39 @@ TEST_CASE("material sheen: a black sheen renders the base model bit for bit") {
     CHECK(differentRight > 100);
   }
 }
+
+TEST_CASE("material lobes: an extension's lobe switched off renders the scene without it, bit for bit") {
+  PBR_REQUIRE_GL();
+  // The viewer's switches (MaterialLobes): off, the lighting passes leave the lobe out, as for a scene whose
+  // materials lack the extension, though the G-buffer keeps its channel.
+  struct Case {
+    const char* name;
+    pbr::Scene scene;
+    void (*strip)(pbr::Material&);
+    void (*off)(pbr::MaterialLobes&);
+  };
+  const Case cases[] = {
+      {"specular", grid(0.02f),
+       [](pbr::Material& m) {
+         m.ior = 1.5f;
+         m.specular = 1.0f;
+         m.specularColor = glm::vec3(1.0f);
+       },
+       [](pbr::MaterialLobes& l) { l.specular = false; }},
+      {"clearcoat", coatGrid(0.02f), [](pbr::Material& m) { m.clearcoat = 0.0f; },
+       [](pbr::MaterialLobes& l) { l.clearcoat = false; }},
+      {"sheen", sheenGrid(0.02f), [](pbr::Material& m) { m.sheenColor = glm::vec3(0.0f); },
+       [](pbr::MaterialLobes& l) { l.sheen = false; }},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.name);
+    pbr::Scene without = c.scene;
+    for (pbr::SceneObject& o : without.objects) c.strip(o.material);
+    pbr::FrameOptions off;
+    c.off(off.lobes);
+    const pbr::test::RenderedFrame switched = pbr::test::renderScene(c.scene, kSize, off);
+    const pbr::test::RenderedFrame stripped = pbr::test::renderScene(without, kSize, {});
+    CHECK(switched.hdr.pixels == stripped.hdr.pixels);
+    CHECK(pbr::test::renderScene(c.scene, kSize, {}).hdr.pixels != stripped.hdr.pixels);  // the lobe does show
+  }
+}

@@ -119,6 +119,14 @@ TEST_CASE("material transmission: a pane shows the background behind it tinted a
     const glm::dvec3 want = background * 0.96 * glm::dvec3(tinted.baseColor);
     checkNear(centre(renderFloat(scene, pbr::parseShadingVariant("fresnel=schlick")).hdr), want, 1e-2);
   }
+  // The lobe switched off (the viewer's MaterialLobes): the pane diffuses what it takes in, and nothing lights it.
+  {
+    pbr::FrameOptions off;
+    off.lobes.transmission = false;
+    off.shadows.mode = pbr::ShadowMode::None;
+    const pbr::test::RenderedFrame frame = pbr::test::renderScene(paneScene(glass(1.0f, 1.0f), true), kSize, off);
+    checkNear(centre(frame.hdr) + 1.0, glm::dvec3(1.0), 1e-6);
+  }
   // Half transmission: the other half diffuses, which no light here reaches.
   {
     pbr::Material half = glass(1.0f, 0.0f);

@@ -303,3 +303,49 @@ TEST_CASE("reference: the sheen's albedo scaling keeps a white sheen over a whit
     }
   }
 }
+
+TEST_CASE("reference: a white transmissive surface reflects and transmits at most what it receives (white furnace)") {
+  using namespace pbr::reference;
+  // fresnel_mix over mix(diffuse, specular_btdf, transmission): the reflected albedo (the BRDF's, its diffuse lobe
+  // weighted by 1 - transmission) plus the transmitted share (the BTDF integrated over the microfacet normals, or
+  // the smooth surface's delta lobe) stays <= 1; smooth and fully transmissive it is all but masking's loss.
+  const dvec3 N(0.0, 0.0, 1.0);
+  for (const double transmission : {0.5, 1.0}) {
+    for (const double roughness : {0.0, 0.3, 0.7}) {
+      for (const double NoV : {0.1, 0.5, 0.9, 1.0}) {
+        CAPTURE(transmission);
+        CAPTURE(roughness);
+        CAPTURE(NoV);
+        ReferenceMaterial m;
+        m.baseColor = dvec3(1.0);
+        m.roughness = roughness;
+        m.transmission = transmission;
+        const dvec3 V(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+        const double reflected = directionalAlbedo(m, NoV, BrdfForms(), 64).x;
+        double transmitted = 0.0;
+        if (roughness <= kMinRoughness) {
+          transmitted = smoothTransmittance(N, V, m).x;
+        } else {
+          // GGX's normals in proportion to D(h) n.h over a 128 x 128 grid of strata.
+          const int n = 128;
+          const double alpha = alphaFromRoughness(roughness);
+          for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+              const double u1 = (i + 0.5) / n, phi = 2.0 * kPi * (j + 0.5) / n;
+              const double c = std::sqrt((1.0 - u1) / (1.0 + (alpha * alpha - 1.0) * u1));
+              const double s = std::sqrt(1.0 - c * c);
+              dvec3 L;
+              transmitted += sampledTransmittance(N, V, {s * std::cos(phi), s * std::sin(phi), c}, m, {}, L).x;
+            }
+          }
+          transmitted /= double(n * n);
+        }
+        CHECK(transmitted > 0.0);
+        CHECK(reflected + transmitted <= 1.0 + 2e-3);
+        if (roughness <= kMinRoughness && transmission == 1.0 && NoV >= 0.5) {
+          CHECK(reflected + transmitted >= 0.98);
+        }
+      }
+    }
+  }
+}

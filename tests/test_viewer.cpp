@@ -17,6 +17,7 @@
 #include "app/scene_source.hpp"
 #include "app/viewer/environment_folder.hpp"
 #include "core/scene/assets.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "core/scene/exposure.hpp"
 #include "core/scene/json_file.hpp"
 #include "core/scene/scene_json.hpp"
@@ -363,6 +364,30 @@ TEST_CASE("view: the overlay runs, graphs every pass and takes the model and cul
   for (size_t i = 0; i < last.size(); ++i) {
     for (size_t j = i + 1; j < last.size(); ++j) CHECK(last[i].first != last[j].first);
   }
+}
+
+TEST_CASE("view: the overlay offers the lobes of the extensions the scene uses, each switched off through the viewer") {
+  const auto viewer = openViewer(kSize, "", "materials");
+  if (!viewer) return;
+  // The strip uses ior, clearcoat, sheen and transmission; the default scene none of them.
+  const pbr::MaterialLobes& used = viewer->usedLobes();
+  CHECK(used.specular);
+  CHECK(used.clearcoat);
+  CHECK(used.sheen);
+  CHECK(used.transmission);
+  const pbr::MaterialLobes none = pbr::usedLobes(pbr::makeBuiltinScene("default"));
+  CHECK_FALSE((none.specular || none.clearcoat || none.sheen || none.transmission));
+  const ImageRgba8 all = show(*viewer);
+  for (const auto off : {&pbr::MaterialLobes::specular, &pbr::MaterialLobes::clearcoat, &pbr::MaterialLobes::sheen,
+                         &pbr::MaterialLobes::transmission}) {
+    pbr::MaterialLobes lobes;
+    lobes.*off = false;
+    viewer->setLobes(lobes);
+    CHECK_FALSE(viewer->lobes().*off);
+    CHECK(show(*viewer).pixels != all.pixels);  // the lobe's sphere changes
+    viewer->setLobes({});
+  }
+  CHECK(show(*viewer).pixels == all.pixels);
 }
 
 TEST_CASE("view: a scene saved from the viewer renders headless as the viewer shows it") {

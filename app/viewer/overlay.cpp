@@ -288,6 +288,26 @@ void Overlay::controls(Viewer& viewer) {
     }
   }
 
+  // The material extensions the scene uses, each lobe switchable to compare the scene with and without it.
+  const MaterialLobes& used = viewer.usedLobes();
+  if (f.model == ShadingModel::Pbr && (used.specular || used.clearcoat || used.sheen || used.transmission)) {
+    MaterialLobes lobes = viewer.lobes();
+    ImGui::TextUnformatted("lobes");
+    int shown = 0;
+    const auto lobe = [&](bool usedByScene, const char* label, bool& on) {
+      if (!usedByScene) return;
+      // Two to a line, in the column the other rows' controls start at.
+      if (shown % 2 == 0 && shown > 0) ImGui::NewLine();
+      ImGui::SameLine(shown % 2 == 0 ? 90.0f : 0.0f);
+      ++shown;
+      if (ImGui::Checkbox(label, &on)) viewer.setLobes(lobes);
+    };
+    lobe(used.specular, "ior/specular", lobes.specular);
+    lobe(used.clearcoat, "clearcoat", lobes.clearcoat);
+    lobe(used.sheen, "sheen", lobes.sheen);
+    lobe(used.transmission, "transmission", lobes.transmission);
+  }
+
   if (f.model == ShadingModel::Pbr && ImGui::BeginCombo("tone curve (T)", toString(f.toneCurve))) {
     for (const ToneCurve curve : kToneCurves) {
       if (ImGui::Selectable(toString(curve), f.toneCurve == curve)) viewer.setToneCurve(curve);

@@ -33,6 +33,7 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
     : options_(options),
       window_(options.size.x, options.size.y, "pbr view"),
       scene_(std::move(scene)),
+      usedLobes_(pbr::usedLobes(scene_)),
       camera_(scene_.camera),
       profiler_(chooseTimingMode(options.timing, window_.info().renderer)),
       movedLights_(scene_.lights) {

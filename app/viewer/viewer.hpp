@@ -65,6 +65,7 @@ class Viewer {
   void setCulling(Culling culling) { options_.frame.culling = culling; }
   void setShadows(const ShadowSettings& shadows) { options_.frame.shadows = shadows; }
   void setTransparency(Transparency transparency) { options_.frame.transparency = transparency; }
+  void setLobes(const MaterialLobes& lobes) { options_.frame.lobes = lobes; }
   void setToneCurve(ToneCurve curve) { options_.frame.toneCurve = curve; }
   void setView(std::optional<DebugChannel> view) { view_ = view; }
   // A fixed exposure, which turns the automatic one off.
@@ -112,6 +113,9 @@ class Viewer {
   double animationDuration() const;  // the longest of the animations played, in seconds
   size_t lightCount() const { return scene_.lights.size(); }
   const Scene& scene() const { return scene_; }
+  // The material extensions' lobes the scene's materials use (usedLobes), which the overlay offers to switch off.
+  const MaterialLobes& usedLobes() const { return usedLobes_; }
+  const MaterialLobes& lobes() const { return options_.frame.lobes; }
   const OrbitCamera& camera() const { return camera_; }
   glm::ivec2 frameSize() const { return {renderer_->width(), renderer_->height()}; }
   const Renderer& renderer() const { return *renderer_; }
@@ -141,6 +145,7 @@ class Viewer {
   WindowContext window_;  // declared first: every GL object below goes while its context still exists
   ShaderLibrary shaders_;
   Scene scene_;  // lights at rest; the animation moves copies of them
+  MaterialLobes usedLobes_;
   OrbitCamera camera_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<Framebuffer> presentSource_;  // wraps the renderer's LDR texture for the blit to the window

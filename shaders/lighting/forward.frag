@@ -10,6 +10,11 @@
 // With OIT_WEIGHTED the fragment is instead summed into weighted blended order-independent transparency's targets
 // (McGuire & Bavoil 2013), resolved by oit_composite.comp; with OIT_EXACT it is kept in its pixel's list
 // (layer_lists.glsl), resolved by layer_resolve.comp.
+#if TRANSMISSION_OFF
+// MaterialLobes::transmission off: a transmissive material shaded as if without the extension.
+#undef MATERIAL_TRANSMISSION
+#define MATERIAL_TRANSMISSION 0
+#endif
 #include "../gbuffer/material.glsl"
 #include "shade_lights.glsl"
 #if MATERIAL_TRANSMISSION
