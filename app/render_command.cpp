@@ -21,6 +21,7 @@
 #include "core/scene/messages.hpp"
 #include "core/io/output_file.hpp"
 #include "lighting/lighting_pass.hpp"
+#include "renderer/frame_limits.hpp"
 #include "renderer/renderer.hpp"
 
 namespace pbr {
@@ -330,6 +331,12 @@ int runRender(const std::vector<std::string>& commandLine) {
   printLightStats(result.stats, renderer, options);
   const std::string gbufferLayout = renderer.gbuffer().layout.describe(renderer.gbuffer().precision);
   if (r.stats) std::printf("gbuffer: %s\n", gbufferLayout.c_str());
+  if (r.stats && hasTransmissiveMaterial(scene)) {
+    const uint64_t bytes = transmissionBackgroundBytesPerPixel(r.settings.renderer.hdrFormat) * uint64_t(r.size.x) *
+                           uint64_t(r.size.y);
+    std::printf("transmission: the opaque frame copied with its mip chain for the transmissive materials to see "
+                "through, %.1f MiB\n", double(bytes) / double(1 << 20));
+  }
   const std::optional<MeteredExposure> metered = renderer.meteredExposure();
   if (metered) {
     std::printf("exposure: auto, EV100 %.2f metered from the frame (exposure %.4g, as --ev100 %.2f --exposure 1 "

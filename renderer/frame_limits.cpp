@@ -72,7 +72,7 @@ std::string gigabytes(uint64_t bytes) {
 
 }  // namespace
 
-uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout) {
+uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& layout, bool transmission) {
   const uint64_t gbuffer =
       uint64_t(gbufferBytesPerPixel(config.gbuffer)) + uint64_t(layout.extraBytesPerPixel(config.gbuffer));
   const uint64_t ldr = 2 * 4;  // the display image, and its copy before anti-aliasing (made on first use)
@@ -80,8 +80,12 @@ uint64_t frameBytesPerPixel(const RendererConfig& config, const GBufferLayout& l
   const uint64_t runningSums = 16;  // RGBA32F, made for frames whose lights take several lighting dispatches
   const uint64_t pairCounts = 8;    // RG32UI, made for the efficiency debug channel
   const uint64_t shadowLight = 8;   // RG32F, made for the shadows debug channel
-  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts + shadowLight;
+  const uint64_t background = transmission ? transmissionBackgroundBytesPerPixel(config.hdrFormat) : 0;
+  return gbuffer + hdrBytesPerPixel(config.hdrFormat) + ldr + captures + runningSums + pairCounts + shadowLight +
+         background;
 }
+
+uint64_t transmissionBackgroundBytesPerPixel(HdrFormat format) { return (4 * hdrBytesPerPixel(format) + 2) / 3; }
 
 uint64_t availableMemoryBytes() {
   return std::min({meminfoAvailable(), cgroupAvailable(), addressSpaceAvailable()});

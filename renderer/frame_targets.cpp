@@ -11,8 +11,10 @@ namespace pbr {
 namespace {
 
 // Called while `width` is initialised, before any member allocates a target: an impossible size fails here.
-int checkedWidth(int width, int height, const RendererConfig& config, const GBufferLayout& layout) {
-  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config, layout), queryFrameLimits());
+int checkedWidth(int width, int height, const RendererConfig& config, const GBufferLayout& layout,
+                 bool transmission) {
+  checkFrameSize(width, height, config.sizeOption, frameBytesPerPixel(config, layout, transmission),
+                 queryFrameLimits());
   checkFrameFormats(width, height, config.sizeOption, frameFormats(config, layout));
   return width;
 }
@@ -20,8 +22,8 @@ int checkedWidth(int width, int height, const RendererConfig& config, const GBuf
 }  // namespace
 
 FrameTargets::FrameTargets(ProgramCache& programs, int w, int h, const RendererConfig& config,
-                           const GBufferLayout& layout)
-    : width(checkedWidth(w, h, config, layout)),
+                           const GBufferLayout& layout, bool transmission)
+    : width(checkedWidth(w, h, config, layout, transmission)),
       height(h),
       hdr("frame.radiance", glInternalFormat(config.hdrFormat), w, h),
       gbuffer(w, h, hdr, config.gbuffer, layout),

@@ -11,12 +11,14 @@ namespace pbr {
 
 // What lives as long as the frame size: the HDR radiance target, the G-buffer drawn around it, the final RGBA8
 // frame and the cluster grid with its light lists. A resize replaces this and nothing else; its programs come
-// from the scene's cache, compiled already. The G-buffer has the channels of the scene's `layout`.
+// from the scene's cache, compiled already. The G-buffer has the channels of the scene's `layout`; a scene with
+// transmissive materials (`transmission`) has the copy of the opaque frame they see through counted in the size
+// check, though it is made on first use.
 struct FrameTargets {
   // Throws std::runtime_error naming config.sizeOption when the frame is over the context's texture size, the
   // memory available or what the driver can create (renderer/frame_limits.hpp), before any target is allocated.
   FrameTargets(ProgramCache& programs, int width, int height, const RendererConfig& config,
-               const GBufferLayout& layout);
+               const GBufferLayout& layout, bool transmission);
 
   int width, height;
   Texture hdr;  // radiance: emission from the G-buffer pass, then reflected light from the lighting pass

@@ -35,7 +35,8 @@ Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, int width, 
     : sceneData_(scene),
       config_(config),
       scene_(shaders, scene, config.precomputeProfiler),
-      targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config, scene_.geometry.layout())),
+      targets_(std::make_unique<FrameTargets>(scene_.programs, width, height, config, scene_.geometry.layout(),
+                                          scene_.geometry.hasTransmissive())),
       camera_(scene.camera),
       frameData_(makeFrameBlock(camera_, width, height)),
       frame_("frame.block", frameData_),
@@ -114,7 +115,8 @@ BlendedSurfaces Renderer::blendedSurfaces(GLuint framebuffer) {
 
 void Renderer::resize(int width, int height) {
   targets_.reset();  // free the old targets before allocating the new ones
-  targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_, scene_.geometry.layout());
+  targets_ = std::make_unique<FrameTargets>(scene_.programs, width, height, config_, scene_.geometry.layout(),
+                                            scene_.geometry.hasTransmissive());
   ++targetBuilds_;
   setCamera(camera_);
 }

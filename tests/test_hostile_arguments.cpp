@@ -74,6 +74,8 @@ TEST_CASE("hostile outputs: the frame-size check names the option and the limit 
   wide.gbuffer = pbr::GBufferPrecision::Float;
   wide.hdrFormat = pbr::HdrFormat::Rgba32f;
   CHECK(pbr::frameBytesPerPixel(wide) == 44 + 16 + 4 + 4 + 8 + 32 + 16 + 8 + 8);
+  // Transmissive materials add the opaque frame's copy with its mip chain: 4/3 of RGBA16F's 8 bytes, rounded up.
+  CHECK(pbr::frameBytesPerPixel(lean, {}, true) == pbr::frameBytesPerPixel(lean) + 11);
 
   const pbr::FrameLimits limits{8192, 1'000'000'000};
   CHECK_NOTHROW(pbr::checkFrameSize(8192, 16, "--size", 68, limits));

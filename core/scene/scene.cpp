@@ -188,6 +188,11 @@ bool hasBlendMaterial(const Scene& scene) {
                      [](const SceneObject& o) { return o.material.alphaMode == AlphaMode::Blend; });
 }
 
+bool hasTransmissiveMaterial(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [](const SceneObject& o) { return isTransmissive(o.material); });
+}
+
 bool readsTexCoord1(const Material& m) {
   return (m.baseColorTexture >= 0 && m.baseColorTexCoord == 1) ||
          (m.metallicRoughnessTexture >= 0 && m.metallicRoughnessTexCoord == 1) ||

@@ -230,6 +230,8 @@ struct Scene {
 
 // Whether any object's material has alphaMode BLEND (drawn by the transparency pass).
 bool hasBlendMaterial(const Scene& scene);
+// Whether any object's material is transmissive (isTransmissive).
+bool hasTransmissiveMaterial(const Scene& scene);
 // Whether an opaque or MASK object's material is unlit: the deferred pass then reads the G-buffer's unlit flag.
 bool hasUnlitSurface(const Scene& scene);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
