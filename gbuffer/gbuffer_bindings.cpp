@@ -4,10 +4,20 @@
 
 namespace pbr {
 
+std::vector<BindingPoint> materialMapBindings() {
+  using namespace gbuffer_binding;
+  return {kBaseColorMapUnit,      kMetallicRoughnessMapUnit, kNormalMapUnit,           kOcclusionMapUnit,
+          kEmissiveMapUnit,       kClearcoatMapUnit,         kClearcoatRoughnessMapUnit, kClearcoatNormalMapUnit,
+          kSheenColorMapUnit,     kSheenRoughnessMapUnit,    kSpecularMapUnit,         kSpecularColorMapUnit,
+          kTransmissionMapUnit,   kThicknessMapUnit};
+}
+
 ShaderDefines gbufferBindingDefines() {
   using namespace gbuffer_binding;
-  return bindingDefines({kFrameUbo, kObjectUbo, kShadowViewsUbo, kBaseColorMapUnit, kMetallicRoughnessMapUnit,
-                         kNormalMapUnit, kOcclusionMapUnit, kEmissiveMapUnit});
+  std::vector<BindingPoint> points = {kFrameUbo, kObjectUbo, kShadowViewsUbo};
+  const std::vector<BindingPoint> maps = materialMapBindings();
+  points.insert(points.end(), maps.begin(), maps.end());
+  return bindingDefines(points);
 }
 
 }  // namespace pbr

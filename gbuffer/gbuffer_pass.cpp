@@ -61,13 +61,22 @@ std::vector<unsigned char> packObjectBlocks(const Scene& scene, GLsizeiptr strid
         {kEmissiveMapUnit.index, m.emissiveTexCoord == 1}};
     unsigned uv1Maps = 0;
     for (const auto& [unit, second] : secondSet) uv1Maps |= second ? 1u << unit : 0u;
-    b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, static_cast<float>(uv1Maps), 0.0f, 0.0f);
+    const std::array<const MaterialMap*, kExtensionMapCount> extensions = extensionMaps(m);
+    unsigned uv1Extensions = 0;
+    for (size_t e = 0; e < kExtensionMapCount; ++e) {
+      uv1Extensions |= extensions[e]->texCoord == 1 ? 1u << e : 0u;
+      b.extensionUvTransform[e] = std140Rows(extensions[e]->uvTransform);
+    }
+    b.orientation = glm::vec4(mirrors(o.transform) ? -1.0f : 1.0f, static_cast<float>(uv1Maps),
+                              static_cast<float>(uv1Extensions), 0.0f);
     b.dielectric = dielectricSpecular(m);
-    b.layers = glm::vec4(m.clearcoat, m.clearcoatRoughness, m.sheenRoughness, 0.0f);
+    b.layers = glm::vec4(m.clearcoat, m.clearcoatRoughness, m.sheenRoughness, m.clearcoatNormalScale);
     b.sheenColor = glm::vec4(m.sheenColor, 0.0f);
     const bool absorbs = std::isfinite(m.attenuationDistance);
     b.transmission = glm::vec4(m.transmission, m.thickness, absorbs ? m.attenuationDistance : 0.0f, m.ior);
     b.attenuationColor = glm::vec4(m.attenuationColor, 0.0f);
+    const double f0 = (double(m.ior) - 1.0) * (double(m.ior) - 1.0) / ((double(m.ior) + 1.0) * (double(m.ior) + 1.0));
+    b.specularFactors = glm::vec4(m.specularColor, float(f0));
     b.uvTransform[kBaseColorMapUnit.index] = std140Rows(m.baseColorUvTransform);
     b.uvTransform[kMetallicRoughnessMapUnit.index] = std140Rows(m.metallicRoughnessUvTransform);
     b.uvTransform[kNormalMapUnit.index] = std140Rows(m.normalUvTransform);
@@ -129,6 +138,13 @@ ShaderDefines GBufferPass::permutation(const Material& m) {
                            {"UNLIT", flag(m.unlit)}};
   // Named only where used, so that the other permutations keep their define lists (an undefined name is 0 in #if).
   if (isTransmissive(m)) defines.push_back({"MATERIAL_TRANSMISSION", "1"});
+  const char* const mapDefines[kExtensionMapCount] = {
+      "CLEARCOAT_MAP",   "CLEARCOAT_ROUGHNESS_MAP", "CLEARCOAT_NORMAL_MAP", "SHEEN_COLOR_MAP", "SHEEN_ROUGHNESS_MAP",
+      "SPECULAR_MAP",    "SPECULAR_COLOR_MAP",      "TRANSMISSION_MAP",     "THICKNESS_MAP"};
+  const std::array<const MaterialMap*, kExtensionMapCount> maps = extensionMaps(m);
+  for (size_t i = 0; i < kExtensionMapCount; ++i) {
+    if (maps[i]->texture >= 0) defines.push_back({mapDefines[i], "1"});
+  }
   return defines;
 }
 
@@ -198,6 +214,14 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
       }
     }
     bounds_.add(d.bounds);
+    const std::array<const MaterialMap*, kExtensionMapCount> extensions = extensionMaps(o.material);
+    for (size_t e = 0; e < kExtensionMapCount; ++e) {
+      if (extensions[e]->texture < 0) continue;
+      const GpuTexture& t = textures_.at(static_cast<size_t>(extensions[e]->texture));
+      d.extensionTextures[e] = t.texture().id();
+      d.extensionSamplers[e] = t.sampler().id();
+      d.extensionTextured = true;
+    }
     const std::array<int, kMapCount> maps = materialMaps(o.material);
     for (size_t unit = 0; unit < kMapCount; ++unit) {
       if (maps[unit] < 0) continue;
@@ -265,6 +289,10 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
       glBindTextures(0, static_cast<GLsizei>(kMapCount), d.textures.data());
       glBindSamplers(0, static_cast<GLsizei>(kMapCount), d.samplers.data());
     }
+    if (d.extensionTextured) {
+      glBindTextures(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount), d.extensionTextures.data());
+      glBindSamplers(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount), d.extensionSamplers.data());
+    }
     glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d.blockOffset,
                       sizeof(ObjectBlock));
     meshes_[static_cast<size_t>(d.mesh)].draw();
@@ -272,6 +300,7 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   // Later passes fetch from these units with their own (mipmap-less) textures: a sampler left bound would make
   // them incomplete.
   glBindSamplers(0, static_cast<GLsizei>(kMapCount), nullptr);
+  glBindSamplers(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount), nullptr);
   glFrontFace(GL_CCW);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glDisable(GL_CULL_FACE);
@@ -326,15 +355,20 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(set == BlendedSet::Transmissive ? GL_TRUE : GL_FALSE);
-  const std::vector<BindingPoint> bindings = {gbuffer_binding::kObjectUbo, gbuffer_binding::kBaseColorMapUnit,
-                                              gbuffer_binding::kMetallicRoughnessMapUnit,
-                                              gbuffer_binding::kNormalMapUnit, gbuffer_binding::kOcclusionMapUnit,
-                                              gbuffer_binding::kEmissiveMapUnit};
+  std::vector<BindingPoint> bindings = {gbuffer_binding::kObjectUbo};
+  const std::vector<BindingPoint> maps = materialMapBindings();
+  bindings.insert(bindings.end(), maps.begin(), maps.end());
   for (const Draw* d : blended) {
     glFrontFace(d->mirrored ? GL_CW : GL_CCW);
     if (d->textured) {
       glBindTextures(0, static_cast<GLsizei>(kMapCount), d->textures.data());
       glBindSamplers(0, static_cast<GLsizei>(kMapCount), d->samplers.data());
+    }
+    if (d->extensionTextured) {
+      glBindTextures(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount),
+                     d->extensionTextures.data());
+      glBindSamplers(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount),
+                     d->extensionSamplers.data());
     }
     glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), d->blockOffset,
                       sizeof(ObjectBlock));
@@ -357,6 +391,7 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
     }
   }
   glBindSamplers(0, static_cast<GLsizei>(kMapCount), nullptr);
+  glBindSamplers(gbuffer_binding::kFirstExtensionMapUnit, GLsizei(kExtensionMapCount), nullptr);
   glCullFace(GL_BACK);
   glDisable(GL_CULL_FACE);
   glFrontFace(GL_CCW);

@@ -79,6 +79,10 @@ class GBufferPass {
     bool textured;
     std::array<GLuint, kMapCount> textures;  // by texture unit; 0 where the draw samples nothing
     std::array<GLuint, kMapCount> samplers;
+    // The extensions' maps (units from gbuffer_binding::kFirstExtensionMapUnit, extensionMaps' order).
+    bool extensionTextured;
+    std::array<GLuint, kExtensionMapCount> extensionTextures;
+    std::array<GLuint, kExtensionMapCount> extensionSamplers;
     WorldBounds bounds;
     bool castsCutOut;    // alpha-masked: discards below its cut-off in the shadow maps too
     bool cutOutTexture;  // its alpha comes from the base colour map

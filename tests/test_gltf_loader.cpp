@@ -1025,14 +1025,19 @@ TEST_CASE("gltf errors: a material value of the wrong form is refused by name, n
   }
 }
 
-TEST_CASE("gltf materials: KHR_materials_ior and KHR_materials_specular's factors, their textures warned of") {
+TEST_CASE("gltf materials: KHR_materials_ior and KHR_materials_specular's factors and maps") {
   const TempDir dir;
   GltfBuilder builder;
+  const int map = builder.addPngTexture(dir.path(), "map.png", {2, 2, std::vector<uint8_t>(16, 200)});
   const int material = builder.addMaterial(
       {{"extensions",
         {{"KHR_materials_ior", {{"ior", 1.33}}},
          {"KHR_materials_specular",
-          {{"specularFactor", 0.5}, {"specularColorFactor", {2.0, 1.0, 0.5}}, {"specularTexture", {{"index", 0}}}}}}}});
+          {{"specularFactor", 0.5},
+           {"specularColorFactor", {2.0, 1.0, 0.5}},
+           {"specularTexture", {{"index", map}}},
+           {"specularColorTexture",
+            {{"index", map}, {"extensions", {{"KHR_texture_transform", {{"scale", {2.0, 2.0}}}}}}}}}}}}});
   builder.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular"};
   QuadSpec withMaterial;
   withMaterial.material = material;
@@ -1045,9 +1050,13 @@ TEST_CASE("gltf materials: KHR_materials_ior and KHR_materials_specular's factor
   CHECK(m.ior == 1.33f);
   CHECK(m.specular == 0.5f);
   CHECK(m.specularColor == glm::vec3(2.0f, 1.0f, 0.5f));
-  CHECK(warnings.text().find("materials[0].extensions.KHR_materials_specular.specularTexture: not drawn") !=
-        std::string::npos);
-  CHECK(warnings.text().find("not implemented") == std::string::npos);  // both extensions are read
+  // The strength map linear, the colour map sRGB: one image, two textures; the colour's transform read.
+  REQUIRE(m.specularMap.texture >= 0);
+  REQUIRE(m.specularColorMap.texture >= 0);
+  CHECK_FALSE(scene.textures[size_t(m.specularMap.texture)].srgb);
+  CHECK(scene.textures[size_t(m.specularColorMap.texture)].srgb);
+  CHECK(m.specularColorMap.uvTransform[0] == glm::vec2(2.0f, 0.0f));
+  CHECK(warnings.text().empty());  // both extensions and their maps are read
 }
 
 TEST_CASE("gltf materials: an index of refraction between 0 and 1 is refused, naming the field") {
@@ -1123,19 +1132,25 @@ TEST_CASE("gltf materials: KHR_materials_pbrSpecularGlossiness becomes metal-rou
   CHECK(int(roughness.rgba[1]) == 128);
   CHECK(int(roughness.rgba[5]) == 204);
   CHECK(int(roughness.rgba[2]) == 0);
-  CHECK(scene.textures.size() == 1);  // the map decoded for this material alone is rewritten, not copied
-  CHECK(warnings.text().find("specularGlossinessTexture: its specular colour is not drawn") != std::string::npos);
+  // The map decoded for this material's roughness alone is rewritten, not copied; its colour, sRGB, is the
+  // specular colour map.
+  REQUIRE(b.specularColorMap.texture >= 0);
+  CHECK(scene.textures[size_t(b.specularColorMap.texture)].srgb);
+  CHECK(scene.textures.size() == 2);
+  CHECK(warnings.text().empty());
 }
 
-TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warned of") {
+TEST_CASE("gltf materials: KHR_materials_clearcoat's factors and maps") {
   const TempDir dir;
   GltfBuilder builder;
+  const int map = builder.addPngTexture(dir.path(), "map.png", {2, 2, std::vector<uint8_t>(16, 200)});
   const int material = builder.addMaterial(
       {{"extensions",
         {{"KHR_materials_clearcoat",
           {{"clearcoatFactor", 0.75},
            {"clearcoatRoughnessFactor", 0.25},
-           {"clearcoatNormalTexture", {{"index", 0}}}}}}}});
+           {"clearcoatTexture", {{"index", map}, {"texCoord", 1}}},
+           {"clearcoatNormalTexture", {{"index", map}, {"scale", 0.5}}}}}}}});
   builder.doc["extensionsUsed"] = {"KHR_materials_clearcoat"};
   QuadSpec quad;
   quad.material = material;
@@ -1146,22 +1161,31 @@ TEST_CASE("gltf materials: KHR_materials_clearcoat's factors, its textures warne
   REQUIRE(scene.objects.size() == 1);
   CHECK(scene.objects[0].material.clearcoat == 0.75f);
   CHECK(scene.objects[0].material.clearcoatRoughness == 0.25f);
-  CHECK(warnings.text().find("KHR_materials_clearcoat.clearcoatNormalTexture: not drawn") != std::string::npos);
+  const pbr::Material& m = scene.objects[0].material;
+  CHECK(m.clearcoatMap.texture >= 0);
+  CHECK(m.clearcoatMap.texCoord == 1);
+  CHECK(pbr::readsTexCoord1(m));
+  CHECK(m.clearcoatNormalMap.texture >= 0);
+  CHECK(m.clearcoatNormalScale == 0.5f);
+  CHECK(m.clearcoatRoughnessMap.texture < 0);
+  // The coat's map reads the second UV set, which this quad lacks: said, as for a core map.
+  CHECK(warnings.text().find("its material reads TEXCOORD_1, which the primitive lacks") != std::string::npos);
   CHECK(pbr::materialExtensions(scene, false).clearcoat);
   CHECK_FALSE(pbr::materialExtensions(scene, true).clearcoat);
 }
 
-TEST_CASE("gltf materials: KHR_materials_transmission and _volume's factors, their textures warned of") {
+TEST_CASE("gltf materials: KHR_materials_transmission and _volume's factors and maps") {
   const TempDir dir;
   GltfBuilder builder;
+  const int map = builder.addPngTexture(dir.path(), "map.png", {2, 2, std::vector<uint8_t>(16, 200)});
   const int glass = builder.addMaterial(
       {{"extensions",
-        {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", 0}}}}},
+        {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", map}}}}},
          {"KHR_materials_volume",
           {{"thicknessFactor", 0.5},
            {"attenuationDistance", 2.0},
            {"attenuationColor", {1.0, 0.5, 0.25}},
-           {"thicknessTexture", {{"index", 0}}}}}}}});
+           {"thicknessTexture", {{"index", map}}}}}}}});
   builder.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
   QuadSpec quad;
   quad.material = glass;
@@ -1175,9 +1199,9 @@ TEST_CASE("gltf materials: KHR_materials_transmission and _volume's factors, the
   CHECK(m.thickness == 0.5f);
   CHECK(m.attenuationDistance == 2.0f);
   CHECK(m.attenuationColor == glm::vec3(1.0f, 0.5f, 0.25f));
-  CHECK(warnings.text().find("KHR_materials_transmission.transmissionTexture: not drawn") != std::string::npos);
-  CHECK(warnings.text().find("KHR_materials_volume.thicknessTexture: not drawn") != std::string::npos);
-  CHECK(warnings.text().find("extensionsUsed") == std::string::npos);
+  CHECK(m.transmissionMap.texture >= 0);
+  CHECK(m.thicknessMap.texture >= 0);
+  CHECK(warnings.text().empty());
   // Forward-shaded: its extensions are the transparency pass's, not the G-buffer's.
   CHECK(pbr::isForwardShaded(m));
   // A negative thickness names the field.
@@ -1189,17 +1213,30 @@ TEST_CASE("gltf materials: KHR_materials_transmission and _volume's factors, the
   pbr::Scene refused;
   CHECK_THROWS_WITH_AS(pbr::appendGltf(refused, bad.writeGltf(dir.path(), "bad")),
                        doctest::Contains("KHR_materials_volume.thicknessFactor: must be >= 0"), pbr::SceneError);
+  // A map naming no texture names its field.
+  GltfBuilder missing;
+  const int noTexture = missing.addMaterial(
+      {{"extensions", {{"KHR_materials_transmission", {{"transmissionTexture", {{"index", 3}}}}}}}});
+  QuadSpec missingQuad;
+  missingQuad.material = noTexture;
+  missing.addRootNode({{"mesh", pbr::test::addQuad(missing, missingQuad)}});
+  CHECK_THROWS_WITH_AS(
+      pbr::appendGltf(refused, missing.writeGltf(dir.path(), "missing")),
+      doctest::Contains("materials[0].extensions.KHR_materials_transmission.transmissionTexture.index"),
+      pbr::SceneError);
 }
 
-TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of") {
+TEST_CASE("gltf materials: KHR_materials_sheen's factors and maps") {
   const TempDir dir;
   GltfBuilder builder;
+  const int map = builder.addPngTexture(dir.path(), "map.png", {2, 2, std::vector<uint8_t>(16, 200)});
   const int material = builder.addMaterial(
       {{"extensions",
         {{"KHR_materials_sheen",
           {{"sheenColorFactor", {1.0, 0.5, 0.25}},
            {"sheenRoughnessFactor", 0.75},
-           {"sheenColorTexture", {{"index", 0}}}}}}}});
+           {"sheenColorTexture", {{"index", map}}},
+           {"sheenRoughnessTexture", {{"index", map}}}}}}}});
   builder.doc["extensionsUsed"] = {"KHR_materials_sheen"};
   QuadSpec quad;
   quad.material = material;
@@ -1210,6 +1247,8 @@ TEST_CASE("gltf materials: KHR_materials_sheen's factors, its textures warned of
   REQUIRE(scene.objects.size() == 1);
   CHECK(scene.objects[0].material.sheenColor == glm::vec3(1.0f, 0.5f, 0.25f));
   CHECK(scene.objects[0].material.sheenRoughness == 0.75f);
-  CHECK(warnings.text().find("KHR_materials_sheen.sheenColorTexture: not drawn") != std::string::npos);
+  CHECK(scene.textures[size_t(scene.objects[0].material.sheenColorMap.texture)].srgb);
+  CHECK_FALSE(scene.textures[size_t(scene.objects[0].material.sheenRoughnessMap.texture)].srgb);
+  CHECK(warnings.text().empty());
   CHECK(pbr::materialExtensions(scene, false).sheen);
 }

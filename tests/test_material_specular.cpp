@@ -312,3 +312,66 @@ TEST_CASE("material lobes: an extension's lobe switched off renders the scene wi
     CHECK(pbr::test::renderScene(c.scene, kSize, {}).hdr.pixels != stripped.hdr.pixels);  // the lobe does show
   }
 }
+
+namespace {
+
+// A 4x4 texture of one value in every channel (linear, or sRGB-encoded for the colour maps).
+int uniformTexture(pbr::Scene& scene, uint8_t value, bool srgb) {
+  pbr::TextureData t;
+  t.name = "uniform";
+  t.width = t.height = 4;
+  t.rgba.assign(4 * 4 * 4, value);
+  t.srgb = srgb;
+  scene.textures.push_back(t);
+  return int(scene.textures.size()) - 1;
+}
+
+// The linear value a texel of `value` reads as.
+float texelValue(uint8_t value, bool srgb) {
+  const float c = float(value) / 255.0f;
+  return srgb ? (c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f)) : c;
+}
+
+}  // namespace
+
+TEST_CASE("material maps: each extension's map multiplies its factor as the specification says") {
+  PBR_REQUIRE_GL();
+  // A scene with a map of one value v against the same scene with the factor times v and no map: the same frame
+  // up to the texel's rounding (relative RMSE). Uniform maps leave the UVs and filtering out of it.
+  const uint8_t v = 150;
+  struct Case {
+    const char* name;
+    pbr::Scene scene;
+    bool srgb;
+    void (*map)(pbr::Material&, int texture);
+    void (*scale)(pbr::Material&, float by);
+  };
+  const Case cases[] = {
+      {"clearcoat", coatGrid(0.02f), false, [](pbr::Material& m, int t) { m.clearcoatMap.texture = t; },
+       [](pbr::Material& m, float by) { m.clearcoat *= by; }},
+      {"clearcoat roughness", coatGrid(0.02f), false,
+       [](pbr::Material& m, int t) { m.clearcoatRoughnessMap.texture = t; },
+       [](pbr::Material& m, float by) { m.clearcoatRoughness *= by; }},
+      {"sheen colour", sheenGrid(0.02f), true, [](pbr::Material& m, int t) { m.sheenColorMap.texture = t; },
+       [](pbr::Material& m, float by) { m.sheenColor *= by; }},
+      {"sheen roughness", sheenGrid(0.02f), false, [](pbr::Material& m, int t) { m.sheenRoughnessMap.texture = t; },
+       [](pbr::Material& m, float by) { m.sheenRoughness *= by; }},
+      {"specular", grid(0.02f), false, [](pbr::Material& m, int t) { m.specularMap.texture = t; },
+       [](pbr::Material& m, float by) { m.specular *= by; }},
+      {"specular colour", grid(0.02f), true, [](pbr::Material& m, int t) { m.specularColorMap.texture = t; },
+       [](pbr::Material& m, float by) { m.specularColor *= by; }},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.name);
+    pbr::Scene mapped = c.scene, scaled = c.scene;
+    const int texture = uniformTexture(mapped, v, c.srgb);
+    for (pbr::SceneObject& o : mapped.objects) c.map(o.material, texture);
+    for (pbr::SceneObject& o : scaled.objects) c.scale(o.material, texelValue(v, c.srgb));
+    const double error =
+        pbr::test::relativeRmse(renderFloat(mapped, {}).hdr, renderFloat(scaled, {}).hdr);
+    MESSAGE(std::string(c.name) << ": relative RMSE " << error);
+    CHECK(error < 2e-3);
+    // And the map does change the frame.
+    CHECK(pbr::test::relativeRmse(renderFloat(mapped, {}).hdr, renderFloat(c.scene, {}).hdr) > 1e-3);
+  }
+}

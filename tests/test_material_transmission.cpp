@@ -127,6 +127,24 @@ TEST_CASE("material transmission: a pane shows the background behind it tinted a
     const pbr::test::RenderedFrame frame = pbr::test::renderScene(paneScene(glass(1.0f, 1.0f), true), kSize, off);
     checkNear(centre(frame.hdr) + 1.0, glm::dvec3(1.0), 1e-6);
   }
+  // The maps multiply the factors: a transmission map of 150 (linear) is a factor of 150/255; a thickness map of 150
+  // a thickness of 150/255.
+  {
+    pbr::Scene mapped = paneScene(glass(1.0f, 1.0f), true);
+    pbr::TextureData map;
+    map.name = "uniform";
+    map.width = map.height = 4;
+    map.rgba.assign(64, 150);
+    mapped.textures.push_back(map);
+    mapped.objects[1].material.transmissionMap.texture = 0;
+    mapped.objects[1].material.thicknessMap.texture = 0;
+    pbr::Scene scaled = paneScene(glass(1.0f, 1.0f), true);
+    scaled.objects[1].material.transmission = 150.0f / 255.0f;
+    scaled.objects[1].material.thickness = 150.0f / 255.0f;
+    checkNear(centre(renderFloat(mapped).hdr), centre(renderFloat(scaled).hdr), 1e-4);
+    const glm::dvec3 want = background * glm::pow(color, glm::dvec3(0.2 * 150.0 / 255.0 / 0.1)) * (150.0 / 255.0);
+    checkNear(centre(renderFloat(mapped).hdr), want, 2e-3);
+  }
   // Half transmission: the other half diffuses, which no light here reaches.
   {
     pbr::Material half = glass(1.0f, 0.0f);

@@ -463,6 +463,27 @@ class Checker {
         typed(member(*material, "occlusionTexture", field), "strength", field + ".occlusionTexture",
               &json::is_number, "a number");
       }
+      // The material extensions' maps, read as the core's are (GltfMaterials::extensionMap).
+      if (material->contains("extensions")) {
+        const json& extensions = member(*material, "extensions", field);
+        const std::pair<const char*, std::vector<const char*>> maps[] = {
+            {"KHR_materials_clearcoat", {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}},
+            {"KHR_materials_sheen", {"sheenColorTexture", "sheenRoughnessTexture"}},
+            {"KHR_materials_specular", {"specularTexture", "specularColorTexture"}},
+            {"KHR_materials_transmission", {"transmissionTexture"}},
+            {"KHR_materials_volume", {"thicknessTexture"}},
+            {"KHR_materials_pbrSpecularGlossiness", {"diffuseTexture", "specularGlossinessTexture"}}};
+        for (const auto& [name, keys] : maps) {
+          if (!extensions.contains(name)) continue;
+          const std::string owner = field + ".extensions." + name;
+          const json& extension = member(extensions, name, field + ".extensions");
+          for (const char* key : keys) textureInfo(extension, key, owner);
+          if (extension.contains("clearcoatNormalTexture")) {
+            typed(member(extension, "clearcoatNormalTexture", owner), "scale", owner + ".clearcoatNormalTexture",
+                  &json::is_number, "a number");
+          }
+        }
+      }
       numbers(*material, "emissiveFactor", field, 3);
       typed(*material, "alphaMode", field, &json::is_string, "a string");
       typed(*material, "alphaCutoff", field, &json::is_number, "a number");

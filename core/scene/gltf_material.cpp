@@ -71,6 +71,31 @@ UvTransform textureTransform(const GltfFile& file, const tinygltf::ExtensionMap&
 
 }  // namespace
 
+MaterialMap GltfMaterials::extensionMap(const tinygltf::Value& extension, const char* key, bool srgb,
+                                        const std::string& owner) {
+  MaterialMap map;
+  if (!extension.Has(key)) return map;
+  // checkGltfJson has checked the textureInfo's types: an index within the textures, integer UV sets, a transform.
+  const std::string where = owner + "." + key;
+  const tinygltf::Value& info = extension.Get(key);
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions")) {
+    const tinygltf::Value& e = info.Get("extensions");
+    for (const std::string& name : e.Keys()) extensions[name] = e.Get(name);
+  }
+  const UvTransform t = textureTransform(file_, extensions, where);
+  const int declared = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
+  map.texCoord = t.texCoord.value_or(declared);
+  if (map.texCoord > 1) {
+    file_.warn((t.texCoord ? where + ".extensions.KHR_texture_transform" : where) + ": texCoord " +
+               std::to_string(map.texCoord) + " is not drawn (TEXCOORD_0 and TEXCOORD_1 are), TEXCOORD_0 is used");
+    map.texCoord = 0;
+  }
+  map.uvTransform = t.matrix;
+  map.texture = texture(info.Get("index").GetNumberAsInt(), srgb, where);
+  return map;
+}
+
 const Material& GltfMaterials::get(int index, const std::string& field) {
   auto it = loaded_.materials.find(index);
   if (it == loaded_.materials.end()) it = loaded_.materials.emplace(index, convert(index, field)).first;
@@ -177,9 +202,8 @@ void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string&
       if (m.specularColor[i] < 0.0f) file_.fail(where + ".specularColorFactor: must not be negative");
     }
   }
-  for (const char* map : {"specularTexture", "specularColorTexture"}) {
-    if (s.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
-  }
+  m.specularMap = extensionMap(s, "specularTexture", false, where);
+  m.specularColorMap = extensionMap(s, "specularColorTexture", true, where);
 }
 
 void GltfMaterials::readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m) {
@@ -195,8 +219,12 @@ void GltfMaterials::readClearcoat(const tinygltf::Material& g, const std::string
   };
   m.clearcoat = factor("clearcoatFactor");
   m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
-  for (const char* map : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
-    if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are (a flat coat)");
+  m.clearcoatMap = extensionMap(v, "clearcoatTexture", false, where);
+  m.clearcoatRoughnessMap = extensionMap(v, "clearcoatRoughnessTexture", false, where);
+  m.clearcoatNormalMap = extensionMap(v, "clearcoatNormalTexture", false, where);
+  if (v.Has("clearcoatNormalTexture") && v.Get("clearcoatNormalTexture").Has("scale")) {
+    const std::string scale = where + ".clearcoatNormalTexture.scale";
+    m.clearcoatNormalScale = finite(file_, v.Get("clearcoatNormalTexture").Get("scale").GetNumberAsDouble(), scale);
   }
 }
 
@@ -218,9 +246,8 @@ void GltfMaterials::readSheen(const tinygltf::Material& g, const std::string& na
     if (!r.IsNumber()) file_.fail(where + ".sheenRoughnessFactor: must be a number");
     m.sheenRoughness = unitFactor(file_, r.GetNumberAsDouble(), where + ".sheenRoughnessFactor");
   }
-  for (const char* map : {"sheenColorTexture", "sheenRoughnessTexture"}) {
-    if (v.Has(map)) file_.warn(where + "." + map + ": not drawn, the factors alone are");
-  }
+  m.sheenColorMap = extensionMap(v, "sheenColorTexture", true, where);
+  m.sheenRoughnessMap = extensionMap(v, "sheenRoughnessTexture", false, where);
 }
 
 void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::string& name, Material& m) {
@@ -235,7 +262,7 @@ void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::str
       m.transmission = unitFactor(file_, number(v.Get("transmissionFactor"), where + ".transmissionFactor"),
                                   where + ".transmissionFactor");
     }
-    if (v.Has("transmissionTexture")) file_.warn(where + ".transmissionTexture: not drawn, the factor alone is");
+    m.transmissionMap = extensionMap(v, "transmissionTexture", false, where);
   }
   const auto found = g.extensions.find("KHR_materials_volume");
   if (found == g.extensions.end()) return;
@@ -257,13 +284,13 @@ void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::str
                                          where + ".attenuationColor");
     }
   }
-  if (v.Has("thicknessTexture")) file_.warn(where + ".thicknessTexture: not drawn, the factor alone is");
+  m.thicknessMap = extensionMap(v, "thicknessTexture", false, where);
 }
 
 // KHR_materials_specular's specification converts a specular-glossiness material so: a dielectric of ior 0 (F0 1)
 // whose specular colour is the specular factor, F90 1, the diffuse factor and texture as base colour, metalness 0
-// and roughness 1 - glossiness; the glossiness in the specular-glossiness map's alpha becomes a roughness map here.
-// The map's specular colour is not drawn (the factor alone is), which is said.
+// and roughness 1 - glossiness; the glossiness in the specular-glossiness map's alpha becomes a roughness map here,
+// and its colour the specular colour map.
 bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m) {
   const auto found = g.extensions.find("KHR_materials_pbrSpecularGlossiness");
   if (found == g.extensions.end()) return false;
@@ -295,31 +322,15 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
   m.specular = 1.0f;
   m.specularColor = glm::vec3(float(specular[0]), float(specular[1]), float(specular[2]));
   // A textureInfo as the core material's maps read one: its index, texCoord and KHR_texture_transform.
-  const auto textureInfo = [&](const char* key, bool srgb, glm::mat3x2& uv, int& set) {
-    if (!v.Has(key)) return -1;
-    const std::string field = where + "." + key;
-    const tinygltf::Value& info = v.Get(key);
-    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
-      file_.fail(field + ": must be a textureInfo with an index");
-    }
-    tinygltf::ExtensionMap extensions;
-    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform")) {
-      extensions["KHR_texture_transform"] = info.Get("extensions").Get("KHR_texture_transform");
-    }
-    const UvTransform t = textureTransform(file_, extensions, field);
-    set = t.texCoord.value_or(info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0);
-    if (set > 1) {
-      file_.warn(field + ": texCoord " + std::to_string(set) + " is not drawn (TEXCOORD_0 and TEXCOORD_1 are), "
-                 "TEXCOORD_0 is used");
-      set = 0;
-    }
-    uv = t.matrix;
-    return texture(info.Get("index").GetNumberAsInt(), srgb, field);
-  };
-  m.baseColorTexture = textureInfo("diffuseTexture", true, m.baseColorUvTransform, m.baseColorTexCoord);
+  const MaterialMap diffuseMap = extensionMap(v, "diffuseTexture", true, where);
+  m.baseColorTexture = diffuseMap.texture;
+  m.baseColorUvTransform = diffuseMap.uvTransform;
+  m.baseColorTexCoord = diffuseMap.texCoord;
   const size_t decodedBefore = loaded_.textures.size();
-  const int glossMap = textureInfo("specularGlossinessTexture", false, m.metallicRoughnessUvTransform,
-                                   m.metallicRoughnessTexCoord);
+  const MaterialMap glossinessMap = extensionMap(v, "specularGlossinessTexture", false, where);
+  const int glossMap = glossinessMap.texture;
+  m.metallicRoughnessUvTransform = glossinessMap.uvTransform;
+  m.metallicRoughnessTexCoord = glossinessMap.texCoord;
   if (glossMap >= 0) {
     // Roughness 1 - glossinessFactor x alpha in the green channel, as a metallic-roughness map holds it; the
     // factor is folded in, the material's roughness factor becomes 1 and its metalness stays 0. A map decoded for
@@ -343,7 +354,8 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
       m.metallicRoughnessTexture = int(scene_.textures.size()) - 1;
     }
     m.roughness = 1.0f;
-    file_.warn(where + ".specularGlossinessTexture: its specular colour is not drawn, the specularFactor alone is");
+    // Its colour (sRGB) times the specular factor is the specular colour, as KHR_materials_specular's map.
+    m.specularColorMap = extensionMap(v, "specularGlossinessTexture", true, where);
   }
   return true;
 }

@@ -20,13 +20,16 @@ class GltfMaterials {
 
  private:
   Material convert(int index, const std::string& field);
-  // KHR_materials_ior and KHR_materials_specular's factors into `m`; their textures are warned of, not drawn.
+  // A material extension's map `key` of `extension` (a textureInfo, as the core's), none where absent; `owner`
+  // names the extension for messages.
+  MaterialMap extensionMap(const tinygltf::Value& extension, const char* key, bool srgb, const std::string& owner);
+  // KHR_materials_ior and KHR_materials_specular's factors and maps into `m`.
   void readSpecular(const tinygltf::Material& g, const std::string& name, Material& m);
-  // KHR_materials_clearcoat's factors into `m`; its textures are warned of, not drawn.
+  // KHR_materials_clearcoat's factors and maps into `m`.
   void readClearcoat(const tinygltf::Material& g, const std::string& name, Material& m);
-  // KHR_materials_sheen's factors into `m`; its textures are warned of, not drawn.
+  // KHR_materials_sheen's factors and maps into `m`.
   void readSheen(const tinygltf::Material& g, const std::string& name, Material& m);
-  // KHR_materials_transmission and KHR_materials_volume's factors into `m`; their textures are warned of, not drawn.
+  // KHR_materials_transmission and KHR_materials_volume's factors and maps into `m`.
   void readTransmission(const tinygltf::Material& g, const std::string& name, Material& m);
   // KHR_materials_pbrSpecularGlossiness into `m` by KHR_materials_specular's conversion; false without it.
   bool readSpecularGlossiness(const tinygltf::Material& g, const std::string& name, Material& m);

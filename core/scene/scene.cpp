@@ -193,11 +193,19 @@ bool hasTransmissiveMaterial(const Scene& scene) {
                      [](const SceneObject& o) { return isTransmissive(o.material); });
 }
 
+std::array<const MaterialMap*, kExtensionMapCount> extensionMaps(const Material& m) {
+  return {&m.clearcoatMap,     &m.clearcoatRoughnessMap, &m.clearcoatNormalMap, &m.sheenColorMap, &m.sheenRoughnessMap,
+          &m.specularMap,      &m.specularColorMap,      &m.transmissionMap,    &m.thicknessMap};
+}
+
 bool readsTexCoord1(const Material& m) {
+  const std::array<const MaterialMap*, kExtensionMapCount> maps = extensionMaps(m);
   return (m.baseColorTexture >= 0 && m.baseColorTexCoord == 1) ||
          (m.metallicRoughnessTexture >= 0 && m.metallicRoughnessTexCoord == 1) ||
          (m.normalTexture >= 0 && m.normalTexCoord == 1) || (m.occlusionTexture >= 0 && m.occlusionTexCoord == 1) ||
-         (m.emissiveTexture >= 0 && m.emissiveTexCoord == 1);
+         (m.emissiveTexture >= 0 && m.emissiveTexCoord == 1) ||
+         std::any_of(maps.begin(), maps.end(),
+                     [](const MaterialMap* map) { return map->texture >= 0 && map->texCoord == 1; });
 }
 
 glm::vec4 dielectricSpecular(const Material& m) {

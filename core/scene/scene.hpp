@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -41,6 +42,14 @@ enum class AlphaMode { Opaque, Mask, Blend };
 // A BLEND material casts a shadow where its alpha is at least this, and none elsewhere: a cut-out at one half, so
 // that a faint pane casts nothing and the solid part of a fading decal casts its shape.
 constexpr float kBlendShadowCutoff = 0.5f;
+
+// A map of a material extension (KHR_materials_*): its Scene::textures index (-1: none), its KHR_texture_transform
+// (identity without one) and its UV set (glTF texCoord: 0 TEXCOORD_0, 1 TEXCOORD_1).
+struct MaterialMap {
+  int texture = -1;
+  glm::mat3x2 uvTransform{1.0f};
+  int texCoord = 0;
+};
 
 // The glTF metal-rough material; Blinn-Phong parameters are derived from it at shading time. Texture fields
 // index Scene::textures (-1: none); factors multiply the texture values as in glTF.
@@ -95,6 +104,15 @@ struct Material {
   float thickness = 0.0f;
   glm::vec3 attenuationColor{1.0f};
   float attenuationDistance = std::numeric_limits<float>::infinity();
+  // The extensions' maps, each multiplying its factor as the specification says: clearcoatTexture (R) and
+  // clearcoatRoughnessTexture (G); the coat's own normal map (clearcoatNormalTexture, tangent space, its scale);
+  // sheenColorTexture (RGB, sRGB) and sheenRoughnessTexture (A); specularTexture (A) and specularColorTexture (RGB,
+  // sRGB); transmissionTexture (R); thicknessTexture (G).
+  MaterialMap clearcoatMap{}, clearcoatRoughnessMap{}, clearcoatNormalMap{};
+  float clearcoatNormalScale = 1.0f;
+  MaterialMap sheenColorMap{}, sheenRoughnessMap{};
+  MaterialMap specularMap{}, specularColorMap{};
+  MaterialMap transmissionMap{}, thicknessMap{};
 };
 
 // A transmissive material lets light through its surface (KHR_materials_transmission), so it is drawn over the
@@ -236,6 +254,9 @@ bool hasTransmissiveMaterial(const Scene& scene);
 bool hasUnlitSurface(const Scene& scene);
 // Whether a map of `material` reads the second UV set (TEXCOORD_1).
 bool readsTexCoord1(const Material& material);
+// The extensions' maps of a material, in the order of Material's fields (and of the geometry pass's texture units).
+constexpr size_t kExtensionMapCount = 9;
+std::array<const MaterialMap*, kExtensionMapCount> extensionMaps(const Material& material);
 
 class SceneError : public std::runtime_error {
  public:

@@ -15,7 +15,7 @@ layout(location = 5) in vec2 inUv1;  // TEXCOORD_1
 
 layout(location = 0) out vec3 vNormal;
 layout(location = 1) out vec2 vUv;
-#if NORMAL_MAP
+#if NORMAL_MAP || CLEARCOAT_NORMAL_MAP
 layout(location = 2) out vec4 vTangent;
 #endif
 #if UV1
@@ -34,7 +34,7 @@ void main() {
 #if VERTEX_COLORS
   vColor = inColor;
 #endif
-#if NORMAL_MAP
+#if NORMAL_MAP || CLEARCOAT_NORMAL_MAP
   // Tangents lie in the surface and move with it; a mirroring model matrix reverses the frame's handedness.
   vTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w * object.orientation.x);
 #endif

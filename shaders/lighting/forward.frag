@@ -60,7 +60,7 @@ void main() {
 #if MATERIAL_TRANSMISSION && !SHADING_MODEL_BLINN_PHONG
   // Before beginShading, which weighs the diffuse lobe by it.
   gTransmission = m.transmission;
-  gBehind = transmittedRadiance(s);
+  gBehind = transmittedRadiance(s, m.thickness);
 #endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
@@ -83,7 +83,8 @@ void main() {
   visitLights(s, begin, end);
 #if MATERIAL_TRANSMISSION && SHADING_MODEL_BLINN_PHONG
   // Blinn-Phong has no Fresnel to share light by: the transmitted share replaces that of the lit colour.
-  gColor = gColor * (1.0 - m.transmission) + (first ? m.transmission * m.base.rgb * transmittedRadiance(s) : vec3(0.0));
+  vec3 through = first ? m.transmission * m.base.rgb * transmittedRadiance(s, m.thickness) : vec3(0.0);
+  gColor = gColor * (1.0 - m.transmission) + through;
 #endif
 #endif
   // NaN compares false everywhere: keep only values known to be finite and non-negative.

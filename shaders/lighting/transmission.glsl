@@ -7,8 +7,8 @@
 // log2(width) roughness, scaled by clamp(2 ior - 2, 0, 1) as glTF-Sample-Viewer does (ior 1 does not blur).
 layout(binding = TRANSMISSION_BACKGROUND_UNIT) uniform sampler2D transmissionBackground;
 
-vec3 transmittedRadiance(Surface s) {
-  float thickness = object.transmission.y, ior = object.transmission.w;
+vec3 transmittedRadiance(Surface s, float thickness) {
+  float ior = object.transmission.w;
   vec3 path = vec3(0.0);
   if (thickness > 0.0 && ior >= 1.0) {
     // The thickness across the surface in world space: an object-space distance t along the object's normal
