@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 
 #include "core/gl/environment_maps.hpp"
 #include "core/gl/profiler.hpp"
@@ -15,11 +16,19 @@ struct IblSettings {
   int specularSamples = 256;  // GGX samples per prefiltered texel
   int dfgSize = 64;           // DFG table, dfgSize^2 texels
   int dfgSamples = 512;       // GGX samples per DFG texel
+  // KHR_materials_sheen's Charlie-prefiltered cube map, made only for scenes whose materials have a sheen: its
+  // faces at level 0 (the lobe is broad, a small map holds it), its levels (sheen roughness k / (levels - 1)),
+  // its samples per texel.
+  bool sheen = false;
+  int sheenFaceSize = 32;
+  int sheenLevels = 6;
+  int sheenSamples = 4096;
 };
 
 // Everything the lighting pass needs for image-based lighting of one environment, precomputed on the GPU once:
-// diffuse as 9 spherical-harmonic coefficients (a uniform block), specular as a GGX-prefiltered cube map, and
-// the split-sum DFG table. Shaders sample them through shaders/ibl/ibl_sample.glsl.
+// diffuse as 9 spherical-harmonic coefficients (a uniform block), specular as a GGX-prefiltered cube map, the
+// split-sum DFG table, and for scenes with a sheen the Charlie-prefiltered cube map. Shaders sample them through
+// shaders/ibl/ibl_sample.glsl.
 class IblMaps {
  public:
   // With a profiler, the precomputation is one profiler frame of its own, passes "ibl environment",
@@ -38,6 +47,7 @@ class IblMaps {
   const Buffer& irradiance() const { return irradiance_; }  // one IblBlock
   const Cubemap& specular() const { return specular_; }
   const Texture& dfg() const { return dfg_; }
+  const Cubemap* sheen() const { return sheen_ ? &*sheen_ : nullptr; }
 
  private:
   struct Maps;
@@ -49,6 +59,7 @@ class IblMaps {
   Buffer irradiance_;
   Cubemap specular_;
   Texture dfg_;
+  std::optional<Cubemap> sheen_;
   Sampler specularSampler_;
   Sampler dfgSampler_;
 };

@@ -16,7 +16,7 @@ ShaderDefines lightingBindingDefines() {
        kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo,
        kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kSpecularUnit, kClearcoatUnit, kSheenUnit,
        kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo,
-       kIblSpecularUnit, kIblDfgUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo,
+       kIblSpecularUnit, kIblDfgUnit, kIblSheenUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo,
        kShadowLightImage, kShadowDepthUnit, kShadowOwnerUnit, kOitAccumulationUnit, kOitRevealageUnit, kLayerNodeSsbo});
   return defines;
 }
@@ -26,6 +26,7 @@ ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
   std::vector<BindingPoint> points = {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo,
                                       kSpotWindowUbo, kLightSsbo, kClusterSsbo, kLightIndexSsbo, kSpotConeSsbo,
                                       kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo, kIblSpecularUnit, kIblDfgUnit,
+                                      kIblSheenUnit,
                                       kShadowAtlasUnit, kTransmissionBackgroundUnit,
                                       kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo, kLayerNodeSsbo};
   points.insert(points.end(), geometry.begin(), geometry.end());

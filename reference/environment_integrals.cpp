@@ -51,4 +51,20 @@ std::vector<glm::dvec3> fibonacciSphere(int n) {
   return points;
 }
 
+glm::dvec3 bruteForceSheen(const CubeTexels& texels, const glm::dvec3& n, double sheenRoughness) {
+  glm::dvec3 sum(0.0);
+  double weight = 0.0;
+  for (size_t i = 0; i < texels.direction.size(); ++i) {
+    const glm::dvec3& l = texels.direction[i];
+    const double NoL = glm::dot(n, l);
+    if (NoL <= 0.0) continue;
+    const double NoH = glm::dot(n, glm::normalize(n + l));
+    const double w = sheenDistribution(NoH, sheenRoughness) * sheenVisibility(1.0, NoL, sheenRoughness) * NoL *
+                     texels.solidAngle[i];
+    sum += texels.radiance[i] * w;
+    weight += w;
+  }
+  return weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+}
+
 }  // namespace pbr::reference

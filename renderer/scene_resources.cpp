@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/gl/gl.hpp"
+#include "lighting/lighting_options.hpp"
 
 namespace pbr {
 
@@ -25,7 +26,9 @@ std::unique_ptr<IblMaps> makeIbl(const ShaderLibrary& shaders, const Scene& scen
                                " pixels a side (GL_MAX_TEXTURE_SIZE)");
     }
   }
-  return std::make_unique<IblMaps>(shaders, environment, IblSettings{}, profiler);
+  IblSettings settings;
+  settings.sheen = usedLobes(scene).sheen;  // the sheen's cube map only for scenes with a sheen
+  return std::make_unique<IblMaps>(shaders, environment, settings, profiler);
 }
 
 }  // namespace

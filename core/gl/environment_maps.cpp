@@ -8,6 +8,10 @@ void bindEnvironmentMaps(const EnvironmentMaps& maps) {
   glBindSampler(kIblSpecularUnit.index, maps.specularSampler);
   glBindTextureUnit(kIblDfgUnit.index, maps.dfgTable);
   glBindSampler(kIblDfgUnit.index, maps.dfgSampler);
+  if (maps.sheenCube) {
+    glBindTextureUnit(kIblSheenUnit.index, maps.sheenCube);
+    glBindSampler(kIblSheenUnit.index, maps.specularSampler);
+  }
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 

@@ -12,6 +12,7 @@ struct EnvironmentMaps {
   GLuint irradianceBlock = 0;  // uniform buffer holding one IblBlock
   GLuint specularCube = 0, specularSampler = 0;
   GLuint dfgTable = 0, dfgSampler = 0;
+  GLuint sheenCube = 0;  // KHR_materials_sheen's Charlie-prefiltered cube (the specular sampler's filtering); 0: none
 };
 
 // Binds the maps where ibl_sample.glsl reads them (core/scene/environment_bindings.hpp), and turns on seamless

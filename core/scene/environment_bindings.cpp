@@ -2,6 +2,8 @@
 
 namespace pbr {
 
-ShaderDefines environmentBindingDefines() { return bindingDefines({kIblUbo, kIblSpecularUnit, kIblDfgUnit}); }
+ShaderDefines environmentBindingDefines() {
+  return bindingDefines({kIblUbo, kIblSpecularUnit, kIblDfgUnit, kIblSheenUnit});
+}
 
 }  // namespace pbr

@@ -9,7 +9,9 @@ namespace pbr {
 constexpr BindingPoint kIblUbo{"IBL_UBO", BindingKind::UniformBuffer, 5};
 constexpr BindingPoint kIblSpecularUnit{"IBL_SPECULAR_UNIT", BindingKind::TextureUnit, 8};
 constexpr BindingPoint kIblDfgUnit{"IBL_DFG_UNIT", BindingKind::TextureUnit, 9};
-// The defines of the three, for programs that sample the maps.
+// KHR_materials_sheen's prefiltered cube, past the material extensions' map units (17-25) the forward pass binds.
+constexpr BindingPoint kIblSheenUnit{"IBL_SHEEN_UNIT", BindingKind::TextureUnit, 26};
+// The defines of the four, for programs that sample the maps.
 ShaderDefines environmentBindingDefines();
 
 }  // namespace pbr

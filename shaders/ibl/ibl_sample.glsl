@@ -33,6 +33,16 @@ vec3 iblSpecular(vec3 R, float roughness) {
   return textureLod(iblSpecularMap, R, lod).rgb;
 }
 
+#if MATERIAL_SHEEN
+// KHR_materials_sheen: the environment prefiltered by the Charlie lobe (ibl/sheen_prefilter.hpp), level k at sheen
+// roughness k / (levels - 1), between the two levels that bracket it; the sheen table's E scales it.
+layout(binding = IBL_SHEEN_UNIT) uniform samplerCube iblSheenMap;
+vec3 iblSheen(vec3 N, float sheenRoughness) {
+  float lod = saturate(sheenRoughness) * float(textureQueryLevels(iblSheenMap) - 1);
+  return textureLod(iblSheenMap, N, lod).rgb;
+}
+#endif
+
 // (A, B) with F0 A + B the directional albedo of the specular lobe (Karis 2013, "Real Shading in Unreal
 // Engine 4"); texel centres lie on the ends of both ranges (ibl/dfg.comp).
 vec2 iblDfg(float NoV, float roughness) {

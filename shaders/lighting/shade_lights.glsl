@@ -126,8 +126,10 @@ vec3 shadeEnvironment(Surface s) {
 #if IBL && (MATERIAL_CLEARCOAT || MATERIAL_SHEEN)
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0);
 #if MATERIAL_SHEEN
-  // The sheen lobe is broad: it reflects about the mean radiance the irradiance averages (iblDiffuse), E of it.
-  if (s.sheenColor != vec3(0.0)) color = gSheenScale * color + s.sheenColor * gSheenE * iblDiffuse(s.normal);
+  // The sheen lobe reflects E of the environment prefiltered by its Charlie lobe about the normal (N = V).
+  if (s.sheenColor != vec3(0.0)) {
+    color = gSheenScale * color + s.sheenColor * gSheenE * iblSheen(s.normal, s.sheenRoughness);
+  }
 #endif
 #if MATERIAL_CLEARCOAT
   // The coat reflects the environment along its own normal, with its lobe's albedo at F 1.
