@@ -13,8 +13,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "ggx_sampling.glsl"
 #include "../lighting/sheen.glsl"
 
-// Mirrors the SheenPrefilterBlock of ibl/sheen_prefilter.cpp; the precomputation runs alone, hence binding 0.
-layout(std140, binding = 0) uniform SheenPrefilterBlock {
+// Mirrors the PrefilterPassBlock of ibl/prefilter_levels.cpp; the precomputation runs alone, hence binding 0.
+layout(std140, binding = 0) uniform PrefilterPassBlock {
   ivec4 sizes;   // x: face size of this level, y: samples per texel, z: face size of the environment's level 0
   vec4 params;   // x: sheen roughness of this level
 } pass;

@@ -9,7 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "cube_map.glsl"
 #include "ggx_sampling.glsl"
 
-// Mirrors the PrefilterPassBlock of ibl/specular_prefilter.cpp; the precomputation runs alone, hence binding 0.
+// Mirrors the PrefilterPassBlock of ibl/prefilter_levels.cpp; the precomputation runs alone, hence binding 0.
 layout(std140, binding = 0) uniform PrefilterPassBlock {
   ivec4 sizes;   // x: face size of this level, y: samples per texel, z: face size of the environment's level 0
   vec4 params;   // x: perceptual roughness of this level
