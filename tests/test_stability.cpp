@@ -94,6 +94,25 @@ TEST_CASE("stability: roughness 0 and 1") {
   checkStable(withMaterials([](Material& m) { m.roughness = 1.0f; }));
 }
 
+TEST_CASE("stability: transmission through thin walls and volumes, at the extremes of its factors") {
+  PBR_REQUIRE_GL();
+  // Both objects transmissive (the floor seen through the sphere and the sphere through the floor): smooth and
+  // rough, ior 1 (no refraction) and 0 (F0 1), a black attenuation colour over no distance and a huge thickness,
+  // transmission 1 over a black base colour, and a metal.
+  const std::function<void(Material&)> cases[] = {
+      [](Material& m) { m.transmission = 1.0f, m.roughness = 0.0f; },
+      [](Material& m) { m.transmission = 1.0f, m.roughness = 1.0f, m.ior = 1.0f; },
+      [](Material& m) { m.transmission = 1.0f, m.ior = 0.0f, m.thickness = 1.0f; },
+      [](Material& m) {
+        m.transmission = 1.0f, m.thickness = 1e6f, m.attenuationColor = glm::vec3(0.0f);
+        m.attenuationDistance = 1e-6f;
+      },
+      [](Material& m) { m.transmission = 1.0f, m.thickness = 0.0f, m.attenuationColor = glm::vec3(0.0f); },
+      [](Material& m) { m.transmission = 1.0f, m.baseColor = glm::vec3(0.0f), m.metalness = 1.0f; },
+  };
+  for (const auto& change : cases) checkStable(withMaterials(change));
+}
+
 TEST_CASE("stability: base colour 0 and 1, dielectric and metal") {
   PBR_REQUIRE_GL();
   for (float metalness : {0.0f, 1.0f}) {

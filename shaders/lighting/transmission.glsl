@@ -23,7 +23,8 @@ vec3 transmittedRadiance(Surface s, float thickness) {
   float lod = log2(max(frame.viewport.x, frame.viewport.y)) * s.roughness * clamp(2.0 * ior - 2.0, 0.0, 1.0);
   vec3 behind = textureLod(transmissionBackground, uv, lod).rgb;
   float attenuationDistance = object.transmission.z;  // 0: no absorption
-  if (attenuationDistance > 0.0) {
+  // A thin wall absorbs nothing (and pow(0, 0) is undefined): only a volume's path does.
+  if (attenuationDistance > 0.0 && thickness > 0.0) {
     behind *= pow(object.attenuationColor.rgb, vec3(length(path) / attenuationDistance));
   }
   return behind;
