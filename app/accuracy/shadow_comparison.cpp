@@ -5,14 +5,20 @@
 
 namespace pbr {
 
+namespace {
+
+reference::ReferenceOptions withShadowRays(reference::ReferenceOptions options) {
+  options.shadows = ShadowMode::Auto;
+  return options;
+}
+
+}  // namespace
+
 ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
                                    const reference::ReferenceOptions& referenceOptions, TimingMode timing,
                                    ToneCurve curve)
-    : shaders_(shaders), scene_(scene), size_(size), curve_(curve), timing_(timing) {
-  reference::ReferenceOptions options = referenceOptions;
-  options.shadows = ShadowMode::Auto;
-  reference_ = reference::renderReference(scene, size.x, size.y, options);
-  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure(), curve);
+    : frame_(shaders, scene, size, withShadowRays(referenceOptions), timing, curve) {
+  const reference::ReferenceOptions options = withShadowRays(referenceOptions);
   Scene dark = scene;
   dark.ambient = glm::vec3(0.0f);
   dark.lights.clear();
@@ -41,14 +47,13 @@ ShadowComparison::ShadowComparison(const ShaderLibrary& shaders, const Scene& sc
 ShadowRowResult ShadowComparison::measure(const ShadowRow& row) const {
   const RendererConfig config = exactVariantConfig();
   ShadowRowResult r;
-  FrameOptions options = shadowRowOptions(row, scene_);
-  options.toneCurve = curve_;
-  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, options, 3, config, timing_);
-  r.error = measureError(f.hdr, f.ldr, reference_, referenceLdr_);
-  r.relativeError = relativeErrorPerPixel(f.hdr, reference_);
+  ReferenceComparison::Result whole = frame_.compare(shadowRowOptions(row, frame_.scene()));
+  r.error = whole.error;
+  r.relativeError = std::move(whole.relativeError);
   for (const LightAlone& l : lights_) {
-    const ImageRgbaF shadowed =
-        renderOffscreen(shaders_, l.scene, size_, shadowRowOptions(row, l.scene), 2, config, timing_).hdr;
+    const ImageRgbaF shadowed = renderOffscreen(frame_.shaders(), l.scene, frame_.size(),
+                                                shadowRowOptions(row, l.scene), 2, config, frame_.timing())
+                                    .hdr;
     r.agreement += compareShadowState(visibilityRatio(shadowed, l.unshadowed), l.reference, kShadowBandPx);
   }
   return r;

@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/accuracy/reference_comparison.hpp"
 #include "app/accuracy/shadow_rows.hpp"
 #include "core/gl/shader_library.hpp"
 #include "core/io/frame_timing.hpp"
@@ -28,13 +29,7 @@ class ShadowComparison {
     reference::ReferenceFrame reference;
     ImageRgbaF unshadowed;
   };
-  const ShaderLibrary& shaders_;
-  Scene scene_;
-  glm::ivec2 size_;
-  ToneCurve curve_;  // of the display images the error in 8-bit levels is measured on
-  TimingMode timing_;
-  reference::ReferenceFrame reference_;
-  ImageRgba8 referenceLdr_;
+  ReferenceComparison frame_;  // the whole scene, shadowed, against its reference with shadow rays
   std::vector<LightAlone> lights_;
 };
 

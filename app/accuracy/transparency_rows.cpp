@@ -31,21 +31,23 @@ FrameOptions transparencyRowOptions(const TransparencyRow& row, const Scene& sce
   return options;
 }
 
+namespace {
+
+reference::ReferenceOptions withoutShadows(reference::ReferenceOptions options) {
+  options.shadows = ShadowMode::None;
+  return options;
+}
+
+}  // namespace
+
 TransparencyComparison::TransparencyComparison(const ShaderLibrary& shaders, const Scene& scene, glm::ivec2 size,
                                                const reference::ReferenceOptions& referenceOptions,
                                                TimingMode timing, ToneCurve curve)
-    : shaders_(shaders), scene_(scene), size_(size), curve_(curve), timing_(timing) {
-  reference::ReferenceOptions options = referenceOptions;
-  options.shadows = ShadowMode::None;
-  reference_ = reference::renderReference(scene, size.x, size.y, options);
-  referenceLdr_ = displayImage(shaders, reference_.radiance, scene.displayExposure(), curve);
-}
+    : frame_(shaders, scene, size, withoutShadows(referenceOptions), timing, curve) {}
 
 TransparencyRowResult TransparencyComparison::measure(const TransparencyRow& row) const {
-  FrameOptions options = transparencyRowOptions(row, scene_);
-  options.toneCurve = curve_;
-  const RenderedFrames f = renderOffscreen(shaders_, scene_, size_, options, 3, exactVariantConfig(), timing_);
-  return {measureError(f.hdr, f.ldr, reference_, referenceLdr_), relativeErrorPerPixel(f.hdr, reference_)};
+  ReferenceComparison::Result r = frame_.compare(transparencyRowOptions(row, frame_.scene()));
+  return {r.error, std::move(r.relativeError)};
 }
 
 std::vector<TransparencyCost> measureTransparencyCost(const ShaderLibrary& shaders, const Scene& scene,

@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/accuracy/accuracy_metrics.hpp"
+#include "app/accuracy/reference_comparison.hpp"
 #include "app/bench/bench_sweep.hpp"
 #include "core/scene/transparency.hpp"
 #include "renderer/renderer.hpp"
@@ -42,13 +43,7 @@ class TransparencyComparison {
   TransparencyRowResult measure(const TransparencyRow& row) const;
 
  private:
-  const ShaderLibrary& shaders_;
-  Scene scene_;
-  glm::ivec2 size_;
-  ToneCurve curve_;  // of the display images the error in 8-bit levels is measured on
-  TimingMode timing_;
-  reference::ReferenceFrame reference_;
-  ImageRgba8 referenceLdr_;
+  ReferenceComparison frame_;  // against the reference without shadows
 };
 
 // What an ordering costs, in ms.
