@@ -32,8 +32,8 @@ GBufferLayout materialExtensions(const Scene& scene, bool blended) {
     const Material& m = o.material;
     if (isForwardShaded(m) != blended) continue;
     used.specular = used.specular || hasDielectricSpecular(m);
-    used.clearcoat = used.clearcoat || m.clearcoat > 0.0f;
-    used.sheen = used.sheen || m.sheenColor != glm::vec3(0.0f);
+    used.clearcoat = used.clearcoat || hasClearcoat(m);
+    used.sheen = used.sheen || hasSheen(m);
   }
   return used;
 }

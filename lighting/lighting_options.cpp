@@ -55,8 +55,8 @@ MaterialLobes usedLobes(const Scene& scene) {
   for (const SceneObject& o : scene.objects) {
     const Material& m = o.material;
     used.specular = used.specular || hasDielectricSpecular(m);
-    used.clearcoat = used.clearcoat || m.clearcoat > 0.0f;
-    used.sheen = used.sheen || m.sheenColor != glm::vec3(0.0f);
+    used.clearcoat = used.clearcoat || hasClearcoat(m);
+    used.sheen = used.sheen || hasSheen(m);
     used.transmission = used.transmission || isTransmissive(m);
   }
   return used;

@@ -138,15 +138,21 @@ double visibilityForm(double NoV, double NoL, double a, const BrdfForms& forms) 
   return smithVisibilityExact(NoV, NoL, a);
 }
 
-// What the layers over the base leave of it at n.v: KHR_materials_sheen's albedo scaling, 1 - max(sheenColor)
-// E(n.v), and KHR_materials_clearcoat's 1 - clearcoat Fc(n.v).
+// KHR_materials_sheen's albedo scaling of the base, 1 - max(sheenColor) E(n.v) (1 without a sheen).
+double sheenScaling(double NoV, const ReferenceMaterial& m) {
+  if (m.sheenColor == dvec3(0.0)) return 1.0;
+  return 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) * sheenAlbedo(NoV, m.sheenRoughness);
+}
+
+// KHR_materials_clearcoat's fresnel_coat weight, clearcoat Fc(n.v) with Schlick's term at F0 0.04, the
+// specification's implementation (0 without a coat).
+double coatWeight(double NoV, const ReferenceMaterial& m) {
+  return m.clearcoat > 0.0 ? m.clearcoat * fresnelSchlick(NoV, 0.04) : 0.0;
+}
+
+// What the layers over the base leave of it at n.v: the sheen's scaling and the coat's 1 - Fc.
 double baseLayerWeight(double NoV, const ReferenceMaterial& m) {
-  double weight = 1.0;
-  if (m.sheenColor != dvec3(0.0)) {
-    weight *= 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) * sheenAlbedo(NoV, m.sheenRoughness);
-  }
-  if (m.clearcoat > 0.0) weight *= 1.0 - m.clearcoat * fresnelSchlick(NoV, 0.04);
-  return weight;
+  return sheenScaling(NoV, m) * (1.0 - coatWeight(NoV, m));
 }
 
 }  // namespace
@@ -186,17 +192,16 @@ BrdfLobes evaluateBrdf(const dvec3& N, const dvec3& V, const dvec3& L, const Ref
   dvec3 diffuse = diffuseWeight() * (1.0 - m.metalness) * (1.0 - m.transmission) * m.baseColor / kPi;
   dvec3 sheen(0.0);
   if (m.sheenColor != dvec3(0.0)) {
-    const double scaling = 1.0 - std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) *
-                                     sheenAlbedo(NoV, m.sheenRoughness);
+    const double scaling = sheenScaling(NoV, m);
     diffuse *= scaling;
     specular *= scaling;
     sheen = m.sheenColor * sheenDistribution(NoH, m.sheenRoughness) * sheenVisibility(NoV, NoL, m.sheenRoughness);
   }
   if (m.clearcoat <= 0.0) return {diffuse, specular, 0.0, sheen};
-  // KHR_materials_clearcoat: fresnel_coat(ior 1.5) with Schlick's term at the coat's n.v, the specification's
-  // implementation; the coat's lobe is the specular BRDF of its roughness without a Fresnel term.
+  // KHR_materials_clearcoat: fresnel_coat over everything else; the coat's lobe is the specular BRDF of its
+  // roughness without a Fresnel term.
   const double coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
-  const double weight = m.clearcoat * fresnelSchlick(NoV, 0.04);
+  const double weight = coatWeight(NoV, m);
   return {(1.0 - weight) * diffuse, (1.0 - weight) * specular, weight * ggxD(NoH, coatAlpha) * visibility(coatAlpha),
           (1.0 - weight) * sheen};
 }

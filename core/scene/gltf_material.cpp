@@ -21,6 +21,12 @@ float finite(const GltfFile& file, double v, const std::string& field) {
   return static_cast<float>(v);
 }
 
+// An extension's number at `where`, which JSON may give as anything.
+float number(const GltfFile& file, const tinygltf::Value& v, const std::string& where) {
+  if (!v.IsNumber()) file.fail(where + ": must be a number");
+  return finite(file, v.GetNumberAsDouble(), where);
+}
+
 // glTF factors in [0,1]; exporters print values a rounding error outside, which are clamped.
 float unitFactor(const GltfFile& file, double v, const std::string& field) {
   return std::clamp(finite(file, v, field), 0.0f, 1.0f);
@@ -177,13 +183,9 @@ Material GltfMaterials::convert(int index, const std::string& field) {
 }
 
 void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string& name, Material& m) {
-  const auto number = [&](const tinygltf::Value& v, const std::string& where) {
-    if (!v.IsNumber()) file_.fail(where + ": must be a number");
-    return finite(file_, v.GetNumberAsDouble(), where);
-  };
   if (const auto ior = g.extensions.find("KHR_materials_ior"); ior != g.extensions.end() && ior->second.Has("ior")) {
     const std::string where = name + ".extensions.KHR_materials_ior.ior";
-    m.ior = number(ior->second.Get("ior"), where);
+    m.ior = number(file_, ior->second.Get("ior"), where);
     if (m.ior != 0.0f && !(m.ior >= 1.0f)) file_.fail(where + ": must be 0 or at least 1");
   }
   const auto specular = g.extensions.find("KHR_materials_specular");
@@ -191,14 +193,14 @@ void GltfMaterials::readSpecular(const tinygltf::Material& g, const std::string&
   const tinygltf::Value& s = specular->second;
   const std::string where = name + ".extensions.KHR_materials_specular";
   if (s.Has("specularFactor")) {
-    m.specular = std::clamp(number(s.Get("specularFactor"), where + ".specularFactor"), 0.0f, 1.0f);
+    m.specular = std::clamp(number(file_, s.Get("specularFactor"), where + ".specularFactor"), 0.0f, 1.0f);
   }
   if (s.Has("specularColorFactor")) {
     const tinygltf::Value& c = s.Get("specularColorFactor");
     if (!c.IsArray() || c.ArrayLen() != 3) file_.fail(where + ".specularColorFactor: must have 3 components");
     for (int i = 0; i < 3; ++i) {
       // Not a unit factor: the colour may exceed 1, the product with F0 being clamped (dielectricSpecular).
-      m.specularColor[i] = number(c.Get(i), where + ".specularColorFactor");
+      m.specularColor[i] = number(file_, c.Get(i), where + ".specularColorFactor");
       if (m.specularColor[i] < 0.0f) file_.fail(where + ".specularColorFactor: must not be negative");
     }
   }
@@ -251,15 +253,11 @@ void GltfMaterials::readSheen(const tinygltf::Material& g, const std::string& na
 }
 
 void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::string& name, Material& m) {
-  const auto number = [&](const tinygltf::Value& v, const std::string& where) {
-    if (!v.IsNumber()) file_.fail(where + ": must be a number");
-    return finite(file_, v.GetNumberAsDouble(), where);
-  };
   if (const auto found = g.extensions.find("KHR_materials_transmission"); found != g.extensions.end()) {
     const tinygltf::Value& v = found->second;
     const std::string where = name + ".extensions.KHR_materials_transmission";
     if (v.Has("transmissionFactor")) {
-      m.transmission = unitFactor(file_, number(v.Get("transmissionFactor"), where + ".transmissionFactor"),
+      m.transmission = unitFactor(file_, number(file_, v.Get("transmissionFactor"), where + ".transmissionFactor"),
                                   where + ".transmissionFactor");
     }
     m.transmissionMap = extensionMap(v, "transmissionTexture", false, where);
@@ -269,18 +267,18 @@ void GltfMaterials::readTransmission(const tinygltf::Material& g, const std::str
   const tinygltf::Value& v = found->second;
   const std::string where = name + ".extensions.KHR_materials_volume";
   if (v.Has("thicknessFactor")) {
-    m.thickness = number(v.Get("thicknessFactor"), where + ".thicknessFactor");
+    m.thickness = number(file_, v.Get("thicknessFactor"), where + ".thicknessFactor");
     if (!(m.thickness >= 0.0f)) file_.fail(where + ".thicknessFactor: must be >= 0");
   }
   if (v.Has("attenuationDistance")) {
-    m.attenuationDistance = number(v.Get("attenuationDistance"), where + ".attenuationDistance");
+    m.attenuationDistance = number(file_, v.Get("attenuationDistance"), where + ".attenuationDistance");
     if (!(m.attenuationDistance > 0.0f)) file_.fail(where + ".attenuationDistance: must be > 0");
   }
   if (v.Has("attenuationColor")) {
     const tinygltf::Value& c = v.Get("attenuationColor");
     if (!c.IsArray() || c.ArrayLen() != 3) file_.fail(where + ".attenuationColor: must have 3 components");
     for (int i = 0; i < 3; ++i) {
-      m.attenuationColor[i] = unitFactor(file_, number(c.Get(i), where + ".attenuationColor"),
+      m.attenuationColor[i] = unitFactor(file_, number(file_, c.Get(i), where + ".attenuationColor"),
                                          where + ".attenuationColor");
     }
   }
@@ -296,9 +294,8 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
   if (found == g.extensions.end()) return false;
   const tinygltf::Value& v = found->second;
   const std::string where = name + ".extensions.KHR_materials_pbrSpecularGlossiness";
-  const auto number = [&](const tinygltf::Value& x, const std::string& field) {
-    if (!x.IsNumber()) file_.fail(field + ": must be a number");
-    return unitFactor(file_, x.GetNumberAsDouble(), field);
+  const auto unit = [&](const tinygltf::Value& x, const std::string& field) {
+    return unitFactor(file_, number(file_, x, field), field);
   };
   const auto factors = [&](const char* key, std::vector<double> fallback) {
     if (!v.Has(key)) return fallback;
@@ -306,12 +303,12 @@ bool GltfMaterials::readSpecularGlossiness(const tinygltf::Material& g, const st
     if (!a.IsArray() || a.ArrayLen() != fallback.size()) {
       file_.fail(where + "." + key + ": must have " + std::to_string(fallback.size()) + " components");
     }
-    for (size_t i = 0; i < fallback.size(); ++i) fallback[i] = number(a.Get(int(i)), where + "." + key);
+    for (size_t i = 0; i < fallback.size(); ++i) fallback[i] = unit(a.Get(int(i)), where + "." + key);
     return fallback;
   };
   const std::vector<double> diffuse = factors("diffuseFactor", {1.0, 1.0, 1.0, 1.0});
   const std::vector<double> specular = factors("specularFactor", {1.0, 1.0, 1.0});
-  const float glossiness = v.Has("glossinessFactor") ? number(v.Get("glossinessFactor"), where + ".glossinessFactor")
+  const float glossiness = v.Has("glossinessFactor") ? unit(v.Get("glossinessFactor"), where + ".glossinessFactor")
                                                      : 1.0f;
   m.baseColor = glm::vec3(float(diffuse[0]), float(diffuse[1]), float(diffuse[2]));
   m.alpha = float(diffuse[3]);

@@ -217,6 +217,10 @@ glm::vec4 dielectricSpecular(const Material& m) {
   return glm::vec4(glm::vec3(color), m.specular);
 }
 
+bool hasClearcoat(const Material& m) { return m.clearcoat > 0.0f; }
+
+bool hasSheen(const Material& m) { return m.sheenColor != glm::vec3(0.0f); }
+
 bool isTransmissive(const Material& m) { return m.transmission > 0.0f && !m.unlit; }
 
 bool isForwardShaded(const Material& m) { return m.alphaMode == AlphaMode::Blend || isTransmissive(m); }

@@ -133,6 +133,10 @@ bool isForwardShaded(const Material& material);
 glm::vec4 dielectricSpecular(const Material& material);
 // Whether a material's dielectric reflects other than the core material's F0 0.04 and F90 1.
 bool hasDielectricSpecular(const Material& material);
+// Whether a material has a clear coat (KHR_materials_clearcoat, a strength above 0) and a sheen (KHR_materials_sheen,
+// a colour other than black): the G-buffer's channels and the lighting permutations are made for those alone.
+bool hasClearcoat(const Material& material);
+bool hasSheen(const Material& material);
 
 // Analytic shapes keep their identity so that reference renderers can ray-cast them exactly.
 enum class Shape { Plane, Sphere, Box, Mesh };

@@ -60,7 +60,6 @@ void main() {
 #if MATERIAL_TRANSMISSION && !SHADING_MODEL_BLINN_PHONG
   // Before beginShading, which weighs the diffuse lobe by it.
   gTransmission = m.transmission;
-  gBehind = transmittedRadiance(s, m.thickness);
 #endif
   beginShading(s);
   uint count = lightsToVisit(s, uvec2(gl_FragCoord.xy));
@@ -70,6 +69,10 @@ void main() {
 #else
   bool first = true;
   uint begin = 0u, end = count;
+#endif
+#if MATERIAL_TRANSMISSION && !SHADING_MODEL_BLINN_PHONG
+  // What lies behind reaches the surface through the environment's term, which the first chunk alone adds.
+  if (first) gBehind = transmittedRadiance(s, m.thickness);
 #endif
 #if UNLIT
   // KHR_materials_unlit: the base colour is the radiance, with no light added.
