@@ -7,7 +7,14 @@ ShadowSettings readShadowSettings(const Args& args) {
   s.mode = parseShadowMode(args.get("--shadows"));
   s.filter = parseShadowFilter(args.get("--shadow-filter"));
   s.atlasSize = readShadowAtlas(args);
+  s.cache = readShadowCache(args);
   return s;
+}
+
+bool readShadowCache(const Args& args) {
+  const std::string value = args.get("--shadow-cache");
+  if (value != "on" && value != "off") throw UsageError("--shadow-cache " + value + ": expected on or off");
+  return value == "on";
 }
 
 int readShadowAtlas(const Args& args) {

@@ -14,6 +14,7 @@ namespace pbr {
 // --shadows, --shadow-filter and --shadow-atlas as settings.
 ShadowSettings readShadowSettings(const Args& args);
 int readShadowAtlas(const Args& args);  // a power of two, checked
+bool readShadowCache(const Args& args);  // "on" or "off"
 Transparency readTransparency(const Args& args);  // --transparency
 ToneCurve readToneCurve(const Args& args);        // --tonemap
 

@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kFrameSettings[] = {
     "--model",      "--variant",        "--visibility",    "--hdr-format",   "--gbuffer",      "--culling",
     "--tile",       "--slices",         "--assign-shape",  "--aa",           "--shadows",      "--shadow-filter",
-    "--shadow-atlas", "--shadow-draws", "--debug",         "--tonemap",      "--transparency"};
+    "--shadow-atlas", "--shadow-draws", "--shadow-cache",  "--debug",        "--tonemap",      "--transparency"};
 
 // The record as a command line of its frame settings, each a valued option, so that Args checks their numbers.
 Args recordArgs(const RenderSettings& record) {
@@ -79,6 +79,7 @@ FrameSettings frameSettings(const RenderSettings& record, FrameSettings settings
   if (args.has("--shadow-filter")) frame.shadows.filter = parseShadowFilter(args.get("--shadow-filter"));
   if (args.has("--shadow-atlas")) frame.shadows.atlasSize = readShadowAtlas(args);
   if (args.has("--shadow-draws")) frame.shadows.draws = parseShadowDraws(args.get("--shadow-draws"));
+  if (args.has("--shadow-cache")) frame.shadows.cache = readShadowCache(args);
   if (args.has("--debug")) {
     frame.debug = parseDebugChannel(args.get("--debug"));
     // The cluster views show the grid that only clustered culling builds; efficiency is measured either way.

@@ -121,6 +121,10 @@ std::vector<OptionSpec> makeTable() {
        "run of a light's views with each view's viewport chosen in the vertex shader (fewer draws to record; needs "
        "GL_ARB_shader_viewport_layer_array), or per-light on a GPU that has it and per-view on a CPU rasterizer",
        toString(shadows.draws), ""},
+      {"--shadow-cache", "on|off",
+       "keep the last frame's shadow maps while nothing they depend on changes (camera, frame size, lights, poses, "
+       "cluster grid, atlas): a still scene draws its maps once; off draws them every frame, as a moving scene must",
+       shadows.cache ? "on" : "off", ""},
       {"--transparency", "T",
        "how BLEND materials composite: sorted (back to front by their bounds, Porter-Duff over), oit (weighted "
        "blended order-independent transparency, one pass in any order; 18 bytes per pixel) or exact (every "
@@ -288,7 +292,7 @@ std::vector<Use> commandUses(Command command) {
     case Command::Render:
       uses = {"--scene", "--model", "--visibility", "--variant", "--hdr-format", "--gbuffer", "--lights",
               "--view-angle", "--spot-share", "--culling", "--shadows", "--shadow-filter", "--transparency",
-              "--tonemap", "--shadow-atlas", "--shadow-draws", "--tile", "--slices", "--assign-shape", "--aa",
+              "--tonemap", "--shadow-atlas", "--shadow-draws", "--shadow-cache", "--tile", "--slices", "--assign-shape", "--aa",
               "--debug", "--stats", "--size", "--exposure", "--ev100", "--camera", "--environment",
               "--environment-intensity", "--out", "--hdr", "--warmup", "--frames", "--capture-frame", "--json",
               "--settings", "--timing", "--egl-platform"};
@@ -301,7 +305,8 @@ std::vector<Use> commandUses(Command command) {
               Use::swept("--model", listText(sweep.models, [](ShadingModel m) { return toString(m); })),
               Use("--size", sizeText(sweep.size)), Use("--warmup", std::to_string(sweep.warmup)),
               Use("--frames", std::to_string(sweep.frames)), "--max-seconds", "--constant-density", "--spot-share",
-              "--shadows", "--tonemap", "--shadow-filter", "--shadow-atlas", "--pair-cost", "--pair-materials",
+              "--shadows", "--tonemap", "--shadow-filter", "--shadow-atlas",
+              Use("--shadow-cache", sweep.shadows.cache ? "on" : "off"), "--pair-cost", "--pair-materials",
               "--pair-lights",
               "--rounds", "--csv", "--json", "--trace", "--shard",
               "--timing", "--egl-platform"};
@@ -316,7 +321,7 @@ std::vector<Use> commandUses(Command command) {
       const ViewerOptions viewer;
       uses = {Use("--scene", viewer.sceneName), "--lights", "--view-angle", "--spot-share",
               Use("--model", toString(viewer.frame.model)), "--culling", "--shadows", "--shadow-filter",
-              "--transparency", "--tonemap", "--shadow-atlas", "--aa", "--exposure", "--ev100", "--camera",
+              "--transparency", "--tonemap", "--shadow-atlas", "--shadow-cache", "--aa", "--exposure", "--ev100", "--camera",
               "--environment", "--environment-intensity", Use("--size", sizeText(viewer.size)), "--paused",
               "--quit-after", "--screenshot", "--screenshot-ui", "--no-ui", "--env-dir", "--timing"};
       break;

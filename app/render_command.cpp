@@ -92,9 +92,14 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                 "(%.0f MiB, %.1f %% used)\n",
                 h.shadowedLights, h.viewsRendered, h.viewsSkipped, atlas, atlas,
                 double(shadowAtlasBytes(atlas)) / (1 << 20), 100.0 * double(h.texelsUsed) / (double(atlas) * atlas));
-    std::printf("shadows: CPU in the last frame: %.2f ms reading the occupied clusters back (waiting for the GPU), "
-                "%.2f ms planning, %.2f ms recording %u draws (%s)\n",
-                h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view");
+    if (h.reused) {
+      std::printf("shadows: the last frame kept the maps of the frame before (nothing they depend on changed; "
+                  "--shadow-cache off draws them every frame)\n");
+    } else {
+      std::printf("shadows: CPU in the last frame: %.2f ms reading the occupied clusters back (waiting for the GPU), "
+                  "%.2f ms planning, %.2f ms recording %u draws (%s)\n",
+                  h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view");
+    }
     if (h.cascadeTexelMax > 0.0f) {
       std::printf("shadows: directional cascades' texels %.3g-%.3g scene units (metres) across\n",
                   double(h.cascadeTexelMin), double(h.cascadeTexelMax));

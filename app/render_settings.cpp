@@ -41,6 +41,7 @@ RenderSettings benchRowSettings(const std::string& path, size_t row) {
                            {"--shadows", toString(c.shadows.mode)},
                            {"--shadow-filter", toString(c.shadows.filter)},
                            {"--shadow-atlas", std::to_string(c.shadows.atlasSize)},
+                           {"--shadow-cache", c.shadows.cache ? "on" : "off"},
                            {"--tonemap", toString(c.toneCurve)},
                            {"--aa", "none"}};
   if (report.settings.spotShare) record.push_back({"--spot-share", numberText(*report.settings.spotShare)});

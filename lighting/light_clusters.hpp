@@ -82,6 +82,7 @@ class LightClusters {
   // assignment shapes). The configured side until set.
   void setTileSize(int pixels);
   int tileSize() const { return builtTile_; }  // the side of the grid last built
+  int askedTileSize() const { return tileSize_; }  // the side the next grid is built with
   // The shapes the passes take this frame: as configured, or as the trials choose.
   AssignShape lightPassShape() const;
   AssignShape fillShape() const;

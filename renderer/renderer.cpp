@@ -47,6 +47,7 @@ void Renderer::setLights(const std::vector<PointLight>& lights) {
   lightsSet_ = lights;
   lights_ = &lightsSet_;
   shadowedCache_.reset();
+  ++sceneVersion_;  // scenePosed comes here too: the poses' shadows change with the lights'
 }
 
 void Renderer::scenePosed(const std::vector<int>& changedMeshes) {
@@ -65,6 +66,14 @@ bool Renderer::shadowed(ShadowMode mode) {
 void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   FrameTargets& t = *targets_;
+  const bool perLight = shadowDrawsPerLight(settings.draws);
+  shadowDrawsPerLight_ = perLight;
+  const ShadowFrameKey key{frameData_,         sceneVersion_, settings.mode,           settings.atlasSize,
+                           perLight,           clustered,     t.clusters.askedTileSize(), config_.clusters.slices};
+  if (settings.cache && scene_.shadows.reuse(key)) {
+    shadowReadBackMs_ = 0.0;
+    return;
+  }
   if (!clustered) {
     const BlendedSurfaces blended = blendedSurfaces(t.blendTarget.id());
     t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,
@@ -83,11 +92,12 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
                             receivers,
                             settings.mode,
                             settings.atlasSize};
-  const bool perLight = shadowDrawsPerLight(settings.draws);
-  shadowDrawsPerLight_ = perLight;
-  scene_.shadows.render(inputs, [this, perLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
-    return scene_.geometry.renderDepth(framebuffer, views, perLight);
-  });
+  scene_.shadows.render(
+      inputs,
+      [this, perLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
+        return scene_.geometry.renderDepth(framebuffer, views, perLight);
+      },
+      key);
 }
 
 bool Renderer::shadowDrawsPerLight(ShadowDraws draws) {

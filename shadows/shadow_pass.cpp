@@ -20,13 +20,29 @@ void ensureBuffer(std::unique_ptr<Buffer>& buffer, const char* label, size_t byt
 
 }  // namespace
 
+bool operator==(const ShadowFrameKey& a, const ShadowFrameKey& b) {
+  // FrameBlock is std140 floats without padding (its static_assert), so equal bytes are equal matrices.
+  return std::memcmp(&a.frame, &b.frame, sizeof(FrameBlock)) == 0 && a.sceneVersion == b.sceneVersion &&
+         a.mode == b.mode && a.atlasSize == b.atlasSize && a.drawsPerLight == b.drawsPerLight &&
+         a.clustered == b.clustered && a.tileSize == b.tileSize && a.slices == b.slices;
+}
+
 ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR) {
   // Reversed Z: a receiver is lit where its depth is at least the nearest caster's.
   glSamplerParameteri(sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(sampler_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
 }
 
-void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters) {
+bool ShadowPass::reuse(const ShadowFrameKey& key) {
+  if (!renderedFor_ || !(*renderedFor_ == key)) return false;
+  stats_.reused = true;
+  stats_.readBackMs = stats_.planMs = stats_.recordMs = 0.0;
+  stats_.draws = 0;
+  return true;
+}
+
+void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters,
+                        const ShadowFrameKey& key) {
   const auto start = std::chrono::steady_clock::now();
   ShadowPlan plan = planShadows(inputs);
   const auto planned = std::chrono::steady_clock::now();
@@ -99,6 +115,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   if (!casterViews.empty()) stats_.draws = uint32_t(drawCasters(framebuffer_->id(), casterViews));
   stats_.recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planned).count();
   lastViews_ = std::move(plan.views);  // kept for ownerMap, not copied
+  renderedFor_ = key;
 }
 
 ShadowMaps ShadowPass::maps() const {

@@ -1,10 +1,12 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/gl/gl_objects.hpp"
 #include "core/gl/shadow_maps.hpp"
+#include "core/scene/frame_block.hpp"
 #include "shadows/shadow_plan.hpp"
 
 namespace pbr {
@@ -12,6 +14,22 @@ namespace pbr {
 // Draws the scene's casters' depth into `framebuffer`, once per view: the renderer hands in the geometry pass's
 // depth drawing, so that this pass knows no other.
 // Draws the casters into the views' squares; returns the draw calls made.
+// What a frame's maps depend on besides the scene's meshes and materials: the camera and frame size (views are sized
+// from the screen and rendered only where they meet the visible surfaces), the lights and poses (`sceneVersion`,
+// which the renderer counts up whenever either changes), the cluster grid whose occupancy says where the visible
+// surfaces are, and the settings that shape the atlas. Two frames with equal keys have equal maps.
+struct ShadowFrameKey {
+  FrameBlock frame;
+  uint64_t sceneVersion = 0;
+  ShadowMode mode = ShadowMode::Auto;
+  int atlasSize = 0;
+  bool drawsPerLight = false;
+  bool clustered = false;  // the occupancy came from the cluster pass, or from the occupancy pass alone
+  int tileSize = 0;
+  int slices = 0;
+};
+bool operator==(const ShadowFrameKey& a, const ShadowFrameKey& b);
+
 using DrawShadowCasters = std::function<size_t(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
 
 // The frame's shadow maps: plans them (planShadows), renders the planned squares into one depth atlas and uploads
@@ -20,7 +38,10 @@ using DrawShadowCasters = std::function<size_t(GLuint framebuffer, const std::ve
 class ShadowPass {
  public:
   ShadowPass();
-  void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters);
+  void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters, const ShadowFrameKey& key);
+  // Whether the last render's maps are those of a frame of `key` (its key was equal): then they stay, and the stats
+  // say so; the frame skips reading the occupancy back, planning and drawing.
+  bool reuse(const ShadowFrameKey& key);
   // Valid after render.
   ShadowMaps maps() const;
   const ShadowStats& stats() const { return stats_; }
@@ -41,6 +62,7 @@ class ShadowPass {
   std::vector<ShadowViewPlan> lastViews_;  // the last render's, for ownerMap
   bool ownersCurrent_ = false;
   ShadowStats stats_;
+  std::optional<ShadowFrameKey> renderedFor_;  // the key of the frame the atlas holds
 };
 
 }  // namespace pbr

@@ -41,7 +41,7 @@ struct ShadowViewPlan {
 // What planShadows decided, for `--stats` and the profiler's light statistics.
 struct ShadowStats {
   uint32_t shadowedLights = 0;   // lights with maps (point, spot and directional)
-  uint32_t viewsRendered = 0;    // cube faces, spot views and cascades drawn this frame
+  uint32_t viewsRendered = 0;    // cube faces, spot views and cascades in the maps (drawn this frame unless reused)
   uint32_t viewsSkipped = 0;     // of those lights' views, left out: no receiver in view in their frustum
   uint32_t shrunkLights = 0;     // lights given less than their size on screen asks, the atlas being full
   uint32_t unshadowedLights = 0; // casting lights that got no map at all, the atlas being full at the least size
@@ -53,6 +53,7 @@ struct ShadowStats {
   double readBackMs = 0.0, planMs = 0.0, recordMs = 0.0;
   uint32_t draws = 0;
   bool drawsPerLight = false;  // ShadowDraws::PerLight ran
+  bool reused = false;         // the maps are an earlier frame's: nothing they depend on changed (ShadowFrameKey)
 };
 
 // The frame's shadow views and, per light, which views it owns: what the GPU buffers are made from (the header, whose

@@ -18,6 +18,7 @@
 #include "reference/raycast.hpp"
 #include "reference/reference_renderer.hpp"
 #include "renderer/offscreen.hpp"
+#include "renderer/renderer.hpp"
 #include "tests/gl_test_context.hpp"
 
 using glm::dvec3;
@@ -409,6 +410,55 @@ TEST_CASE("shadows: a caster drawn into all of a light's views at once shades as
     return pbr::renderOffscreen(shaders, scene, size, none, 1);
   }();
   CHECK(layered.hdr.pixels != unshadowed.hdr.pixels);
+}
+
+TEST_CASE("shadows: a still frame keeps its maps, and a moved light or camera draws them again") {
+  PBR_REQUIRE_GL();
+  // ShadowFrameKey: the maps of an unchanged frame stay (no read-back, plan or draw) and shade as drawn anew; a
+  // change they depend on draws them again, compared with a renderer that never saw the earlier frames.
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{128, 72};
+  pbr::Scene scene = castingLightsScene();
+  pbr::Renderer renderer(shaders, scene, size.x, size.y);
+  pbr::Profiler profiler(pbr::TimingMode::Serializing);
+  pbr::FrameOptions keep, redraw;
+  redraw.shadows.cache = false;
+  const auto frame = [&](const pbr::FrameOptions& options) {
+    pbr::ImageRgbaF hdr;
+    renderer.renderFrame(options, profiler, {nullptr, &hdr});
+    return hdr.pixels;
+  };
+  const auto fresh = [&](const pbr::Scene& s) { return pbr::renderOffscreen(shaders, s, size, redraw, 1).hdr.pixels; };
+  const auto first = frame(keep);
+  CHECK_FALSE(renderer.lightStats().shadows.reused);
+  CHECK(renderer.lightStats().shadows.draws > 0);
+  CHECK(frame(keep) == first);
+  CHECK(renderer.lightStats().shadows.reused);
+  CHECK(renderer.lightStats().shadows.draws == 0);
+  CHECK(renderer.lightStats().shadows.viewsRendered > 0);  // the maps' views, kept
+  CHECK(frame(redraw) == first);
+  CHECK_FALSE(renderer.lightStats().shadows.reused);
+  SUBCASE("a light moves") {
+    scene.lights[0].position += glm::vec3(0.0f, 0.6f, -0.8f);
+    renderer.setLights(scene.lights);
+    const auto moved = frame(keep);
+    CHECK_FALSE(renderer.lightStats().shadows.reused);
+    CHECK(moved != first);
+    CHECK(moved == fresh(scene));
+  }
+  SUBCASE("the camera moves") {
+    scene.camera.position = {-2.0f, 3.5f, 5.0f};
+    renderer.setCamera(scene.camera);
+    const auto turned = frame(keep);
+    CHECK_FALSE(renderer.lightStats().shadows.reused);
+    CHECK(turned == fresh(scene));
+  }
+  SUBCASE("the culling changes where the occupancy comes from") {
+    pbr::FrameOptions brute = keep;
+    brute.culling = pbr::Culling::None;
+    CHECK(frame(brute) == first);
+    CHECK_FALSE(renderer.lightStats().shadows.reused);
+  }
 }
 
 TEST_CASE("shadows: a spot and a point light over a sphere agree with the reference's ray-traced visibility") {

@@ -83,6 +83,7 @@ Record settingsRecord(const BenchReport& report) {
                    {"shadows", toString(s.shadows.mode)},
                    {"shadow_filter", toString(s.shadows.filter)},
                    {"shadow_atlas", std::to_string(s.shadows.atlasSize)},
+                   {"shadow_cache", s.shadows.cache ? "on" : "off"},
                    {"tone_curve", toString(s.toneCurve)},
                    {"timing_requested", s.timing},
                    {"sweep_configurations", std::to_string(sweepConfigs(s).size())},
@@ -107,6 +108,7 @@ Json settingsJson(const BenchSettings& s) {
                    {"shadows", toString(s.shadows.mode)},
                    {"shadow_filter", toString(s.shadows.filter)},
                    {"shadow_atlas", s.shadows.atlasSize},
+                   {"shadow_cache", s.shadows.cache},
                    {"tone_curve", toString(s.toneCurve)},
                    {"timing_requested", s.timing}};
   for (Culling c : s.culling) settings["culling"].push_back(toString(c));

@@ -55,6 +55,8 @@ BenchSettings readSettings(const JsonField& f) {
   s.shadows.mode = keyword(f["shadows"], parseShadowMode);
   s.shadows.filter = keyword(f["shadow_filter"], parseShadowFilter);
   s.shadows.atlasSize = integer(f["shadow_atlas"], kMaxShadowAtlas);
+  // Reports from before --shadow-cache drew the maps every frame.
+  s.shadows.cache = f["shadow_cache"].boolean(false);
   // Reports from before --tonemap ran ACES Hill.
   if (f["tone_curve"].present()) s.toneCurve = keyword(f["tone_curve"], parseToneCurve);
   s.timing = f["timing_requested"].string();

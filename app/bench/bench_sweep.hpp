@@ -23,7 +23,13 @@ struct BenchSettings {
   double maxSeconds = 60.0;
   bool constantDensity = false;
   std::optional<float> spotShare;  // --spot-share: the share of random lights that are spots (else the scene's)
-  ShadowSettings shadows;          // --shadows, --shadow-filter, --shadow-atlas: every configuration's
+  // --shadows, --shadow-filter, --shadow-atlas, --shadow-cache: every configuration's. A benchmark draws the maps
+  // every frame unless asked, so that its shadow pass is what a moving scene's frames pay.
+  ShadowSettings shadows = [] {
+    ShadowSettings s;
+    s.cache = false;
+    return s;
+  }();
   ToneCurve toneCurve = ToneCurve::AcesHill;  // --tonemap: every PBR configuration's
   std::string timing = "auto";  // as requested; the mode used is in the provenance
 };

@@ -196,6 +196,7 @@ void Overlay::lightStatistics(Viewer& viewer) {
       row("  cascade texels from", "%.3g m", double(s.shadows.cascadeTexelMin));
       row("  to", "%.3g m", double(s.shadows.cascadeTexelMax));
     }
+    if (s.shadows.reused) ImGui::TextDisabled("  maps kept from the frame before");
     row("  draws", s.shadows.drawsPerLight ? "%.0f (per light)" : "%.0f (per view)", double(s.shadows.draws));
     row("  CPU: plan", "%.2f ms", s.shadows.planMs);
     row("  CPU: recording", "%.2f ms", s.shadows.recordMs);
@@ -246,6 +247,7 @@ void Overlay::shadowControls(Viewer& viewer) {
     }
     ImGui::EndCombo();
   }
+  changed |= ImGui::Checkbox("keep still maps", &s.cache);
   ImGui::Unindent();
   if (changed) viewer.setShadows(s);
 }

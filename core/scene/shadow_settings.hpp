@@ -102,6 +102,9 @@ struct ShadowSettings {
   ShadowFilter filter = ShadowFilter::Pcf3x3;
   int atlasSize = kDefaultShadowAtlas;
   ShadowDraws draws = ShadowDraws::Auto;
+  // Keep the last frame's maps where nothing they depend on changed (ShadowFrameKey): a still scene seen from a
+  // still camera draws its maps once. Off redraws them every frame, what a moving scene pays.
+  bool cache = true;
 };
 
 // The constants above as defines for shadow_sample.glsl.
