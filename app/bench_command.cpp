@@ -155,6 +155,78 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   return 0;
 }
 
+// The sweep's configurations this run measures: all of them, or its --shard's share.
+std::vector<BenchConfig> shardConfigs(const std::vector<BenchConfig>& sweep, const std::optional<BenchShard>& shard) {
+  if (shard && static_cast<size_t>(shard->count) > sweep.size()) {
+    throw UsageError("--shard " + shard->text() + ": the sweep has " + std::to_string(sweep.size()) +
+                     " configurations, too few for " + std::to_string(shard->count) + " shards");
+  }
+  std::vector<size_t> positions(sweep.size());
+  std::iota(positions.begin(), positions.end(), size_t{0});
+  if (shard) positions = shardPositions(sweep, *shard);
+  std::vector<BenchConfig> configs;
+  for (size_t p : positions) configs.push_back(sweep[p]);
+  return configs;
+}
+
+// A scene per light count, every one before any rendering, so that a bad scene or light count fails at once.
+std::vector<Scene> loadSweepScenes(const Args& args, const BenchSettings& settings) {
+  std::vector<Scene> scenes;
+  for (int lights : settings.lights) {
+    SceneParams params = sceneFileParams(args);
+    params.defaultEnvironment = DefaultEnvironment::None;  // timings stay comparable with earlier runs
+    params.lights = lights;
+    Scene scene = resolveScene(settings.scene, params);
+    const float scale = settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
+    for (PointLight& l : scene.lights) l.radius *= scale;
+    scenes.push_back(std::move(scene));
+  }
+  return scenes;
+}
+
+// Every configuration keeps its renderer while the sweep takes their frames in turn, a frame each per round, so
+// that the machine's drift (another tenant, clocks, heat) falls on all alike; the results in `configs`' order.
+std::vector<BenchResult> measureInTurn(const std::vector<BenchConfig>& configs, const std::vector<Scene>& scenes,
+                                       const BenchSettings& settings, TimingMode timing) {
+  const ShaderLibrary shaders;
+  BenchProgress progress(configs, settings, ::isatty(STDERR_FILENO) == 1);
+  const BenchClock::time_point sweepStart = BenchClock::now();
+  std::vector<std::unique_ptr<BenchRun>> runs;
+  for (size_t index = 0; index < configs.size(); ++index) {
+    const BenchConfig& config = configs[index];
+    const size_t li = static_cast<size_t>(
+        std::find(settings.lights.begin(), settings.lights.end(), config.lights) - settings.lights.begin());
+    runs.push_back(std::make_unique<BenchRun>(shaders, scenes[li], config, timing));
+    runs.back()->probe(settings);
+    progress.rendered(index, runs.back()->frameSeconds());
+    progress.probed(index, runs.back()->partial());
+  }
+  const auto inTurn = [&](const char* phase, int rounds, const std::function<void(BenchRun&)>& frame) {
+    for (int round = 1; round <= rounds; ++round) {
+      progress.round(phase, round, rounds);
+      for (size_t index = 0; index < runs.size(); ++index) {
+        if (runs[index]->skipped()) continue;
+        frame(*runs[index]);
+        progress.rendered(index, runs[index]->frameSeconds());
+      }
+    }
+  };
+  inTurn("warm-up", settings.warmup - 1, [](BenchRun& run) { run.warmUpFrame(); });
+  inTurn("timed", settings.frames, [&](BenchRun& run) {
+    run.timedFrame(std::chrono::duration<double, std::milli>(BenchClock::now() - sweepStart).count());
+  });
+  std::vector<BenchResult> results;
+  for (size_t index = 0; index < runs.size(); ++index) {
+    const double frameSeconds = runs[index]->frameSeconds();
+    BenchResult result = runs[index]->finish();
+    runs[index].reset();
+    if (!result.skipped) progress.rendered(index, frameSeconds);
+    progress.finished(index, result);
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& argv) {
@@ -186,31 +258,10 @@ int runBench(const std::vector<std::string>& argv) {
   }
   const BenchSettings settings = parseSettings(args);
   const std::vector<BenchConfig> sweep = sweepConfigs(settings);
-  std::optional<BenchShard> shard;
-  if (args.has("--shard")) {
-    shard = parseShard(args.get("--shard"));
-    if (static_cast<size_t>(shard->count) > sweep.size()) {
-      throw UsageError("--shard " + shard->text() + ": the sweep has " + std::to_string(sweep.size()) +
-                       " configurations, too few for " + std::to_string(shard->count) + " shards");
-    }
-  }
-  std::vector<size_t> positions(sweep.size());
-  std::iota(positions.begin(), positions.end(), size_t{0});
-  if (shard) positions = shardPositions(sweep, *shard);
-  std::vector<BenchConfig> configs;
-  for (size_t p : positions) configs.push_back(sweep[p]);
-
-  // Every scene before any rendering, so that a bad scene or light count fails at once.
-  std::vector<Scene> scenes;
-  for (int lights : settings.lights) {
-    SceneParams params = sceneFileParams(args);
-    params.defaultEnvironment = DefaultEnvironment::None;  // timings stay comparable with earlier runs
-    params.lights = lights;
-    Scene scene = resolveScene(settings.scene, params);
-    const float scale = settings.constantDensity ? densityRadiusScale(lights, densityReferenceLights(settings)) : 1.0f;
-    for (PointLight& l : scene.lights) l.radius *= scale;
-    scenes.push_back(std::move(scene));
-  }
+  const std::optional<BenchShard> shard = args.has("--shard") ? std::optional(parseShard(args.get("--shard")))
+                                                               : std::nullopt;
+  const std::vector<BenchConfig> configs = shardConfigs(sweep, shard);
+  const std::vector<Scene> scenes = loadSweepScenes(args, settings);
   const std::unique_ptr<OutputFile> csv = openOutput(args, "--csv");
   const std::unique_ptr<OutputFile> csvProvenance = openCsvProvenance(args);
   const std::unique_ptr<OutputFile> json = openOutput(args, "--json");
@@ -227,44 +278,7 @@ int runBench(const std::vector<std::string>& argv) {
       shard ? " (shard " + shard->text() + " of " + std::to_string(sweep.size()) + ")" : std::string();
   std::fprintf(stderr, "bench: %zu configurations%s on %s, %s\n", configs.size(), part.c_str(),
                context->info().renderer.c_str(), describe(timing));
-
-  // Every configuration keeps its renderer while the sweep takes their frames in turn, a frame each per round,
-  // so that the machine's drift (another tenant, clocks, heat) falls on all alike.
-  const ShaderLibrary shaders;
-  BenchProgress progress(configs, settings, ::isatty(STDERR_FILENO) == 1);
-  const BenchClock::time_point sweepStart = BenchClock::now();
-  std::vector<std::unique_ptr<BenchRun>> runs;
-  for (size_t index = 0; index < configs.size(); ++index) {
-    const BenchConfig& config = configs[index];
-    const size_t li = static_cast<size_t>(
-        std::find(settings.lights.begin(), settings.lights.end(), config.lights) - settings.lights.begin());
-    runs.push_back(std::make_unique<BenchRun>(shaders, scenes[li], config, timing));
-    runs.back()->probe(settings);
-    progress.rendered(index, runs.back()->frameSeconds());
-    progress.probed(index, runs.back()->partial());
-  }
-  const auto inTurn = [&](const char* phase, int rounds, const std::function<void(BenchRun&)>& frame) {
-    for (int round = 1; round <= rounds; ++round) {
-      progress.round(phase, round, rounds);
-      for (size_t index = 0; index < runs.size(); ++index) {
-        if (runs[index]->skipped()) continue;
-        frame(*runs[index]);
-        progress.rendered(index, runs[index]->frameSeconds());
-      }
-    }
-  };
-  inTurn("warm-up", settings.warmup - 1, [](BenchRun& run) { run.warmUpFrame(); });
-  inTurn("timed", settings.frames, [&](BenchRun& run) {
-    run.timedFrame(std::chrono::duration<double, std::milli>(BenchClock::now() - sweepStart).count());
-  });
-  for (size_t index = 0; index < runs.size(); ++index) {
-    const double frameSeconds = runs[index]->frameSeconds();
-    BenchResult result = runs[index]->finish();
-    runs[index].reset();
-    if (!result.skipped) progress.rendered(index, frameSeconds);
-    progress.finished(index, result);
-    report.results.push_back(std::move(result));
-  }
+  report.results = measureInTurn(configs, scenes, settings, timing);
   report.provenance.set("load_average_end", loadAverage());
 
   printBenchTable(std::cout, report);

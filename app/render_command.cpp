@@ -268,6 +268,23 @@ BenchReport renderReport(const RenderRequest& r, const Scene& scene, BenchResult
   return report;
 }
 
+// With --stats the G-buffer's layout and the transmission background's memory; the metered exposure where
+// --exposure auto metered one.
+void printFrameMemoryAndExposure(const RenderRequest& r, const Scene& scene, const std::string& gbufferLayout,
+                                 const std::optional<MeteredExposure>& metered) {
+  if (r.stats) std::printf("gbuffer: %s\n", gbufferLayout.c_str());
+  if (r.stats && hasTransmissiveMaterial(scene)) {
+    const uint64_t bytes = transmissionBackgroundBytesPerPixel(r.settings.renderer.hdrFormat) * uint64_t(r.size.x) *
+                           uint64_t(r.size.y);
+    std::printf("transmission: the opaque frame copied with its mip chain for the transmissive materials to see "
+                "through, %.1f MiB\n", double(bytes) / double(1 << 20));
+  }
+  if (metered) {
+    std::printf("exposure: auto, EV100 %.2f metered from the frame (exposure %.4g, as --ev100 %.2f --exposure 1 "
+                "sets it)\n", double(metered->ev100), exposureFromEv100(metered->ev100), double(metered->ev100));
+  }
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& commandLine) {
@@ -335,18 +352,8 @@ int runRender(const std::vector<std::string>& commandLine) {
   result.stats = renderer.lightStats();
   printLightStats(result.stats, renderer, options);
   const std::string gbufferLayout = renderer.gbuffer().layout.describe(renderer.gbuffer().precision);
-  if (r.stats) std::printf("gbuffer: %s\n", gbufferLayout.c_str());
-  if (r.stats && hasTransmissiveMaterial(scene)) {
-    const uint64_t bytes = transmissionBackgroundBytesPerPixel(r.settings.renderer.hdrFormat) * uint64_t(r.size.x) *
-                           uint64_t(r.size.y);
-    std::printf("transmission: the opaque frame copied with its mip chain for the transmissive materials to see "
-                "through, %.1f MiB\n", double(bytes) / double(1 << 20));
-  }
   const std::optional<MeteredExposure> metered = renderer.meteredExposure();
-  if (metered) {
-    std::printf("exposure: auto, EV100 %.2f metered from the frame (exposure %.4g, as --ev100 %.2f --exposure 1 "
-                "sets it)\n", double(metered->ev100), exposureFromEv100(metered->ev100), double(metered->ev100));
-  }
+  printFrameMemoryAndExposure(r, scene, gbufferLayout, metered);
   checkGlError("rendering");
 
   if (pngFile) {
