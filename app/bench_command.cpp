@@ -115,6 +115,7 @@ PairCostSettings parsePairCostSettings(const Args& args) {
   s.size = args.getSize("--size");
   s.lights = args.getInt("--pair-lights", 1, 1 << 16);
   s.rounds = args.getInt("--rounds", 1, 10000);
+  if (args.has("--pair-scene")) s.scene = args.get("--pair-scene");
   return s;
 }
 
@@ -123,13 +124,27 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   std::vector<FixtureMaterial> materials;
   std::stringstream list(args.get("--pair-materials"));
   for (std::string item; std::getline(list, item, ',');) materials.push_back(parseFixtureMaterial(item));
-  // Each variant on each material, the materials innermost: a lobe's cost reads beside its variant's core row.
+  std::optional<Scene> scene;
+  if (!settings.scene.empty()) {
+    if (args.has("--pair-materials")) throw UsageError("--pair-materials: the fixture's, not --pair-scene's");
+    SceneParams params = sceneFileParams(args);
+    params.defaultEnvironment = DefaultEnvironment::None;  // as the sweep: the lights' pairs, not the sky's
+    params.lights = settings.lights;
+    scene = resolveScene(settings.scene, params);
+  }
+  // Each variant on each material, the materials innermost: a lobe's cost reads beside its variant's core row; on
+  // a scene each variant brute force, then clustered.
+  const std::vector<Culling> cullings =
+      scene ? std::vector<Culling>{Culling::None, Culling::Clustered} : std::vector<Culling>{Culling::None};
   std::vector<PairCostVariant> variants;
   for (const AccuracyVariant& v : selectVariants(args.get("--pair-cost"))) {
     for (const FixtureMaterial material : materials) {
-      report.variants.push_back(v);
-      variants.push_back(pairCostVariant(v));
-      variants.back().material = material;
+      for (const Culling culling : cullings) {
+        report.variants.push_back(v);
+        variants.push_back(pairCostVariant(v));
+        variants.back().material = material;
+        variants.back().culling = culling;
+      }
     }
   }
   report.settings = settings;
@@ -142,7 +157,7 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   report.provenance = collectProvenance(context->info(), report.settings.timing);
   const ShaderLibrary shaders;
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
-  report.costs = measurePairCost(shaders, variants, report.settings, [&](int done, int total) {
+  report.costs = measurePairCost(shaders, variants, report.settings, scene ? &*scene : nullptr, [&](int done, int total) {
     if (terminal) std::fprintf(stderr, "\rpair cost: %d/%d frames timed", done, total);
     if (terminal && done == total) std::fprintf(stderr, "\n");
   });

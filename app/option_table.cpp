@@ -196,8 +196,12 @@ std::vector<OptionSpec> makeTable() {
        "comma-separated materials of the cost-per-pair fixture, each variant timed on each: core, specular "
        "(KHR_materials_ior and _specular), clearcoat (KHR_materials_clearcoat), sheen (KHR_materials_sheen)",
        "core", ""},
-      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement",
-       std::to_string(pairCost.lights), ""},
+      {"--pair-lights", "N", "lights reaching every pixel in the cost-per-pair measurement (with --pair-scene, the "
+       "scene's random lights)", std::to_string(pairCost.lights), ""},
+      {"--pair-scene", "NAME|FILE",
+       "measure the cost per pair on this scene instead of the fixture, each variant brute force and clustered, "
+       "per pair its frame evaluates (its lighting pass's per-pixel work included, as its frames pay it)", "",
+       "the fixture"},
       {"--pair-size", "WxH", "frame size of the cost-per-pair measurement", sizeText(pairCost.size), ""},
       {"--rounds", "R",
        "timing rounds, each timing every variant (and in pbr accuracy then every shadow row, then every "
@@ -307,7 +311,7 @@ std::vector<Use> commandUses(Command command) {
               Use("--frames", std::to_string(sweep.frames)), "--max-seconds", "--constant-density", "--spot-share",
               "--shadows", "--tonemap", "--shadow-filter", "--shadow-atlas",
               Use("--shadow-cache", sweep.shadows.cache ? "on" : "off"), "--pair-cost", "--pair-materials",
-              "--pair-lights",
+              "--pair-lights", "--pair-scene",
               "--rounds", "--csv", "--json", "--trace", "--shard",
               "--timing", "--egl-platform"};
       break;

@@ -390,6 +390,28 @@ TEST_CASE("bench: --pair-materials times each variant on the fixture with each g
   CHECK(bad.err.find("unknown fixture material 'velvet'") != std::string::npos);
 }
 
+TEST_CASE("bench: --pair-scene times each variant brute force and clustered on the scene, per evaluated pair") {
+  const TempDir dir;
+  const PbrRun run = pbr::test::runPbr(dir, {"bench", "--pair-cost", "blinn-phong", "--pair-scene", "default",
+                                             "--size", "32x18", "--pair-lights", "8", "--rounds", "1", "--json",
+                                             dir.file("pairs.json"), "--csv", dir.file("pairs.csv")});
+  REQUIRE(run.exitCode == 0);
+  const nlohmann::json doc = nlohmann::json::parse(pbr::test::readFile(dir.file("pairs.json")));
+  CHECK(doc["settings"]["scene"] == "default");
+  REQUIRE(doc["variants"].size() == 2);
+  CHECK(doc["variants"][0]["culling"] == "none");
+  CHECK(doc["variants"][1]["culling"] == "clustered");
+  CHECK(doc["variants"][1]["pairs_per_frame"].get<uint64_t>() < doc["variants"][0]["pairs_per_frame"].get<uint64_t>());
+  CHECK(doc["variants"][0]["transparent_ns_per_pair"].is_null());
+  const std::string csv = pbr::test::readFile(dir.file("pairs.csv"));
+  CHECK(csv.find(",scene,culling\n") != std::string::npos);
+  CHECK(csv.find(",default,clustered\n") != std::string::npos);
+  const PbrRun bad = pbr::test::runPbr(dir, {"bench", "--pair-cost", "default", "--pair-scene", "default",
+                                             "--pair-materials", "sheen"});
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.err.find("--pair-materials: the fixture's, not --pair-scene's") != std::string::npos);
+}
+
 TEST_CASE("bench: a sweep run as 2 shards under GNU parallel merges into the rows and keys of the unsharded run") {
   PBR_REQUIRE_GL();
   const TempDir dir;

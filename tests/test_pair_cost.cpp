@@ -1,7 +1,9 @@
-// The cost-per-pair fixture measures what it claims: every light-pixel pair of its frame runs the whole BRDF.
+// The cost-per-pair fixture measures what it claims: every light-pixel pair of its frame runs the whole BRDF; on a
+// scene (--pair-scene) each variant is timed brute force and clustered, per pair each evaluates.
 #include <doctest/doctest.h>
 
 #include "app/accuracy/pair_cost.hpp"
+#include "core/scene/builtin_scenes.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/render_util.hpp"
 
@@ -57,5 +59,36 @@ TEST_CASE("pair cost: the measurement returns finite positive spreads for every 
     CHECK(costs[i].transparentNsPerPair.p10 <= costs[i].transparentNsPerPair.median);
     CHECK(costs[i].transparentNsPerPair.median <= costs[i].transparentNsPerPair.p90);
     CHECK(costs[i].transparentFixedShare > 0.0);
+  }
+}
+
+TEST_CASE("pair cost on a scene: each variant brute force and clustered, per pair each evaluates") {
+  PBR_REQUIRE_GL();
+  const ShaderLibrary shaders;
+  SceneParams params;
+  params.lights = 32;
+  const Scene scene = makeBuiltinScene("default", params);
+  std::vector<PairCostVariant> variants(2);
+  variants[0].name = variants[1].name = "pbr";
+  variants[1].culling = Culling::Clustered;
+  PairCostSettings settings;
+  settings.size = {64, 36};
+  settings.lights = 32;
+  settings.rounds = 2;
+  settings.scene = "default";
+  const std::vector<PairCost> costs = measurePairCost(shaders, variants, settings, &scene);
+  REQUIRE(costs.size() == 2);
+  CHECK((costs[0].culling == Culling::None));
+  CHECK((costs[1].culling == Culling::Clustered));
+  // Brute force evaluates every light at every surface pixel; the clusters' lists leave out lights that miss them.
+  CHECK(costs[0].pairs % 32u == 0u);
+  CHECK(costs[0].pairs <= 64u * 36u * 32u);
+  CHECK(costs[1].pairs > 0u);
+  CHECK(costs[1].pairs < costs[0].pairs);
+  for (const PairCost& c : costs) {
+    CHECK(c.nsPerPair.p10 > 0.0);
+    CHECK(c.nsPerPair.median <= c.nsPerPair.p90);
+    CHECK(c.fixedShare > 0.0);
+    CHECK_FALSE(c.transparent);  // the fixture's pane only
   }
 }

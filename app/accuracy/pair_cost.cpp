@@ -63,17 +63,22 @@ Scene pairCostScene(int lights, FixtureMaterial material) {
 }
 
 std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::vector<PairCostVariant>& variants,
-                                      const PairCostSettings& settings,
+                                      const PairCostSettings& settings, const Scene* scene,
                                       const std::function<void(int, int)>& progress) {
-  // One fixture per material in use; a node of the map stays where it is, as each Renderer keeps its scene.
-  std::map<FixtureMaterial, Scene> scenes;
+  // One fixture per material in use, or the scene; a node of the map stays where it is, as each Renderer keeps its
+  // scene. Beside each, the same without lights, for the pass's work that is not per pair.
+  std::map<FixtureMaterial, Scene> scenes, unlit;
   for (const PairCostVariant& v : variants) {
-    if (!scenes.count(v.material)) scenes.emplace(v.material, pairCostScene(settings.lights, v.material));
+    if (scenes.count(v.material)) continue;
+    scenes.emplace(v.material, scene ? *scene : pairCostScene(settings.lights, v.material));
+    Scene dark = scenes.at(v.material);
+    dark.lights.clear();
+    unlit.emplace(v.material, std::move(dark));
   }
-  const std::vector<PointLight>& sceneLights = scenes.begin()->second.lights;  // the same seeded lights in each
   struct Run {
-    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<Renderer> renderer, unlit;
     FrameOptions options;
+    uint64_t pairs = 0;  // evaluated per frame
     // Per round, the lighting and transparency passes' ms.
     std::vector<double> withLights, withoutLights, blendedWithLights, blendedWithoutLights;
   };
@@ -81,25 +86,32 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   for (const PairCostVariant& v : variants) {
     RendererConfig config = v.config;
     config.sizeOption = settings.sizeOption;
-    Run run{std::make_unique<Renderer>(shaders, scenes.at(v.material), settings.size.x, settings.size.y, config),
-            v.options,
-            {}, {}, {}, {}};
-    run.options.culling = Culling::None;
+    const glm::ivec2 size = settings.size;
+    Run run;
+    run.renderer = std::make_unique<Renderer>(shaders, scenes.at(v.material), size.x, size.y, config);
+    run.unlit = std::make_unique<Renderer>(shaders, unlit.at(v.material), size.x, size.y, config);
+    run.options = v.options;
+    run.options.culling = v.culling;
     run.options.stats = false;
     Profiler untimed(settings.timing);
-    run.renderer->warmUp(run.options, untimed, 2);  // compiles the permutation before any timing
+    run.renderer->warmUp(run.options, untimed, 2);  // compiles the permutation and sizes the lists before timing
+    run.unlit->warmUp(run.options, untimed, 2);
+    run.pairs = uint64_t(size.x) * uint64_t(size.y) * uint64_t(settings.lights);
+    if (scene) {
+      FrameOptions counted = run.options;
+      counted.stats = true;
+      run.renderer->renderFrame(counted, untimed);
+      run.pairs = run.renderer->lightStats().pairs.evaluated;
+    }
     runs.push_back(std::move(run));
   }
-  const std::vector<PointLight> none;
   const int total = settings.rounds * static_cast<int>(runs.size());
   int done = 0;
   for (int round = 0; round < settings.rounds; ++round) {
     for (Run& run : runs) {
       Profiler profiler(settings.timing);
       run.renderer->renderFrame(run.options, profiler);
-      run.renderer->setLights(none);
-      run.renderer->renderFrame(run.options, profiler);
-      run.renderer->setLights(sceneLights);
+      run.unlit->renderFrame(run.options, profiler);
       const std::vector<FrameTiming> frames = profiler.takeResults(true);
       run.withLights.push_back(frames.at(0).pass("lighting"));
       run.withoutLights.push_back(frames.at(1).pass("lighting"));
@@ -108,10 +120,9 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
       if (progress) progress(++done, total);
     }
   }
-  const uint64_t pairs = uint64_t(settings.size.x) * uint64_t(settings.size.y) * uint64_t(settings.lights);
   std::vector<PairCost> out;
   // ns per pair of each round, and the pass without lights over the pass with them (medians).
-  const auto perPair = [pairs](const std::vector<double>& ms) {
+  const auto perPair = [](const std::vector<double>& ms, uint64_t pairs) {
     std::vector<double> ns;
     for (double m : ms) ns.push_back(pairs ? m * 1e6 / double(pairs) : 0.0);
     return summarizeTimes(ns);
@@ -122,9 +133,19 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
   };
   for (size_t i = 0; i < runs.size(); ++i) {
     const Run& r = runs[i];
-    PairCost c{variants[i].name, variants[i].material, perPair(r.withLights), fixedShare(r.withLights, r.withoutLights),
-               pairs,
-               perPair(r.blendedWithLights), fixedShare(r.blendedWithLights, r.blendedWithoutLights)};
+    PairCost c;
+    c.name = variants[i].name;
+    c.material = variants[i].material;
+    c.culling = variants[i].culling;
+    c.nsPerPair = perPair(r.withLights, r.pairs);
+    c.fixedShare = fixedShare(r.withLights, r.withoutLights);
+    c.pairs = r.pairs;
+    // The fixture's pane lies over every pixel of the floor: the same pairs. A scene's BLEND surfaces are not timed.
+    c.transparent = !scene;
+    if (c.transparent) {
+      c.transparentNsPerPair = perPair(r.blendedWithLights, r.pairs);
+      c.transparentFixedShare = fixedShare(r.blendedWithLights, r.blendedWithoutLights);
+    }
     out.push_back(c);
   }
   return out;

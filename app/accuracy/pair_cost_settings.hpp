@@ -21,6 +21,9 @@ struct PairCostSettings {
   int lights = 128;
   int rounds = 7;  // each round times every variant once, in turn
   TimingMode timing = TimingMode::Serializing;
+  // Empty: the fixture. Else the scene measured instead (`--pair-scene`), as users' frames pay for their pairs:
+  // its lights reach what they reach, and each variant is timed brute force and clustered, per evaluated pair.
+  std::string scene;
 };
 
 // The material of the fixture's surfaces: the core metal-rough material, or it with one glTF extension's lobe
@@ -35,17 +38,21 @@ struct PairCostVariant {
   FrameOptions options;  // model and variant; culling is forced to none
   RendererConfig config;
   FixtureMaterial material = FixtureMaterial::Core;
+  Culling culling = Culling::None;  // the fixture's pairs are all evaluated either way: brute force there
 };
 
 struct PairCost {
   std::string name;
   FixtureMaterial material = FixtureMaterial::Core;
+  Culling culling = Culling::None;
   TimeSummary nsPerPair;  // ns per evaluated light-pixel pair (the summary's fields, in ns, not ms)
   // Median lighting pass with no lights over the median with `lights`: the share of per-pixel work that is not
   // per pair (reading the G-buffer, ambient, the store), which the ratio includes.
   double fixedShare = 0.0;
-  uint64_t pairs = 0;  // per frame
-  // The same for the transparency pass's pairs (forward lighting of the fixture's BLEND pane, every pixel too).
+  uint64_t pairs = 0;  // evaluated per frame
+  // The same for the transparency pass's pairs (forward lighting of the fixture's BLEND pane, every pixel too);
+  // measured on the fixture only.
+  bool transparent = true;
   TimeSummary transparentNsPerPair;
   double transparentFixedShare = 0.0;
 };
