@@ -122,6 +122,8 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
     std::printf("culling efficiency: %.3f (%llu of %llu light-pixel pairs evaluated contribute)\n",
                 s.cullingEfficiency(), static_cast<unsigned long long>(s.pairs.contributing),
                 static_cast<unsigned long long>(s.pairs.evaluated));
+    std::printf("lighting: %u of %u 8x8 tiles hold a surface and were shaded; the others took the background alone\n",
+                s.pairs.surfaceTiles, s.pairs.tiles);
   }
 }
 

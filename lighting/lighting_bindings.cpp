@@ -13,7 +13,7 @@ ShaderDefines lightingBindingDefines() {
       {kFrameUbo, kLightingUbo, kClusterUbo, kLightWindowUbo, kDirectionalLightUbo, kSpotWindowUbo, kLegendUbo,
        kLightSsbo, kClusterSsbo, kLightIndexSsbo, kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo,
        kLightingStatsSsbo, kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
-       kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo,
+       kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo, kSurfaceTilesSsbo,
        kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kSpecularUnit, kClearcoatUnit, kSheenUnit,
        kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo,
        kIblSpecularUnit, kIblDfgUnit, kIblSheenUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo,

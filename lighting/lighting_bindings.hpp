@@ -29,6 +29,8 @@ constexpr BindingPoint kBigLightsSsbo{"BIG_LIGHTS_SSBO", BindingKind::StorageBuf
 constexpr BindingPoint kSlotMasksHighSsbo{"SLOT_MASKS_HIGH_SSBO", BindingKind::StorageBuffer, 14};
 // The occupied clusters compacted for the CPU's read-back (cluster_compact.comp).
 constexpr BindingPoint kOccupiedClustersSsbo{"OCCUPIED_CLUSTERS_SSBO", BindingKind::StorageBuffer, 20};
+// The lighting pass's tiles, sorted into those holding a surface and the others (surface_tiles.comp).
+constexpr BindingPoint kSurfaceTilesSsbo{"SURFACE_TILES_SSBO", BindingKind::StorageBuffer, 21};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.
 constexpr BindingPoint kBaseColorUnit{"SURFACE_BASE_COLOR_UNIT", BindingKind::TextureUnit, 0};
 constexpr BindingPoint kNormalUnit{"SURFACE_NORMAL_UNIT", BindingKind::TextureUnit, 1};

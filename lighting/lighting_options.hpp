@@ -3,6 +3,7 @@
 #include <utility>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/scene/scene.hpp"
 #include "core/scene/shader_sources.hpp"
@@ -65,7 +66,18 @@ MaterialLobes usedLobes(const Scene& scene);
 struct PairCounts {
   uint64_t evaluated = 0;
   uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
+  // The pass's 8x8-pixel tiles: those holding a surface, which it shades, and all of them.
+  uint32_t surfaceTiles = 0, tiles = 0;
 };
+
+// Mirrors the head of the SurfaceTiles block (shaders/lighting/surface_tiles.glsl, std430): two indirect dispatches'
+// group counts, the surface tiles' and the background tiles', and the grid of tiles.
+struct SurfaceTilesHeader {
+  glm::uvec4 surfaceDispatch{0u, 1u, 1u, 0u};
+  glm::uvec4 backgroundDispatch{0u, 1u, 1u, 0u};
+  glm::uvec4 tileGrid{0u};  // columns, tiles in all
+};
+static_assert(sizeof(SurfaceTilesHeader) == 48, "SurfaceTilesHeader must match its std430 layout");
 
 // The image format qualifier (HDR_IMAGE_FORMAT) and the largest finite value (HDR_MAX) of a radiance target of
 // `format`.

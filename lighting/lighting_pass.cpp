@@ -1,6 +1,7 @@
 #include "lighting/lighting_pass.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,7 +70,6 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   }
   const Program& shader = program(options, clustered, radiance.format(), chunked, lights.hasSpotLights());
   bindShading(lights, options, frame, clusters);
-  shader.use();
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
     if (!pairStats_ || pairStats_->size() < pairGroups_ * 8) {
@@ -105,15 +105,25 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
     glBindImageTexture(lighting_binding::kPartialRadianceImage.index, partialRadiance->id(), 0, GL_FALSE, 0,
                        GL_READ_WRITE, GL_RGBA32F);
   }
+  // The tiles holding a surface are shaded, the others given their background by a build of the pass that does
+  // nothing else: each an indirect dispatch over its list, so that no workgroup runs the shading for a tile of sky.
+  sortTiles(groupsX, groupsY);
+  shader.use();
   for (uint32_t c = 0; c < chunks; ++c) {
     if (!clustered) lights.bindWindow(c * perDispatch, perDispatch);
     if (chunked) {
       glProgramUniform4ui(shader.id(), 0, c * perDispatch, (c + 1) * perDispatch, c == 0 ? 1u : 0u,
                           c + 1 == chunks ? 1u : 0u);
     }
-    glDispatchCompute(groupsX, groupsY, 1);
+    glDispatchComputeIndirect(offsetof(SurfaceTilesHeader, surfaceDispatch));
     if (chunked) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
+  ShaderDefines background = lightingPermutation(options, clustered, hdrFormatOf(radiance.format()), false,
+                                                 lights.hasSpotLights(), lightWindow_);
+  background.push_back({"BACKGROUND_TILES", "1"});
+  programs_.compute("lighting/deferred.comp", concat(background, lightingBindingDefines())).use();
+  glDispatchComputeIndirect(offsetof(SurfaceTilesHeader, backgroundDispatch));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
 }
@@ -246,8 +256,30 @@ uint32_t readDroppedLayers(const Buffer& lists) {
   return header.droppedNodes;
 }
 
+void LightingPass::sortTiles(GLuint groupsX, GLuint groupsY) {
+  const uint32_t tiles = groupsX * groupsY;
+  const size_t bytes = sizeof(SurfaceTilesHeader) + 2 * size_t(tiles) * sizeof(uint32_t);
+  if (!surfaceTiles_ || surfaceTiles_->size() < bytes) {
+    surfaceTiles_ = std::make_unique<Buffer>("lighting.surfaceTiles", bytes);
+  }
+  SurfaceTilesHeader header;
+  header.tileGrid = glm::uvec4(groupsX, tiles, 0u, 0u);
+  surfaceTiles_->upload(&header, sizeof header);
+  surfaceTiles_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kSurfaceTilesSsbo.index);
+  programs_.compute("lighting/surface_tiles.comp", lightingBindingDefines()).use();
+  glDispatchCompute((tiles + 63) / 64, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfaceTiles_->id());
+}
+
 PairCounts LightingPass::readPairCounts() const {
   PairCounts counts;
+  if (surfaceTiles_) {
+    SurfaceTilesHeader header;
+    glGetNamedBufferSubData(surfaceTiles_->id(), 0, sizeof header, &header);
+    counts.surfaceTiles = header.surfaceDispatch.x;
+    counts.tiles = header.tileGrid.y;
+  }
   if (!pairStats_) return counts;
   std::vector<uint32_t> pairs(pairGroups_ * 2);
   glGetNamedBufferSubData(pairStats_->id(), 0, static_cast<GLsizeiptr>(pairs.size() * 4), pairs.data());

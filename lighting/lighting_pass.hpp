@@ -136,6 +136,9 @@ class LightingPass {
   void bindShading(const LightBuffer& lights, const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
                    const LightClusters* clusters);
   uint32_t lightsPerDispatch(bool clustered) const { return clustered ? kLightsPerDispatch : lightWindow_; }
+  // Sorts the frame's groupsX x groupsY tiles into those holding a surface and the others (surface_tiles.comp) and
+  // binds the lists for the indirect dispatches over them.
+  void sortTiles(GLuint groupsX, GLuint groupsY);
 
   ProgramCache& programs_;  // permutations compiled on first use
   UniformBuffer<LightingBlock> block_{"lighting.block"};
@@ -145,6 +148,7 @@ class LightingPass {
   Sampler backgroundSampler_;  // trilinear over the transmission background's mip chain
   std::unique_ptr<Buffer> pairStats_;
   size_t pairGroups_ = 0;
+  std::unique_ptr<Buffer> surfaceTiles_;  // SurfaceTilesHeader, then two lists of tile indices
   uint32_t lightWindow_;  // lights in the uniform-buffer window of the brute-force path
 };
 

@@ -3,12 +3,14 @@
 // LIGHTING_STATS counts light-pixel pairs per workgroup, LIGHTING_PAIR_IMAGE per pixel (for the efficiency debug
 // view). The radiance image holds the emitted radiance the G-buffer pass wrote; reflected light is added to it.
 // LIGHT_CHUNKS splits the light loop over several dispatches: for more list entries than one invocation may loop
-// over, and, shading every light, for more lights than one uniform-buffer window holds.
+// over, and, shading every light, for more lights than one uniform-buffer window holds. A workgroup shades one 8x8
+// tile that holds a surface (surface_tiles.glsl); the BACKGROUND_TILES build writes the background of the others.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "../common/dealt_tiles.glsl"
 #include "gbuffer_surface.glsl"
 #include "shade_lights.glsl"
+#include "surface_tiles.glsl"
 
 // The radiance target's format (LightingPass::program): the qualifier must match the texture's, and HDR_MAX is
 // its largest finite value, so that a clamp keeps the store from rounding to Inf.
@@ -31,25 +33,44 @@ vec3 background(ivec2 p) {
 }
 #endif
 
-void main() {
-  ivec2 p = dealtPixel();
-  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
-  Surface s;
-  if (!readSurface(p, s)) {
+// This invocation's pixel: of the listed tile its workgroup is dealt.
+ivec2 listedPixel() {
+  uint i = dealtIndex(gl_WorkGroupID.x, gl_NumWorkGroups.x);
+#if BACKGROUND_TILES
+  uint tile = tiles[tileGrid.y + i];
+#else
+  uint tile = tiles[i];
+#endif
+  return ivec2(uvec2(tile % tileGrid.x, tile / tileGrid.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy);
+}
+
+// A pixel without a surface: the environment behind it, nothing in the counts.
+void writeBackground(ivec2 p) {
 #if LIGHTING_PAIR_IMAGE
-    imageStore(pairCounts, p, uvec4(0u));
+  imageStore(pairCounts, p, uvec4(0u));
 #endif
 #if SHADOW_LIGHT_IMAGE
-    imageStore(shadowLight, p, vec4(0.0));
+  imageStore(shadowLight, p, vec4(0.0));
 #endif
 #if LIGHT_CHUNKS
-    if (lightChunk.w == 0u) return;
+  if (lightChunk.w == 0u) return;
 #endif
 #if IBL
-    imageStore(radiance, p, vec4(finishShading(background(p)), 1.0));
+  imageStore(radiance, p, vec4(finishShading(background(p)), 1.0));
 #else
-    imageStore(radiance, p, vec4(0.0, 0.0, 0.0, 1.0));
+  imageStore(radiance, p, vec4(0.0, 0.0, 0.0, 1.0));
 #endif
+}
+
+void main() {
+  ivec2 p = listedPixel();
+  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+#if BACKGROUND_TILES
+  writeBackground(p);
+#else
+  Surface s;
+  if (!readSurface(p, s)) {
+    writeBackground(p);
     return;
   }
   beginShading(s);
@@ -83,7 +104,7 @@ void main() {
 #endif
   visitLights(s, begin, end);
 #if LIGHTING_STATS
-  uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  uint group = gl_WorkGroupID.x;
   atomicAdd(groupPairs[group].x, end - begin);
   atomicAdd(groupPairs[group].y, gContributing);
 #endif
@@ -109,4 +130,5 @@ void main() {
   // NaN compares false everywhere: keep only values known to be finite and non-negative.
   vec3 color = mix(vec3(0.0), gColor, greaterThanEqual(gColor, vec3(0.0)));
   imageStore(radiance, p, vec4(min(finishShading(color), vec3(HDR_MAX)), 1.0));
+#endif
 }

@@ -1,0 +1,69 @@
+// The lighting pass shades only the 8x8 tiles that hold a surface and gives the others their background in a pass of
+// their own (shaders/lighting/surface_tiles.comp): every pixel is written once, and the tiles it counts as holding a
+// surface are those where the captured frame shows one.
+#include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/offscreen.hpp"
+#include "tests/gl_test_context.hpp"
+
+namespace {
+
+// A small sphere in the middle of a 100x60 frame of sky (not a multiple of the tiles' 8 pixels), lit by one point
+// light and the ambient term, so that each of its pixels is brighter than black.
+pbr::Scene sphereInSky() {
+  pbr::Scene scene;
+  scene.camera.position = {0.0f, 0.0f, 6.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.ambient = glm::vec3(0.2f);
+  scene.addShape(pbr::Shape::Sphere, glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)), {glm::vec3(0.7f), 0.5f, 0.0f});
+  pbr::PointLight light;
+  light.position = {1.0f, 1.5f, 3.0f};
+  light.radius = 10.0f;
+  light.luminousPower = 400.0f;
+  scene.lights.push_back(light);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("surface tiles: sky tiles get the background, surface tiles are shaded, every pixel written once") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{100, 60};
+  const pbr::Scene scene = sphereInSky();
+  for (const pbr::Culling culling : {pbr::Culling::None, pbr::Culling::Clustered}) {
+    for (const pbr::ShadingModel model : {pbr::ShadingModel::Pbr, pbr::ShadingModel::BlinnPhong}) {
+      CAPTURE(std::string(pbr::toString(culling)));
+      CAPTURE(std::string(pbr::toString(model)));
+      pbr::FrameOptions options;
+      options.culling = culling;
+      options.model = model;
+      options.stats = true;
+      const pbr::RenderedFrames f = pbr::renderOffscreen(shaders, scene, size, options, 2);
+      // The tiles where the frame shows a surface (any channel above black), counted here from the pixels.
+      const int columns = (size.x + 7) / 8, rows = (size.y + 7) / 8;
+      uint32_t withSurface = 0;
+      int unwritten = 0;
+      for (int ty = 0; ty < rows; ++ty) {
+        for (int tx = 0; tx < columns; ++tx) {
+          bool surface = false;
+          for (int y = 8 * ty; y < std::min(8 * ty + 8, size.y); ++y) {
+            for (int x = 8 * tx; x < std::min(8 * tx + 8, size.x); ++x) {
+              const float* p = f.hdr.at(x, y);
+              surface = surface || p[0] > 0.0f || p[1] > 0.0f || p[2] > 0.0f;
+              unwritten += p[3] != 1.0f;  // the G-buffer pass clears alpha to 0; both lighting builds write 1
+            }
+          }
+          withSurface += surface ? 1u : 0u;
+        }
+      }
+      CHECK(unwritten == 0);
+      CHECK(f.stats.pairs.tiles == uint32_t(columns * rows));
+      CHECK(withSurface > 4u);
+      CHECK(withSurface < f.stats.pairs.tiles / 2);
+      CHECK(f.stats.pairs.surfaceTiles == withSurface);
+    }
+  }
+}
