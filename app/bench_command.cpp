@@ -126,7 +126,7 @@ int runPairCost(const Args& args, PairCostSettings settings, const EglPlatform p
   for (std::string item; std::getline(list, item, ',');) materials.push_back(parseFixtureMaterial(item));
   std::optional<Scene> scene;
   if (!settings.scene.empty()) {
-    if (args.has("--pair-materials")) throw UsageError("--pair-materials: the fixture's, not --pair-scene's");
+    if (args.has("--pair-materials")) throw UsageError("--pair-materials belongs to the fixture, not --pair-scene");
     SceneParams params = sceneFileParams(args);
     params.defaultEnvironment = DefaultEnvironment::None;  // as the sweep: the lights' pairs, not the sky's
     params.lights = settings.lights;

@@ -409,7 +409,7 @@ TEST_CASE("bench: --pair-scene times each variant brute force and clustered on t
   const PbrRun bad = pbr::test::runPbr(dir, {"bench", "--pair-cost", "default", "--pair-scene", "default",
                                              "--pair-materials", "sheen"});
   CHECK(bad.exitCode == 2);
-  CHECK(bad.err.find("--pair-materials: the fixture's, not --pair-scene's") != std::string::npos);
+  CHECK(bad.err.find("--pair-materials belongs to the fixture, not --pair-scene") != std::string::npos);
 }
 
 TEST_CASE("bench: a sweep run as 2 shards under GNU parallel merges into the rows and keys of the unsharded run") {
