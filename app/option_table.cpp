@@ -122,8 +122,9 @@ std::vector<OptionSpec> makeTable() {
        "GL_ARB_shader_viewport_layer_array), or per-light on a GPU that has it and per-view on a CPU rasterizer",
        toString(shadows.draws), ""},
       {"--shadow-cache", "on|off",
-       "keep the last frame's shadow maps while nothing they depend on changes (camera, frame size, lights, poses, "
-       "cluster grid, atlas): a still scene draws its maps once; off draws them every frame, as a moving scene must",
+       "keep shadow maps from frame to frame: a still frame keeps them all (camera, frame size, lights, poses, "
+       "cluster grid and atlas unchanged), and while the camera or a light moves a view whose light, square and "
+       "casters are unchanged keeps its depths; off draws every map every frame",
        shadows.cache ? "on" : "off", ""},
       {"--transparency", "T",
        "how BLEND materials composite: sorted (back to front by their bounds, Porter-Duff over), oit (weighted "

@@ -88,9 +88,9 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
   if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
     const ShadowStats& h = s.shadows;
     const int atlas = options.shadows.atlasSize;
-    std::printf("shadows: %u lights shadowed, %u views rendered, %u skipped (no receiver in view), atlas %dx%d "
-                "(%.0f MiB, %.1f %% used)\n",
-                h.shadowedLights, h.viewsRendered, h.viewsSkipped, atlas, atlas,
+    std::printf("shadows: %u lights shadowed, %u views rendered (%u of them kept from the frame before), %u skipped "
+                "(no receiver in view), atlas %dx%d (%.0f MiB, %.1f %% used)\n",
+                h.shadowedLights, h.viewsRendered, h.viewsKept, h.viewsSkipped, atlas, atlas,
                 double(shadowAtlasBytes(atlas)) / (1 << 20), 100.0 * double(h.texelsUsed) / (double(atlas) * atlas));
     if (h.reused) {
       std::printf("shadows: the last frame kept the maps of the frame before (nothing they depend on changed; "

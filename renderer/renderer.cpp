@@ -47,11 +47,12 @@ void Renderer::setLights(const std::vector<PointLight>& lights) {
   lightsSet_ = lights;
   lights_ = &lightsSet_;
   shadowedCache_.reset();
-  ++sceneVersion_;  // scenePosed comes here too: the poses' shadows change with the lights'
+  ++lightsVersion_;
 }
 
 void Renderer::scenePosed(const std::vector<int>& changedMeshes) {
   scene_.geometry.updatePose(sceneData_, changedMeshes);
+  ++poseVersion_;
   scene_.lights.uploadDirectional(sceneData_.directionalLights);
   setLights(sceneData_.lights);
 }
@@ -68,8 +69,8 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   FrameTargets& t = *targets_;
   const bool perLight = shadowDrawsPerLight(settings.draws);
   shadowDrawsPerLight_ = perLight;
-  const ShadowFrameKey key{frameData_,         sceneVersion_, settings.mode,           settings.atlasSize,
-                           perLight,           clustered,     t.clusters.askedTileSize(), config_.clusters.slices};
+  const ShadowFrameKey key{frameData_, lightsVersion_, poseVersion_, settings.mode, settings.atlasSize, perLight,
+                           clustered,  t.clusters.askedTileSize(),  config_.clusters.slices};
   if (settings.cache && scene_.shadows.reuse(key)) {
     shadowReadBackMs_ = 0.0;
     return;
@@ -97,7 +98,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
       [this, perLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
         return scene_.geometry.renderDepth(framebuffer, views, perLight);
       },
-      key);
+      key, settings.cache);
 }
 
 bool Renderer::shadowDrawsPerLight(ShadowDraws draws) {

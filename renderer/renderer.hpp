@@ -132,7 +132,8 @@ class Renderer {
   UniformBuffer<FrameBlock> frame_;
   std::vector<PointLight> lightsSet_;  // the lights of setLights, once called
   const std::vector<PointLight>* lights_;  // the frame's point and spot lights: the scene's or lightsSet_
-  uint64_t sceneVersion_ = 0;  // counted up by setLights and scenePosed: a shadow map drawn before is stale
+  // Counted up by setLights and by scenePosed: what shadow maps drawn before were drawn for (ShadowFrameKey).
+  uint64_t lightsVersion_ = 0, poseVersion_ = 0;
   std::optional<std::pair<ShadowMode, bool>> shadowedCache_;
   bool lastShadowed_ = false;
   double shadowReadBackMs_ = 0.0;  // the last shadow pass's occupancy read-back and receivers, CPU wall-clock

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <glm/matrix.hpp>
@@ -11,6 +13,13 @@
 namespace pbr {
 
 namespace {
+
+// Whether two views draw the same depths into their squares: the same square, matrix, reach and texel size (the
+// caster culling and tessellation read no more), bit for bit.
+bool sameDepths(const ShadowCasterView& a, const ShadowCasterView& b) {
+  return a.viewport == b.viewport && a.reach == b.reach && a.texelWorld == b.texelWorld &&
+         std::memcmp(&a.viewProjection, &b.viewProjection, sizeof(glm::mat4)) == 0;
+}
 
 // A buffer of at least `bytes` (never empty: a bound storage buffer must exist), reallocated only to grow.
 void ensureBuffer(std::unique_ptr<Buffer>& buffer, const char* label, size_t bytes) {
@@ -22,7 +31,8 @@ void ensureBuffer(std::unique_ptr<Buffer>& buffer, const char* label, size_t byt
 
 bool operator==(const ShadowFrameKey& a, const ShadowFrameKey& b) {
   // FrameBlock is std140 floats without padding (its static_assert), so equal bytes are equal matrices.
-  return std::memcmp(&a.frame, &b.frame, sizeof(FrameBlock)) == 0 && a.sceneVersion == b.sceneVersion &&
+  return std::memcmp(&a.frame, &b.frame, sizeof(FrameBlock)) == 0 && a.lightsVersion == b.lightsVersion &&
+         a.poseVersion == b.poseVersion &&
          a.mode == b.mode && a.atlasSize == b.atlasSize && a.drawsPerLight == b.drawsPerLight &&
          a.clustered == b.clustered && a.tileSize == b.tileSize && a.slices == b.slices;
 }
@@ -42,7 +52,7 @@ bool ShadowPass::reuse(const ShadowFrameKey& key) {
 }
 
 void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters,
-                        const ShadowFrameKey& key) {
+                        const ShadowFrameKey& key, bool keepViews) {
   const auto start = std::chrono::steady_clock::now();
   ShadowPlan plan = planShadows(inputs);
   const auto planned = std::chrono::steady_clock::now();
@@ -54,6 +64,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     atlas_.reset();
     atlas_ = std::make_unique<Texture>("shadows.atlas", GL_DEPTH_COMPONENT32F, inputs.atlasSize, inputs.atlasSize);
     framebuffer_ = std::make_unique<Framebuffer>("shadows.framebuffer");
+    atlasViews_.clear();
     framebuffer_->attach(GL_DEPTH_ATTACHMENT, *atlas_);
     glNamedFramebufferDrawBuffer(framebuffer_->id(), GL_NONE);
     framebuffer_->checkComplete();
@@ -96,25 +107,42 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   ensureBuffer(lightViews_, "shadows.lightViews", plan.lightViews.size() * sizeof(uint32_t));
   if (!plan.lightViews.empty()) lightViews_->upload(plan.lightViews.data(), plan.lightViews.size() * sizeof(uint32_t));
 
+  // Views the atlas already holds, unchanged, keep their depths: what a view draws depends on its matrix, square,
+  // reach and texel size and on the objects, not on the camera (GBufferPass::renderDepth).
+  std::vector<ShadowCasterView> toDraw;
+  const bool objectsStill = renderedFor_ && renderedFor_->poseVersion == key.poseVersion;
+  std::map<std::tuple<int, int, int>, const ShadowCasterView*> held;
+  if (keepViews && objectsStill) {
+    for (const ShadowCasterView& v : atlasViews_) held[{v.viewport.x, v.viewport.y, v.viewport.z}] = &v;
+  }
+  for (const ShadowCasterView& v : casterViews) {
+    const auto found = held.find({v.viewport.x, v.viewport.y, v.viewport.z});
+    if (found != held.end() && sameDepths(*found->second, v)) {
+      ++stats_.viewsKept;
+    } else {
+      toDraw.push_back(v);
+    }
+  }
   // The squares are cleared to the far depth (0) before their casters are drawn; the rest of the atlas is never
   // read. A scissored clear is drawn as a quad on llvmpipe (about 1.1 ns a texel) where a whole clear fills memory
-  // (about 0.3 ns a texel), so squares covering a quarter of the atlas or more are cleared with all of it; a GPU
-  // clears a whole depth target the fastest of all.
+  // (about 0.3 ns a texel), so when every square is drawn and they cover a quarter of the atlas or more, all of it
+  // is cleared; a GPU clears a whole depth target the fastest of all.
   const float far = 0.0f;
   const uint64_t atlasTexels = uint64_t(inputs.atlasSize) * uint64_t(inputs.atlasSize);
-  if (4 * stats_.texelsUsed >= atlasTexels) {
+  if (stats_.viewsKept == 0 && 4 * stats_.texelsUsed >= atlasTexels) {
     glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
   } else {
     glEnable(GL_SCISSOR_TEST);
-    for (const ShadowCasterView& v : casterViews) {
+    for (const ShadowCasterView& v : toDraw) {
       glScissor(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
       glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
     }
     glDisable(GL_SCISSOR_TEST);
   }
-  if (!casterViews.empty()) stats_.draws = uint32_t(drawCasters(framebuffer_->id(), casterViews));
+  if (!toDraw.empty()) stats_.draws = uint32_t(drawCasters(framebuffer_->id(), toDraw));
   stats_.recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planned).count();
   lastViews_ = std::move(plan.views);  // kept for ownerMap, not copied
+  atlasViews_ = std::move(casterViews);
   renderedFor_ = key;
 }
 

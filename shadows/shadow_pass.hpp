@@ -15,12 +15,14 @@ namespace pbr {
 // depth drawing, so that this pass knows no other.
 // Draws the casters into the views' squares; returns the draw calls made.
 // What a frame's maps depend on besides the scene's meshes and materials: the camera and frame size (views are sized
-// from the screen and rendered only where they meet the visible surfaces), the lights and poses (`sceneVersion`,
-// which the renderer counts up whenever either changes), the cluster grid whose occupancy says where the visible
-// surfaces are, and the settings that shape the atlas. Two frames with equal keys have equal maps.
+// from the screen and rendered only where they meet the visible surfaces), the lights and the objects' poses (which
+// the renderer counts, `lightsVersion` whenever lights are set, `poseVersion` whenever objects move), the cluster
+// grid whose occupancy says where the visible surfaces are, and the settings that shape the atlas. Two frames with
+// equal keys have equal maps.
 struct ShadowFrameKey {
   FrameBlock frame;
-  uint64_t sceneVersion = 0;
+  uint64_t lightsVersion = 0;
+  uint64_t poseVersion = 0;
   ShadowMode mode = ShadowMode::Auto;
   int atlasSize = 0;
   bool drawsPerLight = false;
@@ -38,7 +40,11 @@ using DrawShadowCasters = std::function<size_t(GLuint framebuffer, const std::ve
 class ShadowPass {
  public:
   ShadowPass();
-  void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters, const ShadowFrameKey& key);
+  // With `keepViews`, a view drawn into the same square the frame before, from the same matrix, with the same
+  // reach and texel size and with no object moved since, keeps its depths instead of being drawn again: a light
+  // that did not move keeps its maps while the camera moves, as long as its squares stay where they were.
+  void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters, const ShadowFrameKey& key,
+              bool keepViews);
   // Whether the last render's maps are those of a frame of `key` (its key was equal): then they stay, and the stats
   // say so; the frame skips reading the occupancy back, planning and drawing.
   bool reuse(const ShadowFrameKey& key);
@@ -63,6 +69,7 @@ class ShadowPass {
   bool ownersCurrent_ = false;
   ShadowStats stats_;
   std::optional<ShadowFrameKey> renderedFor_;  // the key of the frame the atlas holds
+  std::vector<ShadowCasterView> atlasViews_;   // the views whose depths the atlas holds, by square
 };
 
 }  // namespace pbr

@@ -43,6 +43,7 @@ struct ShadowStats {
   uint32_t shadowedLights = 0;   // lights with maps (point, spot and directional)
   uint32_t viewsRendered = 0;    // cube faces, spot views and cascades in the maps (drawn this frame unless reused)
   uint32_t viewsSkipped = 0;     // of those lights' views, left out: no receiver in view in their frustum
+  uint32_t viewsKept = 0;        // of viewsRendered, kept from the frame before (ShadowPass::render's keepViews)
   uint32_t shrunkLights = 0;     // lights given less than their size on screen asks, the atlas being full
   uint32_t unshadowedLights = 0; // casting lights that got no map at all, the atlas being full at the least size
   uint64_t texelsUsed = 0;       // atlas texels of the rendered views

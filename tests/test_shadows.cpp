@@ -412,10 +412,11 @@ TEST_CASE("shadows: a caster drawn into all of a light's views at once shades as
   CHECK(layered.hdr.pixels != unshadowed.hdr.pixels);
 }
 
-TEST_CASE("shadows: a still frame keeps its maps, and a moved light or camera draws them again") {
+TEST_CASE("shadows: a still frame keeps its maps, and a moved light or camera draws again what it changed") {
   PBR_REQUIRE_GL();
   // ShadowFrameKey: the maps of an unchanged frame stay (no read-back, plan or draw) and shade as drawn anew; a
-  // change they depend on draws them again, compared with a renderer that never saw the earlier frames.
+  // change they depend on draws again the views it changed, the others keeping their squares' depths; every frame
+  // compared with a renderer that never saw the earlier frames.
   const pbr::ShaderLibrary shaders;
   const glm::ivec2 size{128, 72};
   pbr::Scene scene = castingLightsScene();
@@ -438,20 +439,36 @@ TEST_CASE("shadows: a still frame keeps its maps, and a moved light or camera dr
   CHECK(renderer.lightStats().shadows.viewsRendered > 0);  // the maps' views, kept
   CHECK(frame(redraw) == first);
   CHECK_FALSE(renderer.lightStats().shadows.reused);
+  const uint32_t views = renderer.lightStats().shadows.viewsRendered;
   SUBCASE("a light moves") {
     scene.lights[0].position += glm::vec3(0.0f, 0.6f, -0.8f);
     renderer.setLights(scene.lights);
     const auto moved = frame(keep);
-    CHECK_FALSE(renderer.lightStats().shadows.reused);
+    const pbr::ShadowStats& s = renderer.lightStats().shadows;
+    CHECK_FALSE(s.reused);
+    CHECK(s.viewsKept > 0u);          // the other lights' views
+    CHECK(s.viewsKept < s.viewsRendered);  // not the moved light's
     CHECK(moved != first);
     CHECK(moved == fresh(scene));
   }
   SUBCASE("the camera moves") {
+    // Views whose squares stay keep their depths, the others (the cascades, and squares a light's new size on screen
+    // moved) are drawn again: the frame is the one drawn anew either way.
     scene.camera.position = {-2.0f, 3.5f, 5.0f};
     renderer.setCamera(scene.camera);
     const auto turned = frame(keep);
     CHECK_FALSE(renderer.lightStats().shadows.reused);
+    CHECK(renderer.lightStats().shadows.viewsKept < renderer.lightStats().shadows.viewsRendered);
     CHECK(turned == fresh(scene));
+    CHECK(frame(redraw) == turned);
+    CHECK(renderer.lightStats().shadows.viewsKept == 0u);
+  }
+  SUBCASE("an object moves") {
+    // scenePosed counts a new pose: no view keeps its depths, as a caster may have moved through any.
+    renderer.scenePosed({});
+    CHECK(frame(keep) == first);
+    CHECK(renderer.lightStats().shadows.viewsKept == 0u);
+    CHECK(renderer.lightStats().shadows.viewsRendered == views);
   }
   SUBCASE("the culling changes where the occupancy comes from") {
     pbr::FrameOptions brute = keep;

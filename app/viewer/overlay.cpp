@@ -189,6 +189,7 @@ void Overlay::lightStatistics(Viewer& viewer) {
   if (s.shadows.shadowedLights || s.shadows.unshadowedLights) {
     row("shadowed lights", "%.0f", double(s.shadows.shadowedLights));
     row("  views rendered", "%.0f", double(s.shadows.viewsRendered));
+    row("  kept from the frame before", "%.0f", double(s.shadows.viewsKept));
     row("  views skipped", "%.0f (no receiver in view)", double(s.shadows.viewsSkipped));
     const int atlas = viewer.frameOptions().shadows.atlasSize;
     row("  atlas used", "%.1f %%", 100.0 * double(s.shadows.texelsUsed) / (double(atlas) * atlas));
