@@ -65,7 +65,6 @@ bool Renderer::shadowed(ShadowMode mode) {
 }
 
 void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
-  // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   FrameTargets& t = *targets_;
   const bool perLight = shadowDrawsPerLight(settings.draws);
   shadowDrawsPerLight_ = perLight;
@@ -75,6 +74,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
     shadowReadBackMs_ = 0.0;
     return;
   }
+  // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   if (!clustered) {
     const BlendedSurfaces blended = blendedSurfaces(t.blendTarget.id());
     t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,

@@ -46,6 +46,7 @@ ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL
 bool ShadowPass::reuse(const ShadowFrameKey& key) {
   if (!renderedFor_ || !(*renderedFor_ == key)) return false;
   stats_.reused = true;
+  stats_.viewsKept = stats_.viewsRendered;
   stats_.readBackMs = stats_.planMs = stats_.recordMs = 0.0;
   stats_.draws = 0;
   return true;

@@ -2,6 +2,16 @@
 
 namespace pbr::test {
 
+IblSettings smallIblSettings(int faceSize) {
+  IblSettings s;
+  s.faceSize = faceSize;
+  s.specularLevels = 3;
+  s.specularSamples = 16;
+  s.dfgSize = 8;
+  s.dfgSamples = 16;
+  return s;
+}
+
 std::vector<glm::vec4> readCubemapLevel(const Cubemap& cubemap, int level) {
   const int size = cubemap.faceSize(level);
   std::vector<glm::vec4> texels(size_t{6} * size * size);

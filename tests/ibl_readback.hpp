@@ -5,10 +5,15 @@
 #include <glm/vec4.hpp>
 
 #include "ibl/cubemap.hpp"
+#include "ibl/ibl_maps.hpp"
 #include "ibl/irradiance_sh.hpp"
 #include "reference/environment_integrals.hpp"
 
 namespace pbr::test {
+
+// IBL maps small enough for llvmpipe, with faces of `faceSize` texels: a few specular levels and samples and a small
+// DFG table, for tests of the terms that do not depend on them (the diffuse term, the sheen's cube).
+IblSettings smallIblSettings(int faceSize);
 
 // What the IBL passes wrote, read back from GL for comparison with the double-precision references in reference/.
 

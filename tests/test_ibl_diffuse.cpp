@@ -28,17 +28,6 @@ using pbr::reference::kPi;
 
 namespace {
 
-// Maps small enough for llvmpipe: the diffuse term does not depend on the specular settings.
-pbr::IblSettings smallSettings(int faceSize) {
-  pbr::IblSettings s;
-  s.faceSize = faceSize;
-  s.specularLevels = 3;
-  s.specularSamples = 16;
-  s.dfgSize = 8;
-  s.dfgSamples = 16;
-  return s;
-}
-
 std::vector<glm::vec4> asInput(const std::vector<glm::dvec3>& directions) {
   std::vector<glm::vec4> input;
   for (const glm::dvec3& d : directions) input.emplace_back(glm::vec3(d), 0.0f);
@@ -132,7 +121,7 @@ TEST_CASE("ibl diffuse: a constant environment has irradiance pi L everywhere") 
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const glm::vec3 radiance(0.5f, 1.0f, 2.0f);
-  const pbr::IblMaps maps(shaders, pbr::Environment::uniform(radiance), smallSettings(16));
+  const pbr::IblMaps maps(shaders, pbr::Environment::uniform(radiance), pbr::test::smallIblSettings(16));
   pbr::bindEnvironmentMaps(maps.maps());
   const std::vector<glm::dvec3> normals = pbr::reference::fibonacciSphere(500);
   const std::vector<glm::vec4> e = gpuIrradiance(normals);
@@ -148,7 +137,7 @@ TEST_CASE("ibl diffuse: a constant environment has irradiance pi L everywhere") 
 TEST_CASE("ibl diffuse: white furnace, a white Lambert surface under a uniform environment of radiance 1 shades to 1") {
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
-  const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), smallSettings(16));
+  const pbr::IblMaps maps(shaders, pbr::Environment::uniform(glm::vec3(1.0f)), pbr::test::smallIblSettings(16));
   pbr::bindEnvironmentMaps(maps.maps());
   // Lambert with albedo 1 reflects E / pi; iblDiffuse is exactly that for the caller to multiply by its albedo.
   const GlslProbe probe("ibl white furnace", R"(
@@ -169,7 +158,7 @@ TEST_CASE("ibl diffuse: spherical-harmonic irradiance of the sky matches brute f
   // small direction, whose irradiance has a crease where the sun sets below a surface's horizon.
   const pbr::Environment sky = pbr::Environment::sky(pbr::SkyParams{});
   constexpr int kSize = 32;
-  const pbr::IblMaps maps(shaders, sky, smallSettings(kSize));
+  const pbr::IblMaps maps(shaders, sky, pbr::test::smallIblSettings(kSize));
   pbr::bindEnvironmentMaps(maps.maps());
   const pbr::Cubemap cube = pbr::EnvironmentCubemapPass(shaders).run(sky, kSize);
   const pbr::reference::CubeTexels texels = pbr::test::cubeTexels(cube, 0);

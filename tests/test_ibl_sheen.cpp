@@ -22,12 +22,7 @@
 namespace {
 
 pbr::IblSettings sheenSettings(int faceSize) {
-  pbr::IblSettings s;
-  s.faceSize = faceSize;
-  s.specularLevels = 3;
-  s.specularSamples = 16;
-  s.dfgSize = 8;
-  s.dfgSamples = 16;
+  pbr::IblSettings s = pbr::test::smallIblSettings(faceSize);
   s.sheen = true;  // with the default sheen settings
   return s;
 }

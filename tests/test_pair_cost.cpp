@@ -89,6 +89,7 @@ TEST_CASE("pair cost on a scene: each variant brute force and clustered, per pai
     CHECK(c.nsPerPair.p10 > 0.0);
     CHECK(c.nsPerPair.median <= c.nsPerPair.p90);
     CHECK(c.fixedShare > 0.0);
-    CHECK_FALSE(c.transparent);  // the fixture's pane only
+    CHECK(c.transparentNsPerPair.median == 0.0);  // the fixture's pane only
+    CHECK(c.transparentFixedShare == 0.0);
   }
 }

@@ -437,6 +437,7 @@ TEST_CASE("shadows: a still frame keeps its maps, and a moved light or camera dr
   CHECK(renderer.lightStats().shadows.reused);
   CHECK(renderer.lightStats().shadows.draws == 0);
   CHECK(renderer.lightStats().shadows.viewsRendered > 0);  // the maps' views, kept
+  CHECK(renderer.lightStats().shadows.viewsKept == renderer.lightStats().shadows.viewsRendered);
   CHECK(frame(redraw) == first);
   CHECK_FALSE(renderer.lightStats().shadows.reused);
   const uint32_t views = renderer.lightStats().shadows.viewsRendered;

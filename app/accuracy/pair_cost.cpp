@@ -66,7 +66,8 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
                                       const PairCostSettings& settings, const Scene* scene,
                                       const std::function<void(int, int)>& progress) {
   // One fixture per material in use, or the scene; a node of the map stays where it is, as each Renderer keeps its
-  // scene. Beside each, the same without lights, for the pass's work that is not per pair.
+  // scene. Beside each, the same without lights, for the pass's work that is not per pair: a renderer of its own, so
+  // that taking the lights away never resizes the measured renderer's light lists.
   std::map<FixtureMaterial, Scene> scenes, unlit;
   for (const PairCostVariant& v : variants) {
     if (scenes.count(v.material)) continue;
@@ -141,8 +142,7 @@ std::vector<PairCost> measurePairCost(const ShaderLibrary& shaders, const std::v
     c.fixedShare = fixedShare(r.withLights, r.withoutLights);
     c.pairs = r.pairs;
     // The fixture's pane lies over every pixel of the floor: the same pairs. A scene's BLEND surfaces are not timed.
-    c.transparent = !scene;
-    if (c.transparent) {
+    if (!scene) {
       c.transparentNsPerPair = perPair(r.blendedWithLights, r.pairs);
       c.transparentFixedShare = fixedShare(r.blendedWithLights, r.blendedWithoutLights);
     }

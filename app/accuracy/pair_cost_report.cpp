@@ -22,8 +22,13 @@ std::string frameText(const PairCostSettings& s) {
          " lights where it places random ones), brute force and clustered, per evaluated pair";
 }
 
-// A transparent column's number, or "-" where the row has none (a scene's rows).
-std::string transparentText(const PairCost& c, double value) { return c.transparent ? fixedDecimals(value, 4) : "-"; }
+// Whether the rows have transparent columns: the fixture's pane is timed, a scene's BLEND surfaces are not.
+bool timesTransparency(const PairCostSettings& s) { return s.scene.empty(); }
+
+// A transparent column's number, or "-" where the rows have none.
+std::string transparentText(const PairCostSettings& s, double value) {
+  return timesTransparency(s) ? fixedDecimals(value, 4) : "-";
+}
 
 }  // namespace
 
@@ -50,9 +55,9 @@ void writePairCostCsv(std::ostream& out, const PairCostReport& report) {
         << fixedDecimals(c.nsPerPair.median, 4) << ',' << fixedDecimals(c.nsPerPair.p10, 4) << ','
         << fixedDecimals(c.nsPerPair.p90, 4) << ',' << fixedDecimals(c.nsPerPair.min, 4) << ','
         << fixedDecimals(c.nsPerPair.max, 4) << ',' << fixedDecimals(c.fixedShare, 4) << ','
-        << c.pairs << ',' << transparentText(c, c.transparentNsPerPair.median) << ','
-        << transparentText(c, c.transparentNsPerPair.p10) << ',' << transparentText(c, c.transparentNsPerPair.p90)
-        << ',' << transparentText(c, c.transparentFixedShare) << ',' << (s.scene.empty() ? "pair-cost" : s.scene)
+        << c.pairs << ',' << transparentText(s, c.transparentNsPerPair.median) << ','
+        << transparentText(s, c.transparentNsPerPair.p10) << ',' << transparentText(s, c.transparentNsPerPair.p90)
+        << ',' << transparentText(s, c.transparentFixedShare) << ',' << (s.scene.empty() ? "pair-cost" : s.scene)
         << ',' << toString(c.culling) << '\n';
   }
 }
@@ -66,7 +71,7 @@ void writePairCostJson(std::ostream& out, const PairCostReport& report) {
   for (size_t i = 0; i < report.costs.size(); ++i) {
     const AccuracyVariant& v = report.variants[i];
     const PairCost& c = report.costs[i];
-    const Json transparent = c.transparent ? Json({{"median", c.transparentNsPerPair.median},
+    const Json transparent = timesTransparency(s) ? Json({{"median", c.transparentNsPerPair.median},
                                                    {"p10", c.transparentNsPerPair.p10},
                                                    {"p90", c.transparentNsPerPair.p90},
                                                    {"min", c.transparentNsPerPair.min},
@@ -87,7 +92,7 @@ void writePairCostJson(std::ostream& out, const PairCostReport& report) {
                         {"fixed_share", c.fixedShare},
                         {"pairs_per_frame", c.pairs},
                         {"transparent_ns_per_pair", transparent},
-                        {"transparent_fixed_share", c.transparent ? Json(c.transparentFixedShare) : Json(nullptr)}});
+                        {"transparent_fixed_share", timesTransparency(s) ? Json(c.transparentFixedShare) : Json(nullptr)}});
   }
   const Json doc = {{"schema", "pbr-pair-cost/1"},
                     {"provenance", provenance},
@@ -117,7 +122,7 @@ void printPairCostTable(std::ostream& out, const PairCostReport& report) {
                   toString(c.material), toString(c.culling), c.nsPerPair.median, c.nsPerPair.p10, c.nsPerPair.p90,
                   c.fixedShare * 100.0);
     out << line;
-    if (c.transparent) {
+    if (timesTransparency(s)) {
       std::snprintf(line, sizeof line, " %16.3f %8.3f-%-8.3f %11.1f%%\n", t.median, t.p10, t.p90,
                     c.transparentFixedShare * 100.0);
     } else {

@@ -51,8 +51,7 @@ struct PairCost {
   double fixedShare = 0.0;
   uint64_t pairs = 0;  // evaluated per frame
   // The same for the transparency pass's pairs (forward lighting of the fixture's BLEND pane, every pixel too);
-  // measured on the fixture only.
-  bool transparent = true;
+  // measured on the fixture only (PairCostSettings::scene empty), zero on a scene.
   TimeSummary transparentNsPerPair;
   double transparentFixedShare = 0.0;
 };
