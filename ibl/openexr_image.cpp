@@ -35,11 +35,26 @@ uint32_t littleEndian32(const std::string& bytes, size_t at) {
   return v;
 }
 
+// Whether tinyexr reads a channel list (its ReadChannelInfo): entries of a NUL-ended name and 16 bytes, ended by a
+// NUL, with at least one entry; an entry whose 16 bytes reach the value's last byte is refused as it refuses it.
+bool channelListReadable(const std::string& bytes, size_t value, size_t size) {
+  const size_t end = value + size;
+  size_t at = value, channels = 0;
+  while (at < end && bytes[at] != '\0') {
+    const size_t nameEnd = bytes.find('\0', at);
+    if (nameEnd == std::string::npos || nameEnd >= end || nameEnd + 1 + 16 >= end) return false;
+    at = nameEnd + 1 + 16;
+    ++channels;
+  }
+  return channels > 0;
+}
+
 // Debian's tinyexr keeps its asserts, and it asserts, rather than returning an error, on header fields that
 // contradict each other: a type that is not the image's kind, a tile description of the wrong size, a level mode
 // the format does not define, a tile too large for its level arithmetic. Those fields are read here first, walking
 // the attributes as tinyexr does (name, type name, 32-bit size, value). tinyexr converts what it read before
-// damage too, so the walk stops where it would and still checks what came before; the damage is tinyexr's to name.
+// damage too, so the walk stops where it would (an attribute it cannot read, a compression it does not know, a channel
+// list it cannot parse) and still checks what came before; the damage is tinyexr's to name.
 void checkHeaderFields(const std::string& bytes, const EXRVersion& version, const std::string& path) {
   std::string type;
   bool tiles = false;
@@ -53,6 +68,9 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
     // tinyexr takes an empty value for a string only.
     if (size == 0 && bytes.compare(nameEnd + 1, typeEnd - nameEnd - 1, "string") != 0) break;
     const std::string name = bytes.substr(at, nameEnd - at);
+    // tinyexr knows compressions 0 to 4 (none, RLE, ZIPS, ZIP, PIZ; Debian's build has no ZFP).
+    if (name == "compression" && size > 0 && uint8_t(bytes[value]) > TINYEXR_COMPRESSIONTYPE_PIZ) break;
+    if (name == "channels" && !channelListReadable(bytes, value, size)) break;
     if (name == "type") {
       // An empty value leaves the type read before, as tinyexr leaves it.
       const std::string read(bytes.data() + value, strnlen(bytes.data() + value, size));

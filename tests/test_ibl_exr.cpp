@@ -116,6 +116,19 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
   const std::string damaged = dir.write("damaged.exr", cutShort);
   CHECK(errorOf(damaged) == damaged + ": OpenEXR header field type is \"ow\", but the header describes a "
                                       "scanline image");
+  // It also stops at a compression it does not know and at a channel list it cannot parse, before a later type field
+  // that would have replaced the damaged one.
+  const std::string laterType = std::string("type\0string\0\15\0\0\0scanlineimage", 29);
+  const std::string damages[] = {std::string("compression\0compression\0\1\0\0\0\11", 29),
+                                 std::string("channels\0chlist\0\4\0\0\0R\0\0\0", 24),
+                                 std::string("channels\0chlist\0\1\0\0\0\0", 21)};
+  for (const std::string& damage : damages) {
+    std::string early = bytes;
+    early.insert(8, std::string("type\0string\0\2\0\0\0ow", 18) + damage + laterType);
+    const std::string earlyPath = dir.write("early-type.exr", early);
+    CHECK(errorOf(earlyPath) == earlyPath + ": OpenEXR header field type is \"ow\", but the header describes a "
+                                            "scanline image");
+  }
   const std::string shortTiles = withField("tiles", "tiledesc", std::string(4, '\2'), true);
   CHECK(errorOf(shortTiles) == shortTiles + ": OpenEXR header field tiles holds 4 bytes (a tile description is 9)");
   const std::string levelMode = withField("tiles", "tiledesc", std::string("\2\0\0\0\2\0\0\0\3", 9), true);
