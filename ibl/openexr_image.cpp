@@ -35,18 +35,19 @@ uint32_t littleEndian32(const std::string& bytes, size_t at) {
   return v;
 }
 
-// Whether tinyexr reads a channel list (its ReadChannelInfo): entries of a NUL-ended name and 16 bytes, ended by a
-// NUL, with at least one entry; an entry whose 16 bytes reach the value's last byte is refused as it refuses it.
-bool channelListReadable(const std::string& bytes, size_t value, size_t size) {
+// The entries of a channel list as tinyexr reads them (its ReadChannelInfo): a NUL-ended name and 16 bytes each,
+// ended by a NUL; -1 where an entry's 16 bytes reach the value's last byte, which tinyexr refuses.
+int64_t channelEntries(const std::string& bytes, size_t value, size_t size) {
   const size_t end = value + size;
-  size_t at = value, channels = 0;
+  size_t at = value;
+  int64_t entries = 0;
   while (at < end && bytes[at] != '\0') {
     const size_t nameEnd = bytes.find('\0', at);
-    if (nameEnd == std::string::npos || nameEnd >= end || nameEnd + 1 + 16 >= end) return false;
+    if (nameEnd == std::string::npos || nameEnd >= end || nameEnd + 1 + 16 >= end) return -1;
     at = nameEnd + 1 + 16;
-    ++channels;
+    ++entries;
   }
-  return channels > 0;
+  return entries;
 }
 
 // Debian's tinyexr keeps its asserts, and it asserts, rather than returning an error, on header fields that
@@ -54,12 +55,15 @@ bool channelListReadable(const std::string& bytes, size_t value, size_t size) {
 // the format does not define, a tile too large for its level arithmetic. Those fields are read here first, walking
 // the attributes as tinyexr does (name, type name, 32-bit size, value). tinyexr converts what it read before
 // damage too, so the walk stops where it would (an attribute it cannot read, a compression it does not know, a channel
-// list it cannot parse) and still checks what came before; the damage is tinyexr's to name.
+// list it cannot parse, its limit on attributes) and still checks what came before; the damage is tinyexr's to name.
 void checkHeaderFields(const std::string& bytes, const EXRVersion& version, const std::string& path) {
   std::string type;
   bool tiles = false;
+  int64_t channels = 0;  // tinyexr adds every channel list's entries to one list and needs one entry
   size_t at = 8;  // past the magic number and the version field
-  while (at < bytes.size() && bytes[at] != '\0') {
+  // tinyexr reads at most TINYEXR_MAX_HEADER_ATTRIBUTES attributes.
+  for (int attributes = 0; attributes < TINYEXR_MAX_HEADER_ATTRIBUTES && at < bytes.size() && bytes[at] != '\0';
+       ++attributes) {
     const size_t nameEnd = bytes.find('\0', at);
     const size_t typeEnd = nameEnd == std::string::npos ? nameEnd : bytes.find('\0', nameEnd + 1);
     if (typeEnd == std::string::npos || bytes.size() - typeEnd < 5) break;
@@ -70,7 +74,11 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
     const std::string name = bytes.substr(at, nameEnd - at);
     // tinyexr knows compressions 0 to 4 (none, RLE, ZIPS, ZIP, PIZ; Debian's build has no ZFP).
     if (name == "compression" && size > 0 && uint8_t(bytes[value]) > TINYEXR_COMPRESSIONTYPE_PIZ) break;
-    if (name == "channels" && !channelListReadable(bytes, value, size)) break;
+    if (name == "channels") {
+      const int64_t entries = channelEntries(bytes, value, size);
+      if (entries < 0 || channels + entries == 0) break;
+      channels += entries;
+    }
     if (name == "type") {
       // An empty value leaves the type read before, as tinyexr leaves it.
       const std::string read(bytes.data() + value, strnlen(bytes.data() + value, size));

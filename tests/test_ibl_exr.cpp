@@ -129,6 +129,23 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
     CHECK(errorOf(earlyPath) == earlyPath + ": OpenEXR header field type is \"ow\", but the header describes a "
                                             "scanline image");
   }
+  // An empty channel list after one with entries is read on (tinyexr gathers every list's entries in one).
+  std::string emptyList = bytes;
+  const std::string channel = std::string("R\0", 2) + std::string("\2\0\0\0\0\0\0\0\1\0\0\0\1\0\0\0", 16);
+  emptyList.insert(8, std::string("channels\0chlist\0\23\0\0\0", 20) + channel + std::string(1, '\0') +
+                          std::string("channels\0chlist\0\1\0\0\0\0", 21) +
+                          std::string("type\0string\0\12\0\0\0tiledimage", 26));
+  const std::string emptyListPath = dir.write("empty-list.exr", emptyList);
+  CHECK(errorOf(emptyListPath) == emptyListPath + ": OpenEXR header field type is \"tiledimage\", but the header "
+                                                  "describes a scanline image");
+  // A type field past tinyexr's limit of 1024 attributes is not read: the one before it is what tinyexr converts.
+  std::string many = bytes;
+  std::string filler;
+  for (int i = 1; i < 1024; ++i) filler += std::string("a\0b\0\1\0\0\0x", 9);
+  many.insert(8, std::string("type\0string\0\2\0\0\0ow", 18) + filler + laterType);
+  const std::string manyPath = dir.write("many-attributes.exr", many);
+  CHECK(errorOf(manyPath) == manyPath + ": OpenEXR header field type is \"ow\", but the header describes a "
+                                        "scanline image");
   const std::string shortTiles = withField("tiles", "tiledesc", std::string(4, '\2'), true);
   CHECK(errorOf(shortTiles) == shortTiles + ": OpenEXR header field tiles holds 4 bytes (a tile description is 9)");
   const std::string levelMode = withField("tiles", "tiledesc", std::string("\2\0\0\0\2\0\0\0\3", 9), true);
