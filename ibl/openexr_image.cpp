@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 #include "core/scene/file_names.hpp"
 #include "core/scene/input_file.hpp"
@@ -111,11 +112,15 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
   }
 }
 
-// A tiled image's offset table with an empty entry (a file whose writing was interrupted) makes tinyexr rebuild
-// the table by walking the tile blocks without bounds (ReconstructTileOffsets), reading past the file: such a
-// table is refused here. Its entries are counted as tinyexr counts them: the tiles of every level of the
-// header's level mode (one level, mipmaps or ripmaps, their sides rounded down or up), one 64-bit offset each,
-// after the header. A table that runs past the file is left to tinyexr, which says so.
+// Two checks of a tiled image's offset table and tile blocks, which tinyexr trusts:
+// - An empty entry (a file whose writing was interrupted) makes tinyexr rebuild the table by walking the tile
+//   blocks without bounds (ReconstructTileOffsets), reading past the file.
+// - A block naming a tile outside its level makes tinyexr decode a tile of no width or height (it asserts on the
+//   empty buffer) or of a size its arithmetic overflows.
+// Entries are laid out as tinyexr lays them out: the tiles of every level of the header's level mode (one level,
+// mipmaps or ripmaps, sides rounded down or up; ripmaps by level row, then column), row by row, one 64-bit offset
+// each, after the header. A table that runs past the file, or a block that does, is left to tinyexr, which says so;
+// so is a block of another level, which it skips.
 void checkTileOffsets(const std::string& bytes, const EXRHeader& header, int64_t width, int64_t height,
                       const std::string& path) {
   if (!header.tiled) return;
@@ -131,29 +136,50 @@ void checkTileOffsets(const std::string& bytes, const EXRHeader& header, int64_t
     return std::max<int64_t>(size + (up && (size << level) < top ? 1 : 0), 1);
   };
   const auto tiles = [](int64_t side, int64_t tile) { return (side + tile - 1) / tile; };
-  int xLevels = 1, yLevels = 1;
-  if (header.tile_level_mode == TINYEXR_TILE_MIPMAP_LEVELS) {
-    xLevels = yLevels = log2Rounded(std::max(width, height)) + 1;
-  } else if (header.tile_level_mode == TINYEXR_TILE_RIPMAP_LEVELS) {
-    xLevels = log2Rounded(width) + 1;
-    yLevels = log2Rounded(height) + 1;
+  struct Level {
+    int x, y;
+    int64_t columns, rows;
+  };
+  std::vector<Level> levels;
+  const auto addLevel = [&](int lx, int ly) {
+    levels.push_back({lx, ly, tiles(levelSize(width, lx), header.tile_size_x),
+                      tiles(levelSize(height, ly), header.tile_size_y)});
+  };
+  if (header.tile_level_mode == TINYEXR_TILE_RIPMAP_LEVELS) {
+    for (int ly = 0; ly <= log2Rounded(height); ++ly) {
+      for (int lx = 0; lx <= log2Rounded(width); ++lx) addLevel(lx, ly);
+    }
+  } else {
+    const int count =
+        header.tile_level_mode == TINYEXR_TILE_MIPMAP_LEVELS ? log2Rounded(std::max(width, height)) + 1 : 1;
+    for (int l = 0; l < count; ++l) addLevel(l, l);
   }
   int64_t entries = 0;
-  for (int lx = 0; lx < xLevels; ++lx) {
-    for (int ly = 0; ly < yLevels; ++ly) {
-      // Mipmaps pair the levels (lx == ly); ripmaps take every pair; one level is level 0 alone.
-      if (header.tile_level_mode != TINYEXR_TILE_RIPMAP_LEVELS && lx != ly) continue;
-      entries += tiles(levelSize(width, lx), header.tile_size_x) * tiles(levelSize(height, ly), header.tile_size_y);
-    }
-  }
+  for (const Level& level : levels) entries += level.columns * level.rows;
   const size_t first = 8 + size_t(header.header_len);
   if (first > bytes.size() || uint64_t(entries) > (bytes.size() - first) / 8) return;
-  for (int64_t i = 0; i < entries; ++i) {
-    uint64_t offset = 0;
-    for (int b = 7; b >= 0; --b) offset = (offset << 8) | uint8_t(bytes[first + size_t(i) * 8 + size_t(b)]);
-    if (int64_t(offset) <= 0) {
-      throw std::runtime_error(path + ": OpenEXR tile offset table entry " + std::to_string(i) + " of " +
-                               std::to_string(entries) + " is empty (a file whose writing was interrupted?)");
+  const auto little = [&](size_t at, int size) {
+    uint64_t v = 0;
+    for (int b = size - 1; b >= 0; --b) v = (v << 8) | uint8_t(bytes[at + size_t(b)]);
+    return v;
+  };
+  int64_t i = 0;
+  for (const Level& level : levels) {
+    for (int64_t tile = 0; tile < level.columns * level.rows; ++tile, ++i) {
+      const uint64_t offset = little(first + size_t(i) * 8, 8);
+      if (int64_t(offset) <= 0) {
+        throw std::runtime_error(path + ": OpenEXR tile offset table entry " + std::to_string(i) + " of " +
+                                 std::to_string(entries) + " is empty (a file whose writing was interrupted?)");
+      }
+      if (offset > bytes.size() || bytes.size() - offset < 20) continue;
+      const auto x = int32_t(little(offset, 4)), y = int32_t(little(offset + 4, 4));
+      if (int32_t(little(offset + 8, 4)) != level.x || int32_t(little(offset + 12, 4)) != level.y) continue;
+      if (x < 0 || y < 0 || x >= level.columns || y >= level.rows) {
+        throw std::runtime_error(path + ": OpenEXR tile block " + std::to_string(i) + " names tile (" +
+                                 std::to_string(x) + ", " + std::to_string(y) + ") of level (" +
+                                 std::to_string(level.x) + ", " + std::to_string(level.y) + "), which has " +
+                                 std::to_string(level.columns) + "x" + std::to_string(level.rows) + " tiles");
+      }
     }
   }
 }

@@ -155,3 +155,55 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
   const std::string notExr = dir.write("plain.exr", "not an image");
   CHECK(errorOf(notExr) == notExr + ": not an OpenEXR file (no EXR magic number)");
 }
+
+namespace {
+
+// A 2x2 OpenEXR image of one float channel Y in 2x1 tiles (one level, uncompressed), written field by field: the
+// values 1, 2 in its first row, 3, 4 in its second.
+std::string tiledExr() {
+  std::string out("\x76\x2f\x31\x01\x02\x02\x00\x00", 8);  // magic; version 2, tiled
+  const auto i32 = [](int32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const auto f32 = [](float v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const auto field = [&](const std::string& name, const std::string& type, const std::string& value) {
+    out += name + '\0' + type + '\0' + i32(int32_t(value.size())) + value;
+  };
+  field("channels", "chlist", std::string("Y\0", 2) + i32(2) + std::string(4, '\0') + i32(1) + i32(1) + '\0');
+  field("compression", "compression", std::string(1, '\0'));
+  field("dataWindow", "box2i", i32(0) + i32(0) + i32(1) + i32(1));
+  field("displayWindow", "box2i", i32(0) + i32(0) + i32(1) + i32(1));
+  field("lineOrder", "lineOrder", std::string(1, '\0'));
+  field("pixelAspectRatio", "float", f32(1.0f));
+  field("screenWindowCenter", "v2f", f32(0.0f) + f32(0.0f));
+  field("screenWindowWidth", "float", f32(1.0f));
+  field("tiles", "tiledesc", i32(2) + i32(1) + std::string(1, '\0'));
+  out += '\0';
+  const size_t table = out.size(), first = table + 16, blockSize = 20 + 8;
+  for (const uint64_t offset : {uint64_t(first), uint64_t(first + blockSize)}) {
+    out += std::string(reinterpret_cast<const char*>(&offset), 8);
+  }
+  for (int32_t row = 0; row < 2; ++row) {
+    out += i32(0) + i32(row) + i32(0) + i32(0) + i32(8) + f32(float(2 * row + 1)) + f32(float(2 * row + 2));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("ibl exr: tiled files are read, and a tile block naming a tile outside its level is refused") {
+  const TempDir dir;
+  const std::string bytes = tiledExr();
+  const pbr::ImageRgbaF image = pbr::readEnvironmentImage(dir.write("tiled.exr", bytes));
+  REQUIRE(image.width == 2);
+  REQUIRE(image.height == 2);
+  for (int p = 0; p < 4; ++p) CHECK(image.pixels[size_t(4 * p)] == float(p + 1));
+  // tinyexr takes a block's own coordinates: the second block moved one row down names a tile of no height, on
+  // which it asserts; one far off overflows its arithmetic.
+  for (const int32_t row : {2, -1, 1 << 30}) {
+    std::string moved = bytes;
+    const size_t secondBlock = moved.size() - 28;
+    moved.replace(secondBlock + 4, 4, std::string(reinterpret_cast<const char*>(&row), 4));
+    const std::string path = dir.write("moved.exr", moved);
+    CHECK(errorOf(path) == path + ": OpenEXR tile block 1 names tile (0, " + std::to_string(row) +
+                               ") of level (0, 0), which has 1x2 tiles");
+  }
+}
