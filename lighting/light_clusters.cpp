@@ -67,6 +67,7 @@ LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config
       programs_(programs),
       occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
       activateProgram_(programs.compute("lighting/cluster_activate.comp", lightingBindingDefines())),
+      tileBoxesProgram_(programs.compute("lighting/cluster_tile_boxes.comp", lightingBindingDefines())),
       compactProgram_(programs.compute("lighting/cluster_compact.comp", lightingBindingDefines())),
       scanProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "0"}}, lightingBindingDefines()))),
       scanStatsProgram_(programs.compute("lighting/cluster_scan.comp", concat({{"ASSIGN_STATS", "1"}}, lightingBindingDefines()))),
@@ -414,8 +415,11 @@ void LightClusters::activate() {
   glClearNamedBufferSubData(clusterSlots_->id(), GL_R32UI, tileBits, GLsizeiptr(clusterSlots_->size()) - tileBits,
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   activateProgram_.use();
-  glDispatchCompute(groupsFor(uint64_t(blockData_.counts.y) + uint64_t(dims_.x) * dims_.y, 64), 1, 1);
+  glDispatchCompute(groupsFor(blockData_.counts.y, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  tileBoxesProgram_.use();
+  glDispatchCompute(groupsFor(uint64_t(dims_.x) * dims_.y, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 uint32_t LightClusters::readActiveCount() const {

@@ -125,7 +125,8 @@ class LightClusters {
 
   ClusterConfig config_;
   ProgramCache& programs_;
-  const Program &occupancyProgram_, &activateProgram_, &compactProgram_, &scanProgram_, &scanStatsProgram_;
+  const Program &occupancyProgram_, &activateProgram_, &tileBoxesProgram_, &compactProgram_, &scanProgram_,
+      &scanStatsProgram_;
   UniformBuffer<ClusterBlock> block_{"clusters.block"};
   ClusterBlock blockData_{};
   glm::uvec3 dims_{0};

@@ -1,7 +1,9 @@
-// Where the surfaces are: each surface point grows the view-space box of its cluster and of its screen tile, so
-// that lights are tested against the surfaces a cluster holds rather than its whole froxel, and clusters without
-// surface get no list. A point within 1e-3 of a slice boundary joins both clusters: the lighting passes compute the
-// slice in other programs, whose logarithm may round the other way.
+// Where the surfaces are: each surface point grows the view-space box of its cluster, so that lights are tested
+// against the surfaces a cluster holds rather than its whole froxel, and clusters without surface get no list. A
+// tile's box is the union of its clusters' (cluster_activate.comp), the same box as its points' but grown once per
+// cluster rather than once per pixel: on llvmpipe each of a pixel's box reads is a load per lane. A point within
+// 1e-3 of a slice boundary joins both clusters: the lighting passes compute the slice in other programs, whose
+// logarithm may round the other way.
 #include "surface.glsl"
 #include "clusters.glsl"
 
@@ -28,7 +30,6 @@ void occupy(uvec2 p, float depth) {
   uint tile = tileXY.y * clusterGrid.dims.x + tileXY.x;
   float s = sliceCoordinate(-viewPos.z);
   uint lo = clampSlice(floor(s - 1e-3)), hi = clampSlice(floor(s + 1e-3));
-  growBox(tileBoxBase(tile), viewPos);
   growBox(clusterBoxBase(lo * tileCount() + tile), viewPos);
   if (hi != lo) growBox(clusterBoxBase(hi * tileCount() + tile), viewPos);
 }

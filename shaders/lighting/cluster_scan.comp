@@ -1,8 +1,10 @@
 #version 450 core
-// Exclusive prefix sum of the per-cluster light counts into list offsets, in one workgroup: each invocation
-// scans a contiguous chunk serially, the chunk totals are scanned in shared memory (Hillis-Steele), then each
-// chunk adds its base. Also totals the demand for the index list and the cluster statistics. Clusters without
-// surface or slot keep their CLUSTER_INACTIVE offset and count nothing; those without slot count as overflowed.
+// Exclusive prefix sum of the light counts of the clusters with a slot, in slot order, into list offsets, in one
+// workgroup: each invocation scans a contiguous chunk of slots serially, the chunk totals are scanned in shared
+// memory (Hillis-Steele), then each chunk adds its base. Visiting the slots rather than every cluster (192 slices
+// of every tile) keeps the serial chunks short. Also totals the demand for the index list and the cluster
+// statistics. Clusters without surface or slot keep their CLUSTER_INACTIVE offset and count nothing; those
+// without slot count as overflowed.
 layout(local_size_x = 1024) in;
 
 #include "clusters.glsl"
@@ -21,7 +23,10 @@ layout(std430, binding = CLUSTER_STATUS_SSBO) writeonly buffer Status {
   uint unslotted;      // of those, clusters past the masks' slot capacity
 } status;
 
-layout(std430, binding = SLOT_CLUSTERS_SSBO) readonly buffer SlotClusters { uint activeCount; };
+layout(std430, binding = SLOT_CLUSTERS_SSBO) readonly buffer SlotClusters {
+  uint activeCount;
+  uint slotClusters[];
+};
 
 #if ASSIGN_STATS
 layout(std430, binding = LIGHT_VISIBLE_SSBO) buffer Visible { uint lightVisible[]; };
@@ -35,7 +40,7 @@ shared uint overflowCount;
 
 void main() {
   uint t = gl_LocalInvocationIndex;
-  uint n = clusterCount();
+  uint n = min(activeCount, slotCapacity());
   uint chunk = (n + 1023u) / 1024u;
   uint begin = min(t * chunk, n), end = min(begin + chunk, n);
   if (t == 0u) {
@@ -46,7 +51,7 @@ void main() {
   }
   uint sum = 0u, localNonEmpty = 0u, localMax = 0u;
   for (uint i = begin; i < end; ++i) {
-    uint c = headers[i].count;
+    uint c = headers[slotClusters[i]].count;
     sum = addSaturated(sum, c);
     localNonEmpty += c > 0u ? 1u : 0u;
     localMax = max(localMax, c);
@@ -65,9 +70,9 @@ void main() {
   uint offset = t > 0u ? partial[t - 1u] : 0u;
   uint localOverflow = 0u;
   for (uint i = begin; i < end; ++i) {
-    if (headers[i].offset == CLUSTER_INACTIVE) continue;
-    ClusterHeader h = ClusterHeader(offset, headers[i].count);
-    headers[i].offset = offset;
+    uint cluster = slotClusters[i];
+    ClusterHeader h = ClusterHeader(offset, headers[cluster].count);
+    headers[cluster].offset = offset;
     localOverflow += listFits(h) ? 0u : 1u;
     offset = addSaturated(offset, h.count);
   }
