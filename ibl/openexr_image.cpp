@@ -30,9 +30,10 @@ std::string takeError(const char* err, const std::string& fallback) {
   return text.empty() ? fallback : text;
 }
 
-uint32_t littleEndian32(const std::string& bytes, size_t at) {
-  uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8) | uint8_t(bytes[at + size_t(i)]);
+// The little-endian integer of `size` bytes at `at`.
+uint64_t littleEndian(const std::string& bytes, size_t at, int size) {
+  uint64_t v = 0;
+  for (int b = size - 1; b >= 0; --b) v = (v << 8) | uint8_t(bytes[at + size_t(b)]);
   return v;
 }
 
@@ -68,7 +69,7 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
     const size_t nameEnd = bytes.find('\0', at);
     const size_t typeEnd = nameEnd == std::string::npos ? nameEnd : bytes.find('\0', nameEnd + 1);
     if (typeEnd == std::string::npos || bytes.size() - typeEnd < 5) break;
-    const size_t value = typeEnd + 5, size = littleEndian32(bytes, typeEnd + 1);
+    const size_t value = typeEnd + 5, size = uint32_t(littleEndian(bytes, typeEnd + 1, 4));
     if (size > bytes.size() - value) break;
     // tinyexr takes an empty value for a string only.
     if (size == 0 && bytes.compare(nameEnd + 1, typeEnd - nameEnd - 1, "string") != 0) break;
@@ -89,7 +90,8 @@ void checkHeaderFields(const std::string& bytes, const EXRVersion& version, cons
         throw std::runtime_error(path + ": OpenEXR header field tiles holds " + std::to_string(size) +
                                  " bytes (a tile description is 9)");
       }
-      const uint32_t tileX = littleEndian32(bytes, value), tileY = littleEndian32(bytes, value + 4);
+      const auto tileX = uint32_t(littleEndian(bytes, value, 4));
+      const auto tileY = uint32_t(littleEndian(bytes, value + 4, 4));
       if (tileX < 1 || tileY < 1 || tileX > uint32_t(kMaxSide) || tileY > uint32_t(kMaxSide)) {
         throw std::runtime_error(path + ": OpenEXR tile size " + std::to_string(tileX) + "x" +
                                  std::to_string(tileY) + " out of range (1 to " + std::to_string(kMaxSide) +
@@ -158,22 +160,18 @@ void checkTileOffsets(const std::string& bytes, const EXRHeader& header, int64_t
   for (const Level& level : levels) entries += level.columns * level.rows;
   const size_t first = 8 + size_t(header.header_len);
   if (first > bytes.size() || uint64_t(entries) > (bytes.size() - first) / 8) return;
-  const auto little = [&](size_t at, int size) {
-    uint64_t v = 0;
-    for (int b = size - 1; b >= 0; --b) v = (v << 8) | uint8_t(bytes[at + size_t(b)]);
-    return v;
-  };
   int64_t i = 0;
   for (const Level& level : levels) {
     for (int64_t tile = 0; tile < level.columns * level.rows; ++tile, ++i) {
-      const uint64_t offset = little(first + size_t(i) * 8, 8);
+      const uint64_t offset = littleEndian(bytes, first + size_t(i) * 8, 8);
       if (int64_t(offset) <= 0) {
         throw std::runtime_error(path + ": OpenEXR tile offset table entry " + std::to_string(i) + " of " +
                                  std::to_string(entries) + " is empty (a file whose writing was interrupted?)");
       }
       if (offset > bytes.size() || bytes.size() - offset < 20) continue;
-      const auto x = int32_t(little(offset, 4)), y = int32_t(little(offset + 4, 4));
-      if (int32_t(little(offset + 8, 4)) != level.x || int32_t(little(offset + 12, 4)) != level.y) continue;
+      const auto x = int32_t(littleEndian(bytes, offset, 4)), y = int32_t(littleEndian(bytes, offset + 4, 4));
+      const auto lx = int32_t(littleEndian(bytes, offset + 8, 4)), ly = int32_t(littleEndian(bytes, offset + 12, 4));
+      if (lx != level.x || ly != level.y) continue;
       if (x < 0 || y < 0 || x >= level.columns || y >= level.rows) {
         throw std::runtime_error(path + ": OpenEXR tile block " + std::to_string(i) + " names tile (" +
                                  std::to_string(x) + ", " + std::to_string(y) + ") of level (" +
