@@ -1,12 +1,19 @@
 // Anti-aliasing of the display image (post/fxaa_pass.hpp): a bright tilted quad against black, whose edge is a
 // staircase without it, takes intermediate values along the edge with FXAA while flat regions keep their values
-// and the HDR radiance is untouched; `pbr render` anti-aliases its PNG by default and names a bad --aa.
+// and the HDR radiance is untouched; `pbr render` anti-aliases its PNG by default and names a bad --aa; the pass writes
+// every pixel, copying those off an edge (by FXAA's threshold, evaluated here) and filtering the listed others.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
+#include "core/gl/program_cache.hpp"
 #include "core/scene/scene_json.hpp"
+#include "post/fxaa_pass.hpp"
 #include "renderer/offscreen.hpp"
 #include "tests/cli_util.hpp"
 #include "tests/gl_test_context.hpp"
@@ -96,4 +103,68 @@ TEST_CASE("anti-aliasing: pbr render anti-aliases its PNG by default, --aa none 
   CHECK(bad.exitCode == 2);
   CHECK(pbr::test::isOneLine(bad.err));
   CHECK(bad.err.find("unknown anti-aliasing 'smaa' (expected none or fxaa)") != std::string::npos);
+}
+
+TEST_CASE("anti-aliasing: FXAA copies every pixel off an edge and filters every pixel on one, at any frame size") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  pbr::ProgramCache programs(shaders);
+  pbr::FxaaPass fxaa(programs);
+  // Sizes that are not multiples of the 8x8 workgroups, the second larger, so that the edge list grows.
+  for (const auto& [width, height] : {std::pair<int, int>{77, 45}, std::pair<int, int>{130, 71}}) {
+    // Flat 5x3 blocks of a few greys and colours: edges along the blocks' borders, flat pixels inside them.
+    std::vector<uint8_t> in(size_t(width) * height * 4);
+    uint32_t state = 12345;
+    std::vector<uint8_t> blockColour(size_t((width / 5 + 1) * (height / 3 + 1)) * 3);
+    for (uint8_t& c : blockColour) {
+      state = state * 1664525u + 1013904223u;
+      c = uint8_t((state >> 24) & 0xC0);  // 0, 64, 128 or 192
+    }
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t block = size_t((y / 3) * (width / 5 + 1) + x / 5) * 3;
+        for (int c = 0; c < 3; ++c) in[(size_t(y) * width + x) * 4 + c] = blockColour[block + c];
+        in[(size_t(y) * width + x) * 4 + 3] = 255;
+      }
+    }
+    const pbr::Texture display("test.display", GL_RGBA8, width, height), out("test.out", GL_RGBA8, width, height);
+    glTextureSubImage2D(display.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, in.data());
+    const uint8_t sentinel[4] = {1, 2, 3, 4};  // alpha 4: no input pixel has it
+    glClearTexImage(out.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, sentinel);
+    fxaa.render(display, out);
+    std::vector<uint8_t> result(in.size());
+    glGetTextureImage(out.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(result.size()), result.data());
+
+    // FXAA's test for a pixel on an edge (shaders/post/fxaa.comp): the luma range of it and its four neighbours
+    // against the larger of 0.0833 and 0.166 of their largest luma. Pixels within 1e-4 of it are not judged.
+    const auto luma = [&](int x, int y) {
+      const uint8_t* p = &in[(size_t(std::clamp(y, 0, height - 1)) * width + std::clamp(x, 0, width - 1)) * 4];
+      return (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
+    };
+    int unwritten = 0, off = 0, offChanged = 0, on = 0, onChanged = 0;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t i = (size_t(y) * width + x) * 4;
+        unwritten += result[i + 3] == 4 ? 1 : 0;
+        const double l[5] = {luma(x, y), luma(x, y + 1), luma(x, y - 1), luma(x + 1, y), luma(x - 1, y)};
+        const double most = *std::max_element(l, l + 5), least = *std::min_element(l, l + 5);
+        const double margin = (most - least) - std::max(0.0833, most * 0.166);
+        if (std::abs(margin) < 1e-4) continue;
+        const bool changed = !std::equal(&result[i], &result[i] + 4, &in[i]);
+        if (margin < 0.0) {
+          ++off;
+          offChanged += changed ? 1 : 0;
+        } else {
+          ++on;
+          onChanged += changed ? 1 : 0;
+        }
+      }
+    }
+    MESSAGE(width << "x" << height << ": " << on << " pixels on an edge, " << onChanged << " changed; " << off
+                  << " off, " << offChanged << " changed");
+    CHECK(unwritten == 0);
+    CHECK(offChanged == 0);
+    CHECK(on > width * height / 10);
+    CHECK(onChanged > on / 4);
+  }
 }

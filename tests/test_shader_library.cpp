@@ -21,6 +21,7 @@
 #include "lighting/lighting_bindings.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "core/scene/shading_model.hpp"
+#include "post/fxaa_pass.hpp"
 #include "post/post_pass.hpp"
 #include "tests/gl_test_context.hpp"
 #include "tests/shader_tree.hpp"
@@ -242,6 +243,7 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
   checkComputeCompiles("post/post.comp", curves, pbr::bindingDefines({pbr::kPostUbo, pbr::kExposureSsbo}));
   checkComputeCompiles("post/exposure_histogram.comp", DefineSets{pbr::ExposureMeter::defines()});
   checkComputeCompiles("post/exposure_adapt.comp", DefineSets{pbr::ExposureMeter::defines()});
+  checkComputeCompiles("post/fxaa.comp", DefineSets{pbr::FxaaPass::defines(false), pbr::FxaaPass::defines(true)});
   const ShaderLibrary shaders;
   const std::vector<std::string> gbufferFlags = {"BASE_COLOR_MAP", "METALLIC_ROUGHNESS_MAP", "NORMAL_MAP",
                                                  "OCCLUSION_MAP", "EMISSIVE_MAP", "ALPHA_MASK", "UNLIT"};

@@ -112,7 +112,7 @@ TEST_CASE("shader library: every binding point a shader names comes from a bindi
   std::set<std::string> declared;
   for (const ShaderDefines& table : {pbr::lightingBindingDefines(), pbr::gbufferBindingDefines(),
                                      pbr::forwardBindingDefines({}),
-                                     pbr::bindingDefines({pbr::kPostUbo, pbr::kExposureSsbo}),
+                                     pbr::bindingDefines({pbr::kPostUbo, pbr::kExposureSsbo, pbr::kFxaaEdgesSsbo}),
                                      pbr::bindingDefines({pbr::kBrdfGridSsbo})}) {
     for (const pbr::ShaderDefine& d : table) declared.insert(d.name);
   }
