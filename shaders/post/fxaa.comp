@@ -34,33 +34,13 @@ float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 float lumaAt(vec2 uv) { return luma(textureLod(displayIn, uv, 0.0).rgb); }
 float lumaOffset(ivec2 offset) { return luma(texelFetch(displayIn, clamp(gPixel + offset, ivec2(0), gLast), 0).rgb); }
 
-#if FXAA_EDGE_PIXELS
-void main() {
-  ivec2 size = textureSize(displayIn, 0);
-  uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
-  if (i >= edgeDispatch.w) return;
-  ivec2 p = ivec2(edgePixels[i] & 0xFFFFu, edgePixels[i] >> 16);
-#else
-// Lists this invocation's pixel; the workgroup takes its places at once, and raises the dispatch to cover them.
-shared uint sListed, sFirst;
-void listEdge(bool edge, ivec2 p) {
-  if (gl_LocalInvocationIndex == 0u) sListed = 0u;
-  barrier();
-  uint place = edge ? atomicAdd(sListed, 1u) : 0u;
-  barrier();
-  if (gl_LocalInvocationIndex == 0u && sListed > 0u) {
-    sFirst = atomicAdd(edgeDispatch.w, sListed);
-    atomicMax(edgeDispatch.x, (sFirst + sListed + 63u) / 64u);
-  }
-  barrier();
-  if (edge) edgePixels[sFirst + place] = uint(p.x) | uint(p.y) << 16;
-}
+// Whether the last pixel fxaaPixel saw lies on an edge, and its colour (the first build's).
+bool gOnEdge;
+vec4 gCentre;
 
-void main() {
-  ivec2 size = textureSize(displayIn, 0);
-  bool inside = all(lessThan(ivec2(gl_GlobalInvocationID.xy), size));
-  ivec2 p = min(ivec2(gl_GlobalInvocationID.xy), size - 1);
-#endif
+// FXAA at pixel p of an image of `size`: the first build finds whether it lies on an edge (gOnEdge, gCentre); the
+// second filters it.
+void fxaaPixel(ivec2 p, ivec2 size) {
   gTexel = 1.0 / vec2(size);
   gPixel = p;
   gLast = size - 1;
@@ -71,10 +51,9 @@ void main() {
   float e = lumaOffset(ivec2(1, 0)), w = lumaOffset(ivec2(-1, 0));
   float maxLuma = max(m, max(max(n, s), max(e, w))), minLuma = min(m, min(min(n, s), min(e, w)));
   float range = maxLuma - minLuma;
-  bool edge = range >= max(kEdgeThresholdMin, maxLuma * kEdgeThreshold);
 #if !FXAA_EDGE_PIXELS
-  listEdge(inside && edge, p);
-  if (inside && !edge) imageStore(displayOut, p, centre);
+  gOnEdge = range >= max(kEdgeThresholdMin, maxLuma * kEdgeThreshold);
+  gCentre = centre;
   return;
 #endif
   float ne = lumaOffset(ivec2(1, 1)), nw = lumaOffset(ivec2(-1, 1));
@@ -133,3 +112,38 @@ void main() {
   vec3 filtered = textureLod(displayIn, uv + across * (offset * stepLength), 0.0).rgb;
   imageStore(displayOut, p, vec4(filtered, centre.a));
 }
+
+#if FXAA_EDGE_PIXELS
+// The listed pixels, striding by the dispatch: the list may hold more than 65,535 workgroups' worth.
+void main() {
+  ivec2 size = textureSize(displayIn, 0);
+  for (uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex; i < edgeDispatch.w; i += gl_NumWorkGroups.x * 64u) {
+    fxaaPixel(ivec2(edgePixels[i] & 0xFFFFu, edgePixels[i] >> 16), size);
+  }
+}
+#else
+// Lists this invocation's pixel; the workgroup takes its places at once, and raises the dispatch to cover them (up
+// to the 65,535 workgroups a dispatch is sure to take).
+shared uint sListed, sFirst;
+void listEdge(bool edge, ivec2 p) {
+  if (gl_LocalInvocationIndex == 0u) sListed = 0u;
+  barrier();
+  uint place = edge ? atomicAdd(sListed, 1u) : 0u;
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && sListed > 0u) {
+    sFirst = atomicAdd(edgeDispatch.w, sListed);
+    atomicMax(edgeDispatch.x, min((sFirst + sListed + 63u) / 64u, 65535u));
+  }
+  barrier();
+  if (edge) edgePixels[sFirst + place] = uint(p.x) | uint(p.y) << 16;
+}
+
+void main() {
+  ivec2 size = textureSize(displayIn, 0);
+  bool inside = all(lessThan(ivec2(gl_GlobalInvocationID.xy), size));
+  ivec2 p = min(ivec2(gl_GlobalInvocationID.xy), size - 1);
+  fxaaPixel(p, size);
+  listEdge(inside && gOnEdge, p);
+  if (inside && !gOnEdge) imageStore(displayOut, p, gCentre);
+}
+#endif
