@@ -182,6 +182,18 @@ void checkTileOffsets(const std::string& bytes, const EXRHeader& header, int64_t
   }
 }
 
+// A scanline image's chunkCount field sizes tinyexr's offset table (8 bytes an entry) before anything compares it
+// with the file: a count the file has no room for is refused, so that a few bytes cannot ask for gigabytes.
+void checkChunkCount(const std::string& bytes, const EXRHeader& header, const std::string& path) {
+  if (header.tiled || header.chunk_count <= 0) return;
+  const size_t first = 8 + size_t(header.header_len);
+  const uint64_t room = first < bytes.size() ? (bytes.size() - first) / 8 : 0;
+  if (uint64_t(header.chunk_count) > room) {
+    throw std::runtime_error(path + ": OpenEXR header field chunkCount says " + std::to_string(header.chunk_count) +
+                             " blocks, but the file has room for " + std::to_string(room) + " block offsets");
+  }
+}
+
 }  // namespace
 
 bool hasOpenExrMagic(const std::string& bytes) {
@@ -246,6 +258,7 @@ ImageRgbaF readOpenExr(const std::string& path) {
     throw std::runtime_error(path + ": OpenEXR image without R, G and B channels (nor Y)");
   }
   checkTileOffsets(bytes, header, width, height, path);
+  checkChunkCount(bytes, header, path);
   if (LoadEXRImageFromMemory(&exr.image, &header, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
     // A failed load frees what it made itself, leaving pointers FreeEXRImage would free again.
     InitEXRImage(&exr.image);

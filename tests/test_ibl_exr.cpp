@@ -146,6 +146,14 @@ TEST_CASE("ibl exr: damaged, oversized and non-finite OpenEXR files are named in
   const std::string manyPath = dir.write("many-attributes.exr", many);
   CHECK(errorOf(manyPath) == manyPath + ": OpenEXR header field type is \"ow\", but the header describes a "
                                         "scanline image");
+  // A scanline image's chunkCount sizes tinyexr's offset table before anything compares it with the file.
+  const uint32_t billion = 1000000000u;
+  const std::string count(reinterpret_cast<const char*>(&billion), 4);
+  const std::string chunks = withField("chunkCount", "int", count, false);
+  const std::string chunksError = errorOf(chunks);
+  CHECK(chunksError.rfind(chunks + ": OpenEXR header field chunkCount says 1000000000 blocks, but the file has room "
+                                   "for ", 0) == 0);
+  CHECK(chunksError.find(" block offsets") != std::string::npos);
   const std::string shortTiles = withField("tiles", "tiledesc", std::string(4, '\2'), true);
   CHECK(errorOf(shortTiles) == shortTiles + ": OpenEXR header field tiles holds 4 bytes (a tile description is 9)");
   const std::string levelMode = withField("tiles", "tiledesc", std::string("\2\0\0\0\2\0\0\0\3", 9), true);
