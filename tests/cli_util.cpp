@@ -60,4 +60,27 @@ PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args, const st
 
 bool isOneLine(const std::string& s) { return !s.empty() && s.back() == '\n' && s.find('\n') == s.size() - 1; }
 
+std::vector<HelpEntry> helpEntries(const std::string& help) {
+  std::vector<HelpEntry> entries;
+  const size_t options = help.find("\noptions:\n");
+  if (options == std::string::npos) return entries;
+  std::istringstream in(help.substr(options));
+  // Args::helpText's layout: "  --name METAVAR", two spaces or more, the description; continuation lines start at
+  // its 26th column.
+  const std::string continuation(26, ' ');
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("  --", 0) == 0) {
+      const size_t nameEnd = line.find(' ', 2);
+      const size_t gap = line.find("  ", 2);
+      entries.push_back({line.substr(2, nameEnd == std::string::npos ? std::string::npos : nameEnd - 2),
+                         line.substr(2, gap == std::string::npos ? std::string::npos : gap - 2),
+                         gap == std::string::npos ? "" : line.substr(line.find_first_not_of(' ', gap))});
+    } else if (!entries.empty() && line.rfind(continuation, 0) == 0) {
+      HelpEntry& last = entries.back();
+      last.text += (last.text.empty() ? "" : " ") + line.substr(continuation.size());
+    }
+  }
+  return entries;
+}
+
 }  // namespace pbr::test

@@ -51,4 +51,13 @@ PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args, const st
 // True for exactly one newline-terminated line.
 bool isOneLine(const std::string& s);
 
+// One option of a command's help, as a user reads it: its name ("--size"), the words before its description
+// ("--size WxH") and the description, continuation lines joined.
+struct HelpEntry {
+  std::string name, synopsis, text;
+};
+
+// The options a help text lists under "options:", in its order.
+std::vector<HelpEntry> helpEntries(const std::string& help);
+
 }  // namespace pbr::test

@@ -5,7 +5,6 @@
 #include <map>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,35 +26,15 @@ namespace {
 const std::vector<std::string> kCommands = {"render", "bench", "bench-merge", "experiment", "view", "reference",
                                             "accuracy"};
 
-// One option of a help text: the words before its description ("--size WxH") and the description, its continuation
-// lines joined.
-struct HelpEntry {
-  std::string synopsis, text;
-};
-
-std::map<std::string, HelpEntry> helpEntries(const std::string& help) {
-  std::map<std::string, HelpEntry> entries;
-  std::istringstream in(help.substr(help.find("\noptions:\n")));
-  std::string line, current;
-  while (std::getline(in, line)) {
-    if (line.rfind("  --", 0) == 0) {
-      const size_t nameEnd = line.find(' ', 2);
-      current = line.substr(2, nameEnd == std::string::npos ? std::string::npos : nameEnd - 2);
-      const size_t gap = line.find("  ", 2);
-      entries[current] = {line.substr(2, gap == std::string::npos ? std::string::npos : gap - 2),
-                          gap == std::string::npos ? "" : line.substr(line.find_first_not_of(' ', gap))};
-    } else if (!current.empty() && line.rfind(std::string(26, ' '), 0) == 0) {
-      entries[current].text += " " + line.substr(26);
-    }
-  }
-  return entries;
-}
+using pbr::test::HelpEntry;
 
 std::map<std::string, HelpEntry> helpOf(const std::string& command) {
   const TempDir dir;
   const pbr::test::PbrRun run = runPbr(dir, {command, "--help"});
   REQUIRE(run.exitCode == 0);
-  return helpEntries(run.out);
+  std::map<std::string, HelpEntry> entries;
+  for (HelpEntry& e : pbr::test::helpEntries(run.out)) entries[e.name] = std::move(e);
+  return entries;
 }
 
 // The default a help entry states: "V" of "(default V)" or "TEXT" of "(default: TEXT)" at its end, else "".
