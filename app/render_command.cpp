@@ -287,6 +287,81 @@ void printFrameMemoryAndExposure(const RenderRequest& r, const Scene& scene, con
   }
 }
 
+// The scene the request names, with the command line's environment, camera and exposure applied, checked against
+// the debug channel and the outputs.
+struct PreparedScene {
+  Scene scene;
+  ExposureChoice exposure;
+};
+
+PreparedScene prepareScene(const RenderRequest& r, const Args& args) {
+  PreparedScene p{resolveScene(r.sceneName, r.sceneParams), {}};
+  applyEnvironmentOptions(args, p.scene);
+  applyCameraOption(args, p.scene);
+  p.exposure = applyExposureOptions(args, p.scene);
+  checkDebugChannel(r.settings.frame, p.scene);
+  checkOutputsApart(sceneInputs(r.sceneName, p.scene), {{"--out", r.outPng}, {"--hdr", r.outHdr}, {"--json", r.outJson}});
+  return p;
+}
+
+// The outputs asked for, opened before rendering so that an unwritable path fails at once; each is renamed into
+// place only once all of it is written.
+struct RenderOutputs {
+  explicit RenderOutputs(const RenderRequest& r) {
+    if (!r.outPng.empty()) png.emplace(r.outPng);
+    if (!r.outHdr.empty()) hdr.emplace(r.outHdr);
+    if (!r.outJson.empty()) json.emplace(r.outJson);
+  }
+  std::optional<OutputFile> png, hdr, json;
+};
+
+// The untimed frame after the timed ones: its images and what it measured.
+struct FinalFrame {
+  ImageRgba8 ldr;
+  ImageRgbaF hdr;
+  std::optional<MeteredExposure> metered;
+  std::string gbufferLayout;
+};
+
+// Captures and GPU counters come from one more frame that nobody times.
+FinalFrame renderFinalFrame(Renderer& renderer, FrameOptions options, TimingMode mode, const RenderRequest& r,
+                            const Scene& scene, const RenderOutputs& outputs, BenchResult& result) {
+  FinalFrame f;
+  options.stats = r.stats || outputs.json;
+  Profiler untimed(mode);
+  renderer.renderFrame(options, untimed, {outputs.png ? &f.ldr : nullptr, outputs.hdr ? &f.hdr : nullptr});
+  result.stats = renderer.lightStats();
+  printLightStats(result.stats, renderer, options);
+  f.gbufferLayout = renderer.gbuffer().layout.describe(renderer.gbuffer().precision);
+  f.metered = renderer.meteredExposure();
+  printFrameMemoryAndExposure(r, scene, f.gbufferLayout, f.metered);
+  checkGlError("rendering");
+  return f;
+}
+
+void writeOutputs(RenderOutputs& outputs, const RenderRequest& r, const PreparedScene& p, const FinalFrame& f,
+                  BenchResult result, Provenance provenance) {
+  if (outputs.png) {
+    outputs.png->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(r.outPng), f.ldr); });
+    std::printf("wrote %s\n", r.outPng.c_str());
+  }
+  const float shownExposure = f.metered ? float(exposureFromEv100(f.metered->ev100)) : p.exposure.exposure;
+  const FrameExposure shown{r.settings.frame.model == ShadingModel::Pbr, shownExposure, f.metered.has_value()};
+  for (const std::string& note : frameNotes(p.scene, r.size, shown, outputs.png ? &f.ldr : nullptr)) {
+    std::printf("note: %s\n", note.c_str());
+  }
+  if (outputs.hdr) {
+    outputs.hdr->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(r.outHdr), f.hdr); });
+    std::printf("wrote %s\n", r.outHdr.c_str());
+  }
+  if (outputs.json) {
+    const BenchReport report = renderReport(r, p.scene, std::move(result), std::move(provenance), f.metered,
+                                            shownExposure, f.gbufferLayout);
+    outputs.json->write([&](std::ostream& out) { writeBenchJson(out, report); });
+    std::printf("wrote %s\n", r.outJson.c_str());
+  }
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& commandLine) {
@@ -302,26 +377,16 @@ int runRender(const std::vector<std::string>& commandLine) {
     return 0;
   }
   const RenderRequest r = readRequest(specs, args);
-  const FrameOptions& frame = r.settings.frame;
-  Scene scene = resolveScene(r.sceneName, r.sceneParams);
-  applyEnvironmentOptions(args, scene);
-  applyCameraOption(args, scene);
-  const ExposureChoice exposure = applyExposureOptions(args, scene);
-  checkDebugChannel(frame, scene);
-  checkOutputsApart(sceneInputs(r.sceneName, scene), {{"--out", r.outPng}, {"--hdr", r.outHdr}, {"--json", r.outJson}});
-  // Opened before rendering, so that an unwritable path fails at once; each is renamed into place only once all of
-  // it is written.
-  std::optional<OutputFile> pngFile, hdrFile, jsonFile;
-  if (!r.outPng.empty()) pngFile.emplace(r.outPng);
-  if (!r.outHdr.empty()) hdrFile.emplace(r.outHdr);
-  if (!r.outJson.empty()) jsonFile.emplace(r.outJson);
+  const PreparedScene prepared = prepareScene(r, args);
+  const Scene& scene = prepared.scene;
+  RenderOutputs outputs(r);
 
   auto context = createHeadlessContext(r.platform);
   const ContextInfo& info = context->info();
   std::printf("renderer: %s | %s | %s\n", info.renderer.c_str(), info.version.c_str(), info.platform.c_str());
   for (const std::string& note : scene.notes) std::printf("note: %s\n", note.c_str());
-  if (!exposure.note.empty()) std::printf("note: %s\n", exposure.note.c_str());
-  printScene(scene, r.size, frame);
+  if (!prepared.exposure.note.empty()) std::printf("note: %s\n", prepared.exposure.note.c_str());
+  printScene(scene, r.size, r.settings.frame);
 
   const ShaderLibrary shaders;
   Profiler profiler(chooseTimingMode(r.timing, info.renderer));
@@ -340,43 +405,12 @@ int runRender(const std::vector<std::string>& commandLine) {
     renderer.captureFrame(r.captureFrame, capturer);
     std::printf("%s\n", capturer.describe(r.captureFrame).c_str());
   }
-  FrameOptions options = frame;
-  options.exposure = exposure.exposure;
-  options.autoExposure = exposure.autoExposure;
+  FrameOptions options = r.settings.frame;
+  options.exposure = prepared.exposure.exposure;
+  options.autoExposure = prepared.exposure.autoExposure;
   BenchResult result = timedRun(renderer, options, profiler, r, scene);
-
-  // Captures and GPU counters come from one more frame that nobody times.
-  ImageRgba8 ldr;
-  ImageRgbaF hdr;
-  options.stats = r.stats || jsonFile;
-  Profiler untimed(profiler.mode());
-  renderer.renderFrame(options, untimed, {pngFile ? &ldr : nullptr, hdrFile ? &hdr : nullptr});
-  result.stats = renderer.lightStats();
-  printLightStats(result.stats, renderer, options);
-  const std::string gbufferLayout = renderer.gbuffer().layout.describe(renderer.gbuffer().precision);
-  const std::optional<MeteredExposure> metered = renderer.meteredExposure();
-  printFrameMemoryAndExposure(r, scene, gbufferLayout, metered);
-  checkGlError("rendering");
-
-  if (pngFile) {
-    pngFile->write([&](std::ostream& out) { writeLdr(out, ldrFileFormat(r.outPng), ldr); });
-    std::printf("wrote %s\n", r.outPng.c_str());
-  }
-  const float shownExposure = metered ? float(exposureFromEv100(metered->ev100)) : exposure.exposure;
-  const FrameExposure shown{frame.model == ShadingModel::Pbr, shownExposure, metered.has_value()};
-  for (const std::string& note : frameNotes(scene, r.size, shown, pngFile ? &ldr : nullptr)) {
-    std::printf("note: %s\n", note.c_str());
-  }
-  if (hdrFile) {
-    hdrFile->write([&](std::ostream& out) { writeHdr(out, hdrFileFormat(r.outHdr), hdr); });
-    std::printf("wrote %s\n", r.outHdr.c_str());
-  }
-  if (jsonFile) {
-    const BenchReport report = renderReport(r, scene, std::move(result), collectProvenance(info, profiler.mode()),
-                                            metered, shownExposure, gbufferLayout);
-    jsonFile->write([&](std::ostream& out) { writeBenchJson(out, report); });
-    std::printf("wrote %s\n", r.outJson.c_str());
-  }
+  const FinalFrame last = renderFinalFrame(renderer, options, profiler.mode(), r, scene, outputs, result);
+  writeOutputs(outputs, r, prepared, last, std::move(result), collectProvenance(info, profiler.mode()));
   return 0;
 }
 
