@@ -68,13 +68,15 @@ struct PairCounts {
   uint64_t contributing = 0;  // attenuation > 0 and n.l > 0
   // The pass's 8x8-pixel tiles: those holding a surface, which it shades, and all of them.
   uint32_t surfaceTiles = 0, tiles = 0;
+  glm::uvec2 surfaceGroups{0u};  // the workgroups of the dispatch that shades the surface tiles, along x and y
 };
 
-// Mirrors the head of the SurfaceTiles block (shaders/lighting/surface_tiles.glsl, std430): two indirect dispatches'
-// group counts, the surface tiles' and the background tiles', and the grid of tiles.
+// Mirrors the head of the SurfaceTiles block (shaders/lighting/surface_tiles.glsl, std430): two indirect dispatches,
+// the surface tiles' and the background tiles' (xyz their workgroups, grown as tiles are listed; w the tiles), and
+// the grid of tiles.
 struct SurfaceTilesHeader {
-  glm::uvec4 surfaceDispatch{0u, 1u, 1u, 0u};
-  glm::uvec4 backgroundDispatch{0u, 1u, 1u, 0u};
+  glm::uvec4 surfaceDispatch{0u, 0u, 1u, 0u};
+  glm::uvec4 backgroundDispatch{0u, 0u, 1u, 0u};
   glm::uvec4 tileGrid{0u};  // columns, tiles in all
 };
 static_assert(sizeof(SurfaceTilesHeader) == 48, "SurfaceTilesHeader must match its std430 layout");

@@ -277,7 +277,8 @@ PairCounts LightingPass::readPairCounts() const {
   if (surfaceTiles_) {
     SurfaceTilesHeader header;
     glGetNamedBufferSubData(surfaceTiles_->id(), 0, sizeof header, &header);
-    counts.surfaceTiles = header.surfaceDispatch.x;
+    counts.surfaceTiles = header.surfaceDispatch.w;
+    counts.surfaceGroups = glm::uvec2(header.surfaceDispatch);
     counts.tiles = header.tileGrid.y;
   }
   if (!pairStats_) return counts;

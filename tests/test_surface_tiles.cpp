@@ -67,3 +67,37 @@ TEST_CASE("surface tiles: sky tiles get the background, surface tiles are shaded
     }
   }
 }
+
+TEST_CASE("surface tiles: more surface tiles than a dispatch dimension takes are shaded by a grid of workgroups") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  // 264 x 256 = 67,584 tiles, every one holding the wall: more workgroups than the 65,535 that one dimension of a
+  // dispatch is sure to take (GL_MAX_COMPUTE_WORK_GROUP_COUNT's least maximum).
+  const glm::ivec2 size{2112, 2048};
+  pbr::Scene scene = sphereInSky();
+  scene.objects.clear();
+  const glm::mat4 wall = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f)) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3(100.0f));
+  scene.addShape(pbr::Shape::Plane, wall, {glm::vec3(0.7f), 0.5f, 0.0f});
+  pbr::FrameOptions options;
+  options.culling = pbr::Culling::None;
+  options.model = pbr::ShadingModel::BlinnPhong;
+  options.stats = true;
+  const pbr::RenderedFrames f = pbr::renderOffscreen(shaders, scene, size, options, 1);
+  const uint32_t tiles = uint32_t(size.x / 8 * (size.y / 8));
+  CHECK(f.stats.pairs.surfaceTiles == tiles);
+  const glm::uvec2 groups = f.stats.pairs.surfaceGroups;
+  CHECK(groups.x <= 65535u);
+  CHECK(groups.y <= 65535u);
+  CHECK(uint64_t(groups.x) * groups.y >= tiles);
+  CHECK(uint64_t(groups.x) * (groups.y - 1u) < tiles);  // no row of workgroups that lists nothing
+  // Every pixel shaded: lit above black, and written by the lighting pass (the G-buffer pass leaves alpha 0).
+  int unshaded = 0;
+  for (int y = 0; y < size.y; ++y) {
+    for (int x = 0; x < size.x; ++x) {
+      const float* p = f.hdr.at(x, y);
+      unshaded += p[3] != 1.0f || !(p[0] > 0.0f);
+    }
+  }
+  CHECK(unshaded == 0);
+}

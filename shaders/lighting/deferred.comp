@@ -33,15 +33,27 @@ vec3 background(ivec2 p) {
 }
 #endif
 
-// This invocation's pixel: of the listed tile its workgroup is dealt.
+// This workgroup's place in its list's dispatch (surface_tiles.glsl), and the list's length.
+#if BACKGROUND_TILES
+#define LISTED_TILES backgroundDispatch.w
+#else
+#define LISTED_TILES surfaceDispatch.w
+#endif
+uint listedGroup() { return gl_WorkGroupID.y * TILE_DISPATCH_ROW + gl_WorkGroupID.x; }
+
+// This invocation's pixel: of the listed tile its workgroup is dealt, or, for a workgroup of the last row past the
+// list, the frame's corner past its last pixel, which main() leaves as it leaves a tile's pixels past the frame's
+// edge (a select, not a branch of its own: llvmpipe runs the whole shader under one more lane mask for a return).
 ivec2 listedPixel() {
-  uint i = dealtIndex(gl_WorkGroupID.x, gl_NumWorkGroups.x);
+  uint listed = LISTED_TILES, group = listedGroup();
+  uint i = dealtIndex(min(group, listed - 1u), listed);
 #if BACKGROUND_TILES
   uint tile = tiles[tileGrid.y + i];
 #else
   uint tile = tiles[i];
 #endif
-  return ivec2(uvec2(tile % tileGrid.x, tile / tileGrid.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy);
+  ivec2 p = ivec2(uvec2(tile % tileGrid.x, tile / tileGrid.x) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy);
+  return group < listed ? p : ivec2(frame.viewport.xy);
 }
 
 // A pixel without a surface: the environment behind it, nothing in the counts.
@@ -104,7 +116,7 @@ void main() {
 #endif
   visitLights(s, begin, end);
 #if LIGHTING_STATS
-  uint group = gl_WorkGroupID.x;
+  uint group = listedGroup();
   atomicAdd(groupPairs[group].x, end - begin);
   atomicAdd(groupPairs[group].y, gContributing);
 #endif

@@ -22,9 +22,18 @@ void main() {
     ivec2 p = origin + ivec2(i % 8, i / 8);
     surface = all(lessThan(p, ivec2(frame.viewport.xy))) && texelFetch(gDepth, p, 0).r > 0.0;
   }
+  // The entry's place, then the dispatch grown to take it (surface_tiles.glsl): entries of the first row widen it, the
+  // first entry of each row adds the row.
+  uint entry;
   if (surface) {
-    tiles[atomicAdd(surfaceDispatch.x, 1u)] = tile;
+    entry = atomicAdd(surfaceDispatch.w, 1u);
+    tiles[entry] = tile;
+    if (entry < TILE_DISPATCH_ROW) atomicAdd(surfaceDispatch.x, 1u);
+    if (entry % TILE_DISPATCH_ROW == 0u) atomicAdd(surfaceDispatch.y, 1u);
   } else {
-    tiles[tileGrid.y + atomicAdd(backgroundDispatch.x, 1u)] = tile;
+    entry = atomicAdd(backgroundDispatch.w, 1u);
+    tiles[tileGrid.y + entry] = tile;
+    if (entry < TILE_DISPATCH_ROW) atomicAdd(backgroundDispatch.x, 1u);
+    if (entry % TILE_DISPATCH_ROW == 0u) atomicAdd(backgroundDispatch.y, 1u);
   }
 }
