@@ -267,10 +267,13 @@ void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>&
   glDepthMask(GL_TRUE);
   glCullFace(GL_BACK);
   glEnable(GL_FRAMEBUFFER_SRGB);
-  const float zeros[4] = {0, 0, 0, 0};
+  const float zeros[4] = {0, 0, 0, 0}, background[4] = {0, 0, 0, 1};
   const float farDepth = 0.0f;
-  // The specular channel is read only where depth says a surface was drawn: it needs no clearing.
-  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, zeros);
+  // The specular channel is read only where depth says a surface was drawn: it needs no clearing. The radiance
+  // target (attachment 3) starts as the background without an environment (above).
+  for (int i = 0; i < 4; ++i) {
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, i, i == 3 ? background : zeros);
+  }
   glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
 
   frame.bind(kFrameUbo.index);

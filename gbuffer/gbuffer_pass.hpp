@@ -16,7 +16,9 @@
 
 namespace pbr {
 
-// Rasterizes a scene's objects into the G-buffer and their emitted radiance into the frame's radiance target.
+// Rasterizes a scene's objects into the G-buffer and their emitted radiance (alpha 0) into the frame's radiance
+// target, which is black with alpha 1 where no surface is drawn: the background of a frame without an environment,
+// as the lighting pass would write it, so that it need not write it again.
 // Meshes, textures (with mipmaps) and per-object blocks are uploaded once per scene. Each material selects a
 // shader permutation (the maps it samples, alpha masking), compiled once for all the draws that use it.
 class GBufferPass {

@@ -30,7 +30,7 @@ ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrF
   defines.push_back({"CLUSTERED", flag(clustered)});
   defines.push_back({"LIGHTING_STATS", flag(o.stats)});
   defines.push_back({"LIGHTING_PAIR_IMAGE", flag(o.pairCounts != nullptr)});
-  defines.push_back({"IBL", flag(o.environment && !blinnPhong)});
+  defines.push_back({"IBL", flag(o.ibl())});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});

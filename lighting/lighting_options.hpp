@@ -48,6 +48,9 @@ struct LightingOptions {
   bool sheenMaterials = false;
   // Transmissive surfaces (KHR_materials_transmission) shaded as if without the extension (MaterialLobes).
   bool transmissionOff = false;
+
+  // Image-based lighting: a PBR frame with an environment.
+  bool ibl() const { return model == ShadingModel::Pbr && environment != nullptr; }
 };
 
 // The material extensions' lobes a frame shades, each on unless switched off to compare a scene with and without

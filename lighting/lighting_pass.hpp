@@ -104,7 +104,8 @@ class LightingPass {
 
   // With `clusters` null every light is shaded for every pixel: the brute-force reference path. Otherwise
   // only the lights of each pixel's cluster (as last assigned) are. `radiance` (an HdrFormat) comes in holding the
-  // surfaces' emitted radiance and leaves with the shaded frame: emission plus reflected light. Over
+  // surfaces' emitted radiance, and black with alpha 1 where no surface is drawn (the background of a frame without
+  // an environment, the G-buffer pass's clear), and leaves with the shaded frame: emission plus reflected light. Over
   // kLightsPerDispatch lights, the running sums go through `partialRadiance` (RGBA32F, the frame's size).
   void render(const SurfaceTextures& surface, const LightBuffer& lights, const LightingOptions& options,
               const UniformBuffer<FrameBlock>& frame, const Texture& radiance, const LightClusters* clusters,

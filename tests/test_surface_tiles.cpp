@@ -1,5 +1,6 @@
 // The lighting pass shades only the 8x8 tiles that hold a surface and gives the others their background in a pass of
-// their own (shaders/lighting/surface_tiles.comp): every pixel is written once, and the tiles it counts as holding a
+// their own, or, without an environment, leaves them the G-buffer pass's clear, which is that background
+// (shaders/lighting/surface_tiles.comp): every pixel ends with its value, and the tiles it counts as holding a
 // surface are those where the captured frame shows one.
 #include <doctest/doctest.h>
 
@@ -28,7 +29,7 @@ pbr::Scene sphereInSky() {
 
 }  // namespace
 
-TEST_CASE("surface tiles: sky tiles get the background, surface tiles are shaded, every pixel written once") {
+TEST_CASE("surface tiles: sky tiles show the background, surface tiles are shaded, no pixel is left unshaded") {
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
   const glm::ivec2 size{100, 60};
@@ -53,7 +54,9 @@ TEST_CASE("surface tiles: sky tiles get the background, surface tiles are shaded
             for (int x = 8 * tx; x < std::min(8 * tx + 8, size.x); ++x) {
               const float* p = f.hdr.at(x, y);
               surface = surface || p[0] > 0.0f || p[1] > 0.0f || p[2] > 0.0f;
-              unwritten += p[3] != 1.0f;  // the G-buffer pass clears alpha to 0; both lighting builds write 1
+              // The G-buffer pass writes alpha 0 under a surface, which the lighting pass shades to 1; elsewhere
+              // its clear is the background, alpha 1.
+              unwritten += p[3] != 1.0f;
             }
           }
           withSurface += surface ? 1u : 0u;
