@@ -300,7 +300,8 @@ PreparedScene prepareScene(const RenderRequest& r, const Args& args) {
   applyCameraOption(args, p.scene);
   p.exposure = applyExposureOptions(args, p.scene);
   checkDebugChannel(r.settings.frame, p.scene);
-  checkOutputsApart(sceneInputs(r.sceneName, p.scene), {{"--out", r.outPng}, {"--hdr", r.outHdr}, {"--json", r.outJson}});
+  checkOutputsApart(sceneInputs(r.sceneName, p.scene),
+                    {{"--out", r.outPng}, {"--hdr", r.outHdr}, {"--json", r.outJson}});
   return p;
 }
 
