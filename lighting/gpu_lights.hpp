@@ -36,6 +36,14 @@ static_assert(sizeof(GpuDirectionalLight) == 32, "GpuDirectionalLight must match
 static_assert(offsetof(DirectionalLightBlock, lights) == 16, "DirectionalLightBlock must match its std140 layout");
 static_assert(sizeof(DirectionalLightBlock) == 16 + 32 * kMaxDirectionalLights, "DirectionalLightBlock: std140");
 
+// The kinds of light a frame has besides point lights (LightBuffer::kinds): each kind's code is compiled only into
+// the permutations of frames that have it (SPOT_LIGHTS, DIRECTIONAL_LIGHTS). On llvmpipe even a loop over no light
+// runs its body once under an empty lane mask: the directional loop cost `default`'s lighting pass 4-5 ms.
+struct LightKinds {
+  bool spot = false;
+  bool directional = false;
+};
+
 // Lights in the largest uniform-buffer window the lighting pass reads (64 KiB, the most llvmpipe and most GPUs
 // allow one uniform block). The buffer holds whole windows, so that every window bound is backed in full.
 constexpr uint32_t kLightWindowMax = 2048;

@@ -21,6 +21,7 @@ void LightBuffer::uploadDirectional(const std::vector<DirectionalLight>& directi
     block.lights[i] = {glm::vec4(-d.direction, 0.0f), glm::vec4(d.color, d.illuminance)};
   }
   directionalBlock_.update(block);
+  hasDirectional_ = !directional.empty();
 }
 
 void LightBuffer::uploadPoints(const std::vector<PointLight>& lights) {

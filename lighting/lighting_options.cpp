@@ -17,7 +17,7 @@ std::pair<const char*, const char*> radianceImageFormat(HdrFormat format) {
 }
 
 ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrFormat radiance, bool chunked,
-                                  bool spotLights, uint32_t lightWindow) {
+                                  LightKinds kinds, uint32_t lightWindow) {
   const bool blinnPhong = o.model == ShadingModel::BlinnPhong;
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   const auto [qualifier, maximum] = radianceImageFormat(radiance);
@@ -32,7 +32,8 @@ ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrF
   defines.push_back({"LIGHTING_PAIR_IMAGE", flag(o.pairCounts != nullptr)});
   defines.push_back({"IBL", flag(o.ibl())});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
-  defines.push_back({"SPOT_LIGHTS", flag(spotLights)});
+  defines.push_back({"SPOT_LIGHTS", flag(kinds.spot)});
+  defines.push_back({"DIRECTIONAL_LIGHTS", flag(kinds.directional)});
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
   defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
   defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});

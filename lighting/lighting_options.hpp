@@ -91,7 +91,7 @@ std::pair<const char*, const char*> radianceImageFormat(HdrFormat format);
 // The defines of lighting/deferred.comp for these options (Blinn-Phong takes no PBR variant, nor IBL), on a radiance
 // target of `radiance`'s format.
 ShaderDefines lightingPermutation(const LightingOptions& options, bool clustered, HdrFormat radiance,
-                                  bool chunked = false, bool spotLights = false,
+                                  bool chunked = false, LightKinds kinds = {},
                                   uint32_t lightWindow = kLightWindowMax);
 
 }  // namespace pbr

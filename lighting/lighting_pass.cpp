@@ -21,9 +21,9 @@ uint32_t lightWindowLights() {
 }
 
 const Program& LightingPass::program(const LightingOptions& o, bool clustered, unsigned radianceFormat, bool chunked,
-                                     bool spotLights) {
+                                     LightKinds kinds) {
   const ShaderDefines permutation =
-      lightingPermutation(o, clustered, hdrFormatOf(radianceFormat), chunked, spotLights, lightWindow_);
+      lightingPermutation(o, clustered, hdrFormatOf(radianceFormat), chunked, kinds, lightWindow_);
   return programs_.compute("lighting/deferred.comp", concat(permutation, lightingBindingDefines()));
 }
 
@@ -68,7 +68,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
     throw std::logic_error("the lighting pass needs an RGBA32F running-sum image of the frame's size over " +
                            std::to_string(perDispatch) + " lights");
   }
-  const Program& shader = program(options, clustered, radiance.format(), chunked, lights.hasSpotLights());
+  const Program& shader = program(options, clustered, radiance.format(), chunked, lights.kinds());
   bindShading(lights, options, frame, clusters);
   if (options.stats) {
     pairGroups_ = static_cast<size_t>(groupsX) * groupsY;
@@ -123,7 +123,7 @@ void LightingPass::render(const SurfaceTextures& surface, const LightBuffer& lig
   // 11 ns a pixel (9 ms for helmet-grid's sky at 1280x720).
   if (options.ibl() || options.pairCounts || (options.shadows && options.shadowLight)) {
     ShaderDefines background = lightingPermutation(options, clustered, hdrFormatOf(radiance.format()), false,
-                                                   lights.hasSpotLights(), lightWindow_);
+                                                   lights.kinds(), lightWindow_);
     background.push_back({"BACKGROUND_TILES", "1"});
     programs_.compute("lighting/deferred.comp", concat(background, lightingBindingDefines())).use();
     glDispatchComputeIndirect(offsetof(SurfaceTilesHeader, backgroundDispatch));
@@ -149,8 +149,7 @@ void LightingPass::renderBlended(const BlendedSurfaces& surfaces, const Transmis
   const uint32_t chunks = std::max(1u, (lights.count() + perDispatch - 1) / perDispatch);
   const bool chunked = chunks > 1;
   const ShaderDefines lighting =
-      lightingPermutation(forward, clustered, hdrFormatOf(radiance.format()), chunked, lights.hasSpotLights(),
-                          lightWindow_);
+      lightingPermutation(forward, clustered, hdrFormatOf(radiance.format()), chunked, lights.kinds(), lightWindow_);
   bindShading(lights, forward, frame, clusters);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

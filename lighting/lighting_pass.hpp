@@ -132,7 +132,7 @@ class LightingPass {
 
  private:
   const Program& program(const LightingOptions& options, bool clustered, unsigned radianceFormat, bool chunked,
-                         bool spotLights);
+                         LightKinds kinds);
   // Binds the frame, the lights, the lists, the environment or ambient table and the shadow maps for shading.
   void bindShading(const LightBuffer& lights, const LightingOptions& options, const UniformBuffer<FrameBlock>& frame,
                    const LightClusters* clusters);

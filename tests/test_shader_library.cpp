@@ -192,7 +192,9 @@ TEST_CASE("shader library: every program the renderer builds from the project's 
         options.pairCounts = nullptr;
         lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));
         lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true));
-        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, false, true));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, false, {true, false}));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, false, {false, true}));
+        lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f, true, {true, true}));
         // With unlit surfaces in the G-buffer, in one dispatch and in light chunks.
         options.unlitSurfaces = true;
         lighting.push_back(pbr::lightingPermutation(options, clustered, pbr::HdrFormat::Rgba16f));

@@ -121,7 +121,8 @@ void visitLight(Surface s, uint k) {
 }
 
 // Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
-// directional lights (shadowed where they cast), added in their order.
+// directional lights (shadowed where they cast), added in their order. DIRECTIONAL_LIGHTS 0: the frame has none, and
+// the loop is left out, since llvmpipe runs a loop's body once under an empty lane mask even over no light.
 vec3 shadeEnvironment(Surface s) {
 #if IBL && (MATERIAL_CLEARCOAT || MATERIAL_SHEEN)
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0);
@@ -145,6 +146,7 @@ vec3 shadeEnvironment(Surface s) {
 #else
   vec3 color = shadeAmbient(s);
 #endif
+#if DIRECTIONAL_LIGHTS
   for (uint i = 0u; i < directionalCount.x; ++i) {
 #if SHADOWS
     vec3 c = shadeDirectional(s, directionalLights[i]);
@@ -160,6 +162,7 @@ vec3 shadeEnvironment(Surface s) {
     color += shadeDirectional(s, directionalLights[i]);
 #endif
   }
+#endif
   return color;
 }
 
