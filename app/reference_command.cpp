@@ -41,7 +41,7 @@ struct ReferenceRequest {
   reference::ReferenceOptions options;
   Scene scene;
   ExposureChoice exposure;
-  ToneCurve curve = ToneCurve::AcesHill;
+  ToneCurve curve{};  // readToneCurve's
 };
 
 ReferenceRequest readRequest(const Args& args) {

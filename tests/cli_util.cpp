@@ -60,6 +60,15 @@ PbrRun runPbr(const TempDir& dir, const std::vector<std::string>& args, const st
 
 bool isOneLine(const std::string& s) { return !s.empty() && s.back() == '\n' && s.find('\n') == s.size() - 1; }
 
+HelpMeaning helpMeaning(const HelpEntry& entry) {
+  const std::string swept = "; a comma-separated list, each measured in turn";
+  const size_t stated = entry.text.rfind(" (default");
+  HelpMeaning m{stated == std::string::npos ? entry.text : entry.text.substr(0, stated)};
+  m.swept = m.text.size() > swept.size() && m.text.compare(m.text.size() - swept.size(), swept.size(), swept) == 0;
+  if (m.swept) m.text.resize(m.text.size() - swept.size());
+  return m;
+}
+
 std::vector<HelpEntry> helpEntries(const std::string& help) {
   std::vector<HelpEntry> entries;
   const size_t options = help.find("\noptions:\n");

@@ -60,4 +60,12 @@ struct HelpEntry {
 // The options a help text lists under "options:", in its order.
 std::vector<HelpEntry> helpEntries(const std::string& help);
 
+// What a help entry says its option means: the description without its default clause and, for an option pbr bench
+// sweeps, without the suffix that says so (`swept`).
+struct HelpMeaning {
+  std::string text;
+  bool swept = false;
+};
+HelpMeaning helpMeaning(const HelpEntry& entry);
+
 }  // namespace pbr::test

@@ -140,22 +140,17 @@ TEST_CASE("cli help: every option that takes a value says what its absence means
 }
 
 TEST_CASE("cli help: an option means the same in every command that takes it, only its default may differ") {
-  // pbr bench sweeps some options: a comma-separated list of the values the others take, each measured in turn.
-  const std::string swept = "; a comma-separated list, each measured in turn";
-  const auto meaning = [](const HelpEntry& e) {
-    const size_t stated = e.text.rfind(" (default");
-    return stated == std::string::npos ? e.text : e.text.substr(0, stated);
-  };
   std::map<std::string, std::pair<std::string, HelpEntry>> first;  // option -> the first command and its entry
   int shared = 0;
   for (const std::string& command : kCommands) {
     for (const auto& [option, entry] : helpOf(command)) {
       if (option == "--help") continue;  // pbr view lists its keys after it
       HelpEntry e = entry;
-      e.text = meaning(entry);
-      if (command == "bench" && e.text.size() > swept.size() &&
-          e.text.compare(e.text.size() - swept.size(), swept.size(), swept) == 0) {
-        e.text.resize(e.text.size() - swept.size());
+      // pbr bench sweeps some options: a comma-separated list of the values the others take, each measured in turn.
+      const pbr::test::HelpMeaning meaning = pbr::test::helpMeaning(entry);
+      e.text = meaning.text;
+      if (meaning.swept) {
+        CHECK(command == "bench");
         CHECK(e.synopsis == option + " LIST");
         e.synopsis.clear();
       }

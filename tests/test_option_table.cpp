@@ -17,12 +17,6 @@ const std::vector<pbr::Command> kCommands = {pbr::Command::Render,     pbr::Comm
                                              pbr::Command::View,       pbr::Command::Reference,
                                              pbr::Command::Accuracy};
 
-// What a help entry's description says once its default clause is cut off.
-std::string meaning(const std::string& text) {
-  const size_t stated = text.rfind(" (default");
-  return stated == std::string::npos ? text : text.substr(0, stated);
-}
-
 // A help's description is the row's text wrapped at spaces: compare word by word.
 std::vector<std::string> words(const std::string& text) {
   std::vector<std::string> out;
@@ -38,8 +32,6 @@ std::vector<std::string> words(const std::string& text) {
 
 TEST_CASE("option table: every command's --help lists rows of the one table, and every row serves a command") {
   const std::vector<pbr::OptionSpec>& table = pbr::optionTable();
-  // pbr bench sweeps some options: the row's meaning, then how a list of its values is measured.
-  const std::string swept = "; a comma-separated list, each measured in turn";
   std::set<std::string> taken;
   for (const pbr::Command command : kCommands) {
     const pbr::test::TempDir dir;
@@ -60,15 +52,15 @@ TEST_CASE("option table: every command's --help lists rows of the one table, and
                                     [&](const pbr::OptionSpec& s) { return s.name == entry.name; });
       REQUIRE(row != table.end());
       taken.insert(row->name);
-      std::string text = meaning(entry.text);
+      // pbr bench sweeps some options: the row's meaning, then how a list of its values is measured.
+      const pbr::test::HelpMeaning meaning = pbr::test::helpMeaning(entry);
       std::string metavar = row->metavar;
-      if (text.size() > swept.size() && text.compare(text.size() - swept.size(), swept.size(), swept) == 0) {
+      if (meaning.swept) {
         CHECK(name == "bench");
-        text.resize(text.size() - swept.size());
         metavar = "LIST";
       }
       CHECK(entry.synopsis == row->name + (metavar.empty() ? "" : " " + metavar));
-      CHECK(words(text) == words(row->help));
+      CHECK(words(meaning.text) == words(row->help));
     }
   }
   for (const pbr::OptionSpec& row : table) {
