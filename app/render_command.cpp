@@ -100,6 +100,10 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                   "%.2f ms planning, %.2f ms recording %u draws (%s)\n",
                   h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view");
     }
+    if (h.planesLeftOut) {
+      std::printf("shadows: %u planar casters left out of views (no visible surface beyond their plane from the "
+                  "light)\n", h.planesLeftOut);
+    }
     if (h.cascadeTexelMax > 0.0f) {
       std::printf("shadows: directional cascades' texels %.3g-%.3g scene units (metres) across\n",
                   double(h.cascadeTexelMin), double(h.cascadeTexelMax));

@@ -239,6 +239,33 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   unlit_ = hasUnlitSurface(scene);
   opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
   transmissive_ = std::any_of(draws_.begin(), draws_.end(), [](const Draw& d) { return d.transmissive; });
+  for (const MeshData& mesh : scene.meshes) meshPlanar_.push_back(casterPlane(mesh, glm::mat4(1.0f)).has_value());
+  findCasterPlanes(scene);
+}
+
+void GBufferPass::findCasterPlanes(const Scene& scene) {
+  struct Found {
+    size_t draw;
+    CasterPlane plane;
+    float area;
+  };
+  std::vector<Found> found;
+  for (size_t i = 0; i < draws_.size(); ++i) {
+    Draw& d = draws_[i];
+    d.planeSlot = -1;
+    if (!d.castsShadow || !meshPlanar_[static_cast<size_t>(d.mesh)]) continue;
+    const SceneObject& o = scene.objects.at(static_cast<size_t>(d.blockOffset / blockStride_));
+    if (const std::optional<CasterPlane> plane = casterPlane(scene.meshes.at(size_t(d.mesh)), o.transform)) {
+      const glm::vec3 e = d.bounds.max - d.bounds.min;
+      found.push_back({i, *plane, e.x * e.y + e.y * e.z + e.z * e.x});
+    }
+  }
+  std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.area > b.area; });
+  casterPlanes_.clear();
+  for (size_t k = 0; k < found.size() && k < kMaxCasterPlanes; ++k) {
+    draws_[found[k].draw].planeSlot = int(k);
+    casterPlanes_.push_back(found[k].plane);
+  }
 }
 
 void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changedMeshes) {
@@ -255,6 +282,10 @@ void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changed
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
     bounds_.add(d.bounds);
   }
+  for (const int m : changedMeshes) {
+    meshPlanar_.at(size_t(m)) = casterPlane(scene.meshes.at(size_t(m)), glm::mat4(1.0f)).has_value();
+  }
+  findCasterPlanes(scene);
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {
@@ -403,8 +434,8 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
-                                bool viewportFromVertex) {
+ShadowCasterDraws GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
+                                           bool viewportFromVertex) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
@@ -446,7 +477,9 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
     glNamedBufferSubData(shadowViews_->id(), 0, GLsizeiptr(blocks.size()), blocks.data());
   }
 
-  size_t drawn = 0;
+  ShadowCasterDraws drawn;
+  drawn.rects.resize(views.size());
+  for (size_t v = 0; v < views.size(); ++v) drawn.rects[v] = glm::ivec4(views[v].viewport.x, views[v].viewport.y, 0, 0);
   std::vector<const GpuMesh*> meshes(kViewsPerDraw);
   std::vector<FrustumPlanes> planes(kViewsPerDraw);
   std::vector<glm::vec4> wRows(kViewsPerDraw);
@@ -472,10 +505,13 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
       bool any = false;
       for (size_t i = 0; i < count; ++i) {
         const ShadowCasterView& v = views[first + i];
-        const bool seen = !outsideFrustum(planes[i], draw.bounds) &&
+        const bool seen = !(draw.planeSlot >= 0 && (v.skipPlanes >> draw.planeSlot & 1u) != 0u) &&
+                          !outsideFrustum(planes[i], draw.bounds) &&
                           !(v.reach.w > 0.0f && !overlapsSphere(draw.bounds, glm::vec3(v.reach), v.reach.w));
         meshes[i] = seen ? &casterMesh(draw, v, wRows[i]) : nullptr;
         any = any || seen;
+        if (seen) drawn.rects[first + i] = joinRects(drawn.rects[first + i],
+                                                     coveredRect(draw.bounds, v.viewProjection, v.viewport));
       }
       if (!any) continue;
       if (depthPrograms[d] != bound) depthPrograms[d]->use();
@@ -501,7 +537,7 @@ size_t GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCast
           }
           glProgramUniform1ui(bound->id(), 0, GLuint(i));
           meshes[i]->drawInstanced(int(end - i));
-          ++drawn;
+          ++drawn.draws;
         }
         i = end;
       }

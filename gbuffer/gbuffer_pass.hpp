@@ -5,6 +5,7 @@
 
 #include "core/gl/blended_surfaces.hpp"
 #include "core/scene/bounds.hpp"
+#include "core/scene/caster_plane.hpp"
 #include "core/scene/frame_block.hpp"
 #include "core/gl/gpu_mesh.hpp"
 #include "core/gl/gpu_texture.hpp"
@@ -36,8 +37,9 @@ class GBufferPass {
   // `viewportFromVertex` (GL_ARB_shader_viewport_layer_array, ShadowDraws::PerLight) a caster takes one instanced
   // draw per run of them that sees it with one tessellation, each instance choosing its view's viewport in the
   // vertex shader; without it, a draw per view. The depth programs are compiled on first use. Returns the draws
-  // made.
-  size_t renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views, bool viewportFromVertex);
+  // made and the texels each view's casters may have written.
+  ShadowCasterDraws renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
+                                bool viewportFromVertex);
   // Views one shadow draw may cover: GL's least number of viewports (shaders/gbuffer/shadow_depth.vert).
   static constexpr size_t kViewsPerDraw = 16;
   // Whether the scene has forward-shaded objects (BLEND or transmissive), which the G-buffer leaves out and
@@ -59,6 +61,9 @@ class GBufferPass {
   bool hasTransmissive() const { return transmissive_; }
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }
+  // The planes of the planar casters (casterPlane), the kMaxCasterPlanes largest by their boxes' area: a view whose
+  // ShadowCasterView::skipPlanes has bit i set leaves plane i's caster out.
+  const std::vector<CasterPlane>& casterPlanes() const { return casterPlanes_; }
 
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
   // OCCLUSION_MAP, EMISSIVE_MAP, ALPHA_MASK and UNLIT, each 0 or 1.
@@ -95,7 +100,10 @@ class GBufferPass {
     glm::vec3 sphereCentre;
     float sphereRadius;
     size_t triangles;
+    int planeSlot = -1;  // its casterPlanes_ index, -1 for none
   };
+  // The planar casters' planes and slots, from the objects' poses (after draws_ and meshPlanar_ are made).
+  void findCasterPlanes(const Scene& scene);
   // The tessellation a caster is drawn with in view `v`, whose w row (the distance along a perspective view's axis,
   // 1 in an orthographic one) is `wRow`: its own mesh, or for a sphere the coarsest of sphereLods_ that stays within
   // half a texel of the sphere (the rasterizer's own rounding of a silhouette; the facets lie inside the sphere, so
@@ -110,6 +118,8 @@ class GBufferPass {
   std::array<std::vector<const Program*>, 2> depthPrograms_;
   std::unique_ptr<Buffer> shadowViews_;  // renderDepth's blocks of view-projections
   std::vector<GpuMesh> meshes_;
+  std::vector<bool> meshPlanar_;  // per mesh: all its vertices in one plane (planarity survives any pose's affine map)
+  std::vector<CasterPlane> casterPlanes_;
   std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;  // the opaque and masked first, then the blended

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include <glm/vec4.hpp>
@@ -58,6 +59,15 @@ std::unique_ptr<Buffer> zeroedBuffer(const char* label, uint64_t bytes) {
 
 }  // namespace
 
+namespace {
+
+// The occupancy pass's defines: with CASTER_PLANES planes, each point also finds its sides of them.
+ShaderDefines casterPlaneDefines(size_t planes) {
+  return {{"CASTER_PLANES", std::to_string(planes)}, {"MAX_CASTER_PLANES", std::to_string(kMaxCasterPlanes)}};
+}
+
+}  // namespace
+
 float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) {
   return nearPlane * std::pow(farPlane / nearPlane, static_cast<float>(slice) / static_cast<float>(slices));
 }
@@ -65,7 +75,8 @@ float clusterSliceDepth(float nearPlane, float farPlane, int slice, int slices) 
 LightClusters::LightClusters(ProgramCache& programs, const ClusterConfig& config)
     : config_(config),
       programs_(programs),
-      occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp", lightingBindingDefines())),
+      occupancyProgram_(programs.compute("lighting/cluster_occupancy.comp",
+                                         concat(casterPlaneDefines(0), lightingBindingDefines()))),
       activateProgram_(programs.compute("lighting/cluster_activate.comp", lightingBindingDefines())),
       tileBoxesProgram_(programs.compute("lighting/cluster_tile_boxes.comp", lightingBindingDefines())),
       compactProgram_(programs.compute("lighting/cluster_compact.comp", lightingBindingDefines())),
@@ -331,8 +342,20 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   block_.bind(lighting_binding::kClusterUbo.index);
   occupancy_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kClusterOccupancySsbo.index);
   glBindTextureUnit(lighting_binding::kDepthUnit.index, depth.id());
+  const size_t planes = casterPlaneCount_;
+  if (planes > 0) {
+    if (!planeSides_) planeSides_ = std::make_unique<Buffer>("clusters.planeSides", 16, nullptr, 0);
+    const uint32_t none = 0;
+    glClearNamedBufferData(planeSides_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    casterPlanesBuffer_->bind(lighting_binding::kCasterPlanesUbo.index);
+    planeSides_->bindBase(GL_SHADER_STORAGE_BUFFER, lighting_binding::kPlaneSidesSsbo.index);
+  }
   const DebugGroup group("cluster occupancy");
-  occupancyProgram_.use();
+  const Program& program =
+      planes > 0 ? programs_.compute("lighting/cluster_occupancy.comp", concat(casterPlaneDefines(planes),
+                                                                                  lightingBindingDefines()))
+                 : occupancyProgram_;
+  program.use();
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glDispatchCompute(groupsFor(static_cast<uint32_t>(f.viewport.x), 8),
                     groupsFor(static_cast<uint32_t>(f.viewport.y), 8), 1);
@@ -340,7 +363,9 @@ void LightClusters::occupy(const FrameBlock& f, const UniformBuffer<FrameBlock>&
   if (!blended) return;
   const DebugGroup blendedGroup("cluster occupancy (blended surfaces)");
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  BlendedPrograms programs(programs_, "lighting/cluster_occupancy.frag", occupancyBindingDefines);
+  BlendedPrograms programs(programs_, "lighting/cluster_occupancy.frag", [planes](const std::vector<BindingPoint>& g) {
+    return concat(casterPlaneDefines(planes), occupancyBindingDefines(g));
+  });
   blended->draw(
       [&](int, const std::string& vertexShader, const ShaderDefines& material,
           const std::vector<BindingPoint>& bindings) -> const Program& {
@@ -355,6 +380,32 @@ void LightClusters::measureOccupancy(const FrameBlock& f, const UniformBuffer<Fr
                                      const Texture& depth, const BlendedSurfaces* blended) {
   if (!headers_ || f.viewport != gridKey_ || f.projParams != gridKey2_ || builtTile_ != tileSize_) rebuildGrid(f);
   occupy(f, frame, depth, blended);
+}
+
+void LightClusters::setCasterPlanes(const std::vector<CasterPlane>& planes, const glm::mat4& toWorld) {
+  const size_t count = std::min(planes.size(), kMaxCasterPlanes);
+  casterPlaneCount_ = count;
+  if (count == 0) return;
+  // A plane p (p . x = 0 for x on it, x homogeneous) is p . toWorld y in view space: p times toWorld's columns;
+  // the view is rigid, so the normal stays a unit vector.
+  for (size_t i = 0; i < count; ++i) {
+    const glm::vec4& p = planes[i].plane;
+    casterPlanes_.planes[i] = glm::vec4(glm::dot(p, toWorld[0]), glm::dot(p, toWorld[1]), glm::dot(p, toWorld[2]),
+                                        glm::dot(p, toWorld[3]));
+    casterPlanes_.tolerances[i] = glm::vec4(planes[i].thickness, 0.0f, 0.0f, 0.0f);
+  }
+  if (!casterPlanesBuffer_) {
+    casterPlanesBuffer_ = std::make_unique<UniformBuffer<CasterPlanesBlock>>("clusters.casterPlanes");
+  }
+  casterPlanesBuffer_->update(casterPlanes_);
+}
+
+uint32_t LightClusters::planeSides() const {
+  if (casterPlaneCount_ == 0 || !planeSides_) return ~0u;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  uint32_t sides = 0;
+  glGetNamedBufferSubData(planeSides_->id(), 0, sizeof sides, &sides);
+  return sides;
 }
 
 std::vector<ViewSpaceBox> LightClusters::occupiedBoxes() {

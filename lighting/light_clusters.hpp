@@ -13,6 +13,7 @@
 #include "core/scene/bounds.hpp"
 #include "core/scene/frame_block.hpp"
 #include "lighting/assign_shape_trials.hpp"
+#include "lighting/caster_planes_block.hpp"
 #include "lighting/cluster_block.hpp"
 #include "lighting/cluster_config.hpp"
 #include "lighting/light_buffer.hpp"
@@ -57,6 +58,12 @@ class LightClusters {
   // them, with their screen tiles, in view space, in cluster order. Waits for the GPU: the occupied clusters are
   // compacted on it (cluster_compact.comp), and read back as their count, then 32 bytes each.
   std::vector<ViewSpaceBox> occupiedBoxes();
+  // The planar casters' planes (world space) the next occupancy passes test each visible point against, `toWorld`
+  // the camera's inverse view matrix; none (the default) tests nothing. At most kMaxCasterPlanes.
+  void setCasterPlanes(const std::vector<CasterPlane>& planes, const glm::mat4& toWorld);
+  // The sides of those planes the last occupancy found visible points on (receiversAbove/Below); every side where
+  // it tested none. Waits for the GPU: read with occupiedBoxes.
+  uint32_t planeSides() const;
   // Binds the cluster block, headers, index list and status for the lighting pass and debug views.
   void bindForLighting() const;
 
@@ -138,6 +145,10 @@ class LightClusters {
   std::array<std::unique_ptr<Buffer>, 2> slotMasks_;  // shaders/lighting/slot_masks.glsl
   std::unique_ptr<Buffer> bigLights_;
   std::unique_ptr<Buffer> occupied_;  // cluster_compact.comp's list, made on the first occupiedBoxes of a grid
+  CasterPlanesBlock casterPlanes_{};
+  size_t casterPlaneCount_ = 0;  // 0: the occupancy programs without the plane test
+  std::unique_ptr<UniformBuffer<CasterPlanesBlock>> casterPlanesBuffer_;  // made with the first planes
+  std::unique_ptr<Buffer> planeSides_;
   uint64_t maxBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   uint32_t slotCapacity_ = 0;   // clusters with masks (slots); more active ones are shaded by brute force
   uint32_t windowLights_ = 0;   // lights per mask window

@@ -14,6 +14,7 @@ ShaderDefines lightingBindingDefines() {
        kLightSsbo, kClusterSsbo, kLightIndexSsbo, kLightVisibleSsbo, kSpotConeSsbo, kClusterStatusSsbo,
        kLightingStatsSsbo, kClusterBoxesSsbo, kClusterSlotsSsbo, kSlotClustersSsbo, kClusterOccupancySsbo,
        kClusterCursorSsbo, kSlotMasksSsbo, kSlotMasksHighSsbo, kBigLightsSsbo, kOccupiedClustersSsbo, kSurfaceTilesSsbo,
+       kCasterPlanesUbo, kPlaneSidesSsbo,
        kBaseColorUnit, kNormalUnit, kMaterialUnit, kDepthUnit, kSpecularUnit, kClearcoatUnit, kSheenUnit,
        kRadianceImage, kPartialRadianceImage, kPairCountImage, kAmbientAlbedoUnit, kSheenAlbedoUnit, kIblUbo,
        kIblSpecularUnit, kIblDfgUnit, kIblSheenUnit, kShadowAtlasUnit, kShadowViewSsbo, kLightShadowSsbo, kShadowSquareSsbo,
@@ -35,7 +36,8 @@ ShaderDefines forwardBindingDefines(const std::vector<BindingPoint>& geometry) {
 
 ShaderDefines occupancyBindingDefines(const std::vector<BindingPoint>& geometry) {
   using namespace lighting_binding;
-  std::vector<BindingPoint> points = {kFrameUbo, kClusterUbo, kClusterOccupancySsbo};
+  std::vector<BindingPoint> points = {kFrameUbo, kClusterUbo, kClusterOccupancySsbo, kCasterPlanesUbo,
+                                      kPlaneSidesSsbo};
   points.insert(points.end(), geometry.begin(), geometry.end());
   return bindingDefines(points);
 }

@@ -29,6 +29,10 @@ constexpr BindingPoint kBigLightsSsbo{"BIG_LIGHTS_SSBO", BindingKind::StorageBuf
 constexpr BindingPoint kSlotMasksHighSsbo{"SLOT_MASKS_HIGH_SSBO", BindingKind::StorageBuffer, 14};
 // The occupied clusters compacted for the CPU's read-back (cluster_compact.comp).
 constexpr BindingPoint kOccupiedClustersSsbo{"OCCUPIED_CLUSTERS_SSBO", BindingKind::StorageBuffer, 20};
+// The planar casters' planes the occupancy pass tests visible points against, and the sides it finds them on
+// (cluster_occupancy.glsl, LightClusters::setCasterPlanes).
+constexpr BindingPoint kCasterPlanesUbo{"CASTER_PLANES_UBO", BindingKind::UniformBuffer, 11};
+constexpr BindingPoint kPlaneSidesSsbo{"PLANE_SIDES_SSBO", BindingKind::StorageBuffer, 23};
 // The lighting pass's tiles, sorted into those holding a surface and the others (surface_tiles.comp).
 constexpr BindingPoint kSurfaceTilesSsbo{"SURFACE_TILES_SSBO", BindingKind::StorageBuffer, 21};
 // The G-buffer channels as shaders/lighting/surface.glsl samples them.

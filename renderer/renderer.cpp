@@ -64,12 +64,15 @@ bool Renderer::shadowed(ShadowMode mode) {
   return shadowedCache_->second;
 }
 
+ShadowFrameKey Renderer::shadowFrameKey(const ShadowSettings& settings, bool clustered) {
+  return {frameData_, lightsVersion_, poseVersion_, settings.mode, settings.atlasSize,
+          shadowDrawsPerLight(settings.draws), clustered, targets_->clusters.askedTileSize(), config_.clusters.slices};
+}
+
 void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   FrameTargets& t = *targets_;
-  const bool perLight = shadowDrawsPerLight(settings.draws);
-  shadowDrawsPerLight_ = perLight;
-  const ShadowFrameKey key{frameData_, lightsVersion_, poseVersion_, settings.mode, settings.atlasSize, perLight,
-                           clustered,  t.clusters.askedTileSize(),  config_.clusters.slices};
+  const ShadowFrameKey key = shadowFrameKey(settings, clustered);
+  shadowDrawsPerLight_ = key.drawsPerLight;
   if (settings.cache && scene_.shadows.reuse(key)) {
     shadowReadBackMs_ = 0.0;
     return;
@@ -77,11 +80,13 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   if (!clustered) {
     const BlendedSurfaces blended = blendedSurfaces(t.blendTarget.id());
+    t.clusters.setCasterPlanes(scene_.geometry.casterPlanes(), frameData_.inverseView);
     t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,
                                 scene_.geometry.hasBlended() ? &blended : nullptr);
   }
   const auto start = std::chrono::steady_clock::now();
   const ShadowReceivers receivers(t.clusters.occupiedBoxes(), frameData_.inverseView);
+  const uint32_t planeSides = t.clusters.planeSides();
   shadowReadBackMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const ShadowInputs inputs{camera_,
                             float(width()) / float(height()),
@@ -92,10 +97,12 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
                             scene_.geometry.bounds(),
                             receivers,
                             settings.mode,
-                            settings.atlasSize};
+                            settings.atlasSize,
+                            scene_.geometry.casterPlanes(),
+                            planeSides};
   scene_.shadows.render(
       inputs,
-      [this, perLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
+      [this, perLight = key.drawsPerLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
         return scene_.geometry.renderDepth(framebuffer, views, perLight);
       },
       key, settings.cache);
@@ -169,8 +176,19 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
   if (clustered) {
     std::vector<R> clusterReads = {R::Lights, R::Camera, R::GBuffer};
     if (blended) clusterReads.push_back(R::Geometry);  // the BLEND surfaces occupy clusters too
-    passes.push_back({"cluster", clusterReads, {R::ClusterLists}, [this, &t, blended, stats = options.stats] {
+    // Shadow views leave out the planar casters that hide no visible surface: the occupancy finds their sides.
+    const bool drawsShadows = shadows && !unlit;
+    passes.push_back({"cluster", clusterReads, {R::ClusterLists}, [this, &t, blended, drawsShadows, clustered,
+                                                                   settings = options.shadows,
+                                                                   stats = options.stats] {
                         const BlendedSurfaces surfaces = blendedSurfaces(t.blendTarget.id());
+                        // Only a frame that draws its maps asks which sides of the caster planes its surfaces
+                        // lie on: one that keeps them skips the test's cost.
+                        const bool drawsMaps = drawsShadows && !(settings.cache && scene_.shadows.holds(
+                                                                     shadowFrameKey(settings, clustered)));
+                        t.clusters.setCasterPlanes(drawsMaps ? scene_.geometry.casterPlanes()
+                                                             : std::vector<CasterPlane>{},
+                                                   frameData_.inverseView);
                         markCulling(CullingChoice::ClusterBegin);
                         t.clusters.assign(frameData_, frame_, scene_.lights, t.gbuffer.depth,
                                           blended ? &surfaces : nullptr, stats);

@@ -109,6 +109,8 @@ class Renderer {
   // Drawn into `framebuffer`: the radiance target's or the order-independent targets', over the G-buffer's depth.
   BlendedSurfaces blendedSurfaces(GLuint framebuffer);
   void renderShadows(const ShadowSettings& settings, bool clustered);
+  // What this frame's shadow maps depend on (ShadowFrameKey).
+  ShadowFrameKey shadowFrameKey(const ShadowSettings& settings, bool clustered);
   // Whether the shadow casters are drawn a light's views at once (ShadowDraws); throws where PerLight is asked of a
   // driver without the extension it needs.
   bool shadowDrawsPerLight(ShadowDraws draws);

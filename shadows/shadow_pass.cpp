@@ -14,10 +14,11 @@ namespace pbr {
 
 namespace {
 
-// Whether two views draw the same depths into their squares: the same square, matrix, reach and texel size (the
-// caster culling and tessellation read no more), bit for bit.
+// Whether two views draw the same depths into their squares: the same square, matrix, reach, texel size and planes
+// left out (the caster culling and tessellation read no more), bit for bit.
 bool sameDepths(const ShadowCasterView& a, const ShadowCasterView& b) {
   return a.viewport == b.viewport && a.reach == b.reach && a.texelWorld == b.texelWorld &&
+         a.skipPlanes == b.skipPlanes &&
          std::memcmp(&a.viewProjection, &b.viewProjection, sizeof(glm::mat4)) == 0;
 }
 
@@ -44,7 +45,7 @@ ShadowPass::ShadowPass() : sampler_("shadows.atlasSampler", GL_CLAMP_TO_EDGE, GL
 }
 
 bool ShadowPass::reuse(const ShadowFrameKey& key) {
-  if (!renderedFor_ || !(*renderedFor_ == key)) return false;
+  if (!holds(key)) return false;
   stats_.reused = true;
   stats_.viewsKept = stats_.viewsRendered;
   stats_.readBackMs = stats_.planMs = stats_.recordMs = 0.0;
@@ -69,6 +70,9 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     framebuffer_->attach(GL_DEPTH_ATTACHMENT, *atlas_);
     glNamedFramebufferDrawBuffer(framebuffer_->id(), GL_NONE);
     framebuffer_->checkComplete();
+    const float far = 0.0f;
+    glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
+    dirty_.clear();
   }
 
   // The header, its directional entries pointing at the cascades' records, which follow it.
@@ -98,7 +102,8 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
     const ShadowViewPlan& v = plan.views[i];
     squares[i] = packShadowSquare(v.origin, v.size);
     if (v.size > 0) {
-      casterViews.push_back({v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld, v.light});
+      casterViews.push_back(
+          {v.viewProjection, glm::ivec4(v.origin, v.size, v.size), v.reach, v.texelWorld, v.light, v.skipPlanes});
     }
   }
   ensureBuffer(views_, "shadows.views", bytes.size());
@@ -124,27 +129,69 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
       toDraw.push_back(v);
     }
   }
-  // The squares are cleared to the far depth (0) before their casters are drawn; the rest of the atlas is never
-  // read. A scissored clear is drawn as a quad on llvmpipe (about 1.1 ns a texel) where a whole clear fills memory
-  // (about 0.3 ns a texel), so when every square is drawn and they cover a quarter of the atlas or more, all of it
-  // is cleared; a GPU clears a whole depth target the fastest of all.
-  const float far = 0.0f;
-  const uint64_t atlasTexels = uint64_t(inputs.atlasSize) * uint64_t(inputs.atlasSize);
-  if (stats_.viewsKept == 0 && 4 * stats_.texelsUsed >= atlasTexels) {
-    glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
-  } else {
-    glEnable(GL_SCISSOR_TEST);
-    for (const ShadowCasterView& v : toDraw) {
-      glScissor(v.viewport.x, v.viewport.y, v.viewport.z, v.viewport.w);
-      glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
+  clearSquares(toDraw, stats_.viewsKept > 0);
+  if (!toDraw.empty()) {
+    const ShadowCasterDraws drawn = drawCasters(framebuffer_->id(), toDraw);
+    stats_.draws = uint32_t(drawn.draws);
+    for (const glm::ivec4& r : drawn.rects) {
+      if (!emptyRect(r)) dirty_.push_back(r);
     }
-    glDisable(GL_SCISSOR_TEST);
   }
-  if (!toDraw.empty()) stats_.draws = uint32_t(drawCasters(framebuffer_->id(), toDraw));
   stats_.recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planned).count();
   lastViews_ = std::move(plan.views);  // kept for ownerMap, not copied
   atlasViews_ = std::move(casterViews);
   renderedFor_ = key;
+}
+
+void ShadowPass::clearSquares(const std::vector<ShadowCasterView>& toDraw, bool viewsKept) {
+  // Which square to draw each kMinShadowView-texel cell of the atlas lies in (+ 1, 0 none): squares are powers of
+  // two of at least that side on a grid of their own size.
+  const int atlas = atlas_->width(), cells = atlas / kMinShadowView;
+  std::vector<uint32_t> cellView(size_t(cells) * size_t(cells), 0u);
+  for (size_t i = 0; i < toDraw.size(); ++i) {
+    const glm::ivec4& r = toDraw[i].viewport;
+    for (int y = r.y / kMinShadowView; y < (r.y + r.w) / kMinShadowView; ++y) {
+      for (int x = r.x / kMinShadowView; x < (r.x + r.z) / kMinShadowView; ++x) {
+        cellView[size_t(y) * size_t(cells) + size_t(x)] = uint32_t(i) + 1u;
+      }
+    }
+  }
+  // The dirty texels inside those squares; a dirty rectangle wholly inside one is clean after the clear.
+  std::vector<glm::ivec4> clears, stillDirty;
+  uint64_t texels = 0;
+  for (const glm::ivec4& d : dirty_) {
+    bool cleared = false;
+    std::vector<uint32_t> met;  // the squares this rectangle reaches, a few at most
+    for (int y = d.y / kMinShadowView; y <= (d.y + d.w - 1) / kMinShadowView; ++y) {
+      for (int x = d.x / kMinShadowView; x <= (d.x + d.z - 1) / kMinShadowView; ++x) {
+        const uint32_t view = cellView[size_t(y) * size_t(cells) + size_t(x)];
+        if (view == 0u || std::find(met.begin(), met.end(), view) != met.end()) continue;
+        met.push_back(view);
+        const glm::ivec4 c = intersectRects(d, toDraw[view - 1u].viewport);
+        if (emptyRect(c)) continue;
+        clears.push_back(c);
+        texels += uint64_t(c.z) * uint64_t(c.w);
+        cleared = cleared || c == d;
+      }
+    }
+    if (!cleared) stillDirty.push_back(d);
+  }
+  // A scissored clear is drawn as a quad on llvmpipe (about 1.1 ns a texel), where a whole clear fills memory
+  // (about 0.3 ns a texel): when the texels to clear are a quarter of the atlas or more, all of it is cleared, unless
+  // a view kept from the frame before would lose its depths. A GPU clears either way in a fraction of that.
+  const float far = 0.0f;
+  if (!viewsKept && 4 * texels >= uint64_t(atlas) * uint64_t(atlas)) {
+    glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
+    dirty_.clear();
+    return;
+  }
+  glEnable(GL_SCISSOR_TEST);
+  for (const glm::ivec4& c : clears) {
+    glScissor(c.x, c.y, c.z, c.w);
+    glClearNamedFramebufferfv(framebuffer_->id(), GL_DEPTH, 0, &far);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  dirty_ = std::move(stillDirty);
 }
 
 ShadowMaps ShadowPass::maps() const {

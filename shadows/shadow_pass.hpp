@@ -11,9 +11,8 @@
 
 namespace pbr {
 
-// Draws the scene's casters' depth into `framebuffer`, once per view: the renderer hands in the geometry pass's
-// depth drawing, so that this pass knows no other.
-// Draws the casters into the views' squares; returns the draw calls made.
+// Draws the scene's casters' depth into `framebuffer`, once per view, into the views' squares: the renderer hands
+// in the geometry pass's depth drawing, so that this pass knows no other.
 // What a frame's maps depend on besides the scene's meshes and materials: the camera and frame size (views are sized
 // from the screen and rendered only where they meet the visible surfaces), the lights and the objects' poses (which
 // the renderer counts, `lightsVersion` whenever lights are set, `poseVersion` whenever objects move), the cluster
@@ -32,7 +31,8 @@ struct ShadowFrameKey {
 };
 bool operator==(const ShadowFrameKey& a, const ShadowFrameKey& b);
 
-using DrawShadowCasters = std::function<size_t(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
+using DrawShadowCasters =
+    std::function<ShadowCasterDraws(GLuint framebuffer, const std::vector<ShadowCasterView>& views)>;
 
 // The frame's shadow maps: plans them (planShadows), renders the planned squares into one depth atlas and uploads
 // what the lighting pass reads (ShadowMaps). The atlas is allocated on the first shadowed frame, at the size the
@@ -48,6 +48,8 @@ class ShadowPass {
   // Whether the last render's maps are those of a frame of `key` (its key was equal): then they stay, and the stats
   // say so; the frame skips reading the occupancy back, planning and drawing.
   bool reuse(const ShadowFrameKey& key);
+  // Whether the atlas holds the maps of a frame of `key`, which reuse would keep.
+  bool holds(const ShadowFrameKey& key) const { return renderedFor_ && *renderedFor_ == key; }
   // Valid after render.
   ShadowMaps maps() const;
   const ShadowStats& stats() const { return stats_; }
@@ -70,6 +72,12 @@ class ShadowPass {
   ShadowStats stats_;
   std::optional<ShadowFrameKey> renderedFor_;  // the key of the frame the atlas holds
   std::vector<ShadowCasterView> atlasViews_;   // the views whose depths the atlas holds, by square
+  // Texels that may hold a caster's depth (what renderDepth reported, less what was cleared since): the rest of the
+  // atlas holds the far depth, so that a square need only have these cleared before it is drawn.
+  std::vector<glm::ivec4> dirty_;
+  // Clears the texels of the squares of `toDraw` that dirty_ says may hold depths, or the whole atlas where that is
+  // cheaper and no view is kept.
+  void clearSquares(const std::vector<ShadowCasterView>& toDraw, bool viewsKept);
 };
 
 }  // namespace pbr

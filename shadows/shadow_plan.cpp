@@ -161,6 +161,13 @@ ShadowPlan planShadows(const ShadowInputs& in) {
   for (size_t q = 0; q < requests.size(); ++q) {
     if (dropped[q]) continue;
     const Request& r = requests[q];
+    const glm::vec4 from = r.kind == Request::Directional
+                               ? glm::vec4(in.directional[r.index].direction, 0.0f)
+                               : glm::vec4(in.lights[in.bufferOrder[r.index]].position, 1.0f);
+    uint32_t skipPlanes = 0;
+    for (size_t p = 0; p < in.casterPlanes.size(); ++p) {
+      if (!planeMayShadow(in.casterPlanes[p], in.planeSides, p, from)) skipPlanes |= 1u << p;
+    }
     for (size_t v = 0; v < r.visible.size(); ++v) {
       ShadowViewPlan& view = plan.views[r.firstView + v];
       const uint32_t light = view.light;
@@ -182,6 +189,8 @@ ShadowPlan planShadows(const ShadowInputs& in) {
         view.reach = glm::vec4(l.position, l.radius);
       }
       view.light = light;
+      view.skipPlanes = skipPlanes;
+      plan.stats.planesLeftOut += uint32_t(__builtin_popcount(skipPlanes));
       ++plan.stats.viewsRendered;
       plan.stats.texelsUsed += uint64_t(r.size) * uint64_t(r.size);
     }

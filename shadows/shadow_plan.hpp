@@ -7,6 +7,7 @@
 
 #include "core/scene/bounds.hpp"
 #include "core/scene/camera.hpp"
+#include "core/scene/caster_plane.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/shadow_settings.hpp"
 #include "shadows/shadow_receivers.hpp"
@@ -26,6 +27,10 @@ struct ShadowInputs {
   const ShadowReceivers& receivers;
   ShadowMode mode = ShadowMode::Auto;
   int atlasSize = 4096;
+  // The planar casters' planes and the sides of them the visible surfaces lie on (receiversAbove/Below): a light's
+  // views leave out the planes that hide none of those surfaces from it.
+  std::vector<CasterPlane> casterPlanes{};
+  uint32_t planeSides = 0;
 };
 
 // One square of the atlas, rendered from a light. `size` 0: not rendered, its frustum meets no receiver in view.
@@ -36,6 +41,7 @@ struct ShadowViewPlan {
   float texelWorld = 0.0f;  // world size of a texel per unit of the view's w (ShadowCasterView::texelWorld)
   glm::vec4 reach{0.0f};  // ShadowCasterView::reach
   uint32_t light = 0;     // which of the plan's shadowed lights owns it, counting from 0 (the debug view's colours)
+  uint32_t skipPlanes = 0;  // ShadowCasterView::skipPlanes
 };
 
 // What planShadows decided, for `--stats` and the profiler's light statistics.
@@ -47,6 +53,7 @@ struct ShadowStats {
   uint32_t shrunkLights = 0;     // lights given less than their size on screen asks, the atlas being full
   uint32_t unshadowedLights = 0; // casting lights that got no map at all, the atlas being full at the least size
   uint64_t texelsUsed = 0;       // atlas texels of the rendered views
+  uint32_t planesLeftOut = 0;    // planar casters left out of rendered views, one per view and plane
   // World size of a texel of the rendered cascades, finest and coarsest (0 without one).
   float cascadeTexelMin = 0.0f, cascadeTexelMax = 0.0f;
   // The pass's CPU side in the last frame, wall-clock ms: reading the occupied clusters back (a wait for the GPU)

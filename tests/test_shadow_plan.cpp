@@ -1,17 +1,23 @@
 // The shadow planner (shadows/shadow_plan.hpp) and the atlas packing, on the CPU: squares never overlap and stay in
 // the atlas, views without a receiver in view are skipped, a full atlas shrinks the least important lights first
-// and counts every light it cannot shadow.
+// and counts every light it cannot shadow, planar casters (core/scene/caster_plane.hpp) are found and left out of
+// the views of lights they hide nothing visible from, and the texel rectangles a caster covers in a view.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/scene/caster_plane.hpp"
+#include "core/scene/mesh.hpp"
 #include "shadows/atlas_packing.hpp"
 #include "shadows/shadow_plan.hpp"
 #include "shadows/shadow_views.hpp"
@@ -333,4 +339,115 @@ TEST_CASE("shadow receivers: meetsViews finds, in one pass, the views meets find
   // Both outcomes occur often enough to be tested.
   CHECK(met > 100);
   CHECK(missed > 100);
+}
+
+TEST_CASE("caster planes: a flat mesh under any pose has its plane, a mesh with a vertex off it has none") {
+  const pbr::MeshData plane = pbr::makePlaneMesh();  // y = 0, normal +Y
+  // Tilted by 30 degrees about z, scaled unevenly and moved: the plane's normal and offset follow the pose.
+  const glm::mat4 pose = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), {2.0f, 1.0f, -3.0f}),
+                                                glm::radians(30.0f), glm::vec3(0.0f, 0.0f, 1.0f)),
+                                    glm::vec3(8.0f, 1.0f, 5.0f));
+  const std::optional<pbr::CasterPlane> found = pbr::casterPlane(plane, pose);
+  REQUIRE(found.has_value());
+  const glm::vec3 normal(-std::sin(glm::radians(30.0f)), std::cos(glm::radians(30.0f)), 0.0f);
+  // The normal is the plane's up to its sign; either sign names the same sides, swapped.
+  const float sign = glm::dot(glm::vec3(found->plane), normal) > 0.0f ? 1.0f : -1.0f;
+  CHECK(glm::length(glm::vec3(found->plane) - sign * normal) < 1e-5f);
+  // The pose's origin lies on the plane; a point a unit along the normal from it, a unit from it.
+  CHECK(std::abs(glm::dot(glm::vec3(found->plane), glm::vec3(2.0f, 1.0f, -3.0f)) + found->plane.w) < 1e-5f);
+  CHECK(std::abs(glm::dot(glm::vec3(found->plane), glm::vec3(2.0f, 1.0f, -3.0f) + normal) + found->plane.w) ==
+        doctest::Approx(1.0f).epsilon(1e-5));
+  CHECK(found->thickness < 1e-4f);
+
+  CHECK_FALSE(pbr::casterPlane(pbr::makeBoxMesh(), glm::mat4(1.0f)).has_value());
+  CHECK_FALSE(pbr::casterPlane(pbr::makeSphereMesh(16, 8), glm::mat4(1.0f)).has_value());
+  pbr::MeshData bent = plane;
+  bent.vertices[0].position.y += 1e-3f;  // a millimetre off a metre-wide square
+  CHECK_FALSE(pbr::casterPlane(bent, glm::mat4(1.0f)).has_value());
+  pbr::MeshData line = plane;
+  for (pbr::Vertex& v : line.vertices) v.position.z = 0.0f;  // every triangle without area
+  CHECK_FALSE(pbr::casterPlane(line, glm::mat4(1.0f)).has_value());
+}
+
+TEST_CASE("caster planes: a plane may hide a visible point only on its side away from the light") {
+  const pbr::CasterPlane floor{glm::vec4(0.0f, 1.0f, 0.0f, 0.0f), 1e-6f};  // y = 0
+  const uint32_t above = 1u, below = 2u, both = 3u;
+  const glm::vec4 lampAbove(0.0f, 3.0f, 0.0f, 1.0f), lampBelow(0.0f, -3.0f, 0.0f, 1.0f);
+  const glm::vec4 sunFromAbove(0.3f, -1.0f, 0.0f, 0.0f), sunFromBelow(0.3f, 1.0f, 0.0f, 0.0f);
+  CHECK_FALSE(pbr::planeMayShadow(floor, above, 0, lampAbove));
+  CHECK_FALSE(pbr::planeMayShadow(floor, 0u, 0, lampAbove));  // nothing but the plane's own points in view
+  CHECK(pbr::planeMayShadow(floor, below, 0, lampAbove));
+  CHECK(pbr::planeMayShadow(floor, both, 0, lampAbove));
+  CHECK(pbr::planeMayShadow(floor, above, 0, lampBelow));
+  CHECK_FALSE(pbr::planeMayShadow(floor, below, 0, lampBelow));
+  CHECK_FALSE(pbr::planeMayShadow(floor, above, 0, sunFromAbove));
+  CHECK(pbr::planeMayShadow(floor, below, 0, sunFromAbove));
+  CHECK(pbr::planeMayShadow(floor, above, 0, sunFromBelow));
+  // A lamp on the plane and a sun along it: kept, whatever the sides.
+  CHECK(pbr::planeMayShadow(floor, 0u, 0, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f)));
+  CHECK(pbr::planeMayShadow(floor, 0u, 0, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)));
+  // Plane 1's sides are bits 2 and 3.
+  CHECK_FALSE(pbr::planeMayShadow(floor, below, 1, lampAbove));
+  CHECK(pbr::planeMayShadow(floor, below << 2, 1, lampAbove));
+}
+
+TEST_CASE("shadow plan: a light's views leave out the planes that hide nothing visible from it") {
+  // A lamp above the floor and one below it, a sun from above; planes: the floor (y = 0) and a wall (x = 4) with
+  // visible points on the lamps' side of both and beyond the floor only.
+  const std::vector<pbr::PointLight> lights = {light({0.0f, 1.0f, 0.0f}, 6.0f), light({1.0f, -1.0f, 0.0f}, 6.0f)};
+  const std::vector<uint32_t> order = identity(lights.size());
+  const std::vector<pbr::DirectionalLight> suns = {{glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)), glm::vec3(1.0f),
+                                                    1.0f}};
+  const pbr::Camera cam = camera();
+  const pbr::ShadowReceivers floor = receiversIn(cam, floorBounds());
+  pbr::ShadowInputs inputs{cam, 16.0f / 9.0f, 720, lights, order, suns, floorBounds(), floor};
+  inputs.casterPlanes = {{glm::vec4(0.0f, 1.0f, 0.0f, 0.0f), 1e-6f}, {glm::vec4(1.0f, 0.0f, 0.0f, -4.0f), 1e-6f}};
+  inputs.planeSides = 0x1u | 0x2u | 0x8u;  // the floor: points above and below; the wall: points on x < 4 only
+  const pbr::ShadowPlan plan = pbr::planShadows(inputs);
+  uint32_t leftOut = 0;
+  for (const pbr::ShadowViewPlan& v : plan.views) {
+    if (v.size == 0) continue;
+    // The floor hides points from every light here; the wall from none of them (all lie on x < 4, with the points).
+    CHECK(v.skipPlanes == 0x2u);
+    leftOut += 1;
+  }
+  CHECK(plan.stats.planesLeftOut == leftOut);
+  inputs.planeSides = 0x1u | 0x8u;  // nothing visible below the floor: the lamp under it keeps it, the others not
+  const pbr::ShadowPlan above = pbr::planShadows(inputs);
+  for (const pbr::ShadowViewPlan& v : above.views) {
+    if (v.size == 0) continue;
+    const bool lampBelow = v.reach.w > 0.0f && v.reach.y < 0.0f;
+    CHECK(v.skipPlanes == (lampBelow ? 0x2u : 0x3u));
+  }
+}
+
+TEST_CASE("caster rectangles: a box's texels in a view, a texel wider, whole behind the eye, none outside") {
+  // An orthographic view of x, y in [-4, 4] onto a 64-texel square at (128, 256): 8 texels a unit.
+  const glm::mat4 ortho = glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, -10.0f, 10.0f);
+  const glm::ivec4 viewport(128, 256, 64, 64);
+  pbr::WorldBounds box;
+  box.add({-1.0f, 0.5f, 0.0f});
+  box.add({1.25f, 2.0f, 1.0f});
+  // x: (-1 + 4) * 8 = 24 to (1.25 + 4) * 8 = 42; y: 36 to 48; one texel more each way.
+  CHECK(pbr::coveredRect(box, ortho, viewport) == glm::ivec4(128 + 23, 256 + 35, 20, 14));
+  pbr::WorldBounds across;
+  across.add({-9.0f, -9.0f, 0.0f});
+  across.add({0.0f, 0.0f, 0.0f});
+  CHECK(pbr::coveredRect(across, ortho, viewport) == glm::ivec4(128, 256, 33, 33));  // clipped to the viewport
+  pbr::WorldBounds outside;
+  outside.add({5.0f, 5.0f, 0.0f});
+  outside.add({6.0f, 6.0f, 0.0f});
+  CHECK(pbr::emptyRect(pbr::coveredRect(outside, ortho, viewport)));
+  // A perspective view with a corner behind its eye: all of the viewport.
+  const glm::mat4 perspective = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
+  pbr::WorldBounds straddling;
+  straddling.add({-1.0f, -1.0f, -5.0f});
+  straddling.add({1.0f, 1.0f, 2.0f});
+  CHECK(pbr::coveredRect(straddling, perspective, viewport) == viewport);
+  // Joining and intersecting; an empty rectangle joins as nothing.
+  const glm::ivec4 a(0, 0, 10, 10), b(5, 8, 10, 4), none(3, 3, 0, 0);
+  CHECK(pbr::joinRects(a, b) == glm::ivec4(0, 0, 15, 12));
+  CHECK(pbr::joinRects(none, b) == b);
+  CHECK(pbr::intersectRects(a, b) == glm::ivec4(5, 8, 5, 2));
+  CHECK(pbr::emptyRect(pbr::intersectRects(a, glm::ivec4(10, 0, 4, 4))));
 }

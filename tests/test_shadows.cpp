@@ -1,6 +1,7 @@
-// Shadow maps (shadows/, shaders/shadows/shadow_sample.glsl) against geometry computed here: a box's shadow under a
-// sun against its analytic projection, acne and peter-panning at a low sun, alpha-mask cut-outs, lights that do not
-// cast, clustered against brute force with shadows on, agreement with the reference's shadow rays, coarser sphere
+// Shadow maps (shadows/, shaders/shadows/shadow_sample.glsl) against geometry computed here: a box's shadow under a sun
+// against its analytic projection, a plane's shadow (the planes that hide nothing visible left out of the views) and a
+// floor between a lamp and what stands on it, acne and peter-panning at a low sun, alpha-mask cut-outs, lights that do
+// not cast, clustered against brute force with shadows on, agreement with the reference's shadow rays, coarser sphere
 // casters against the whole mesh, and the shadows debug view (`--debug shadows`) against the reference.
 #include <doctest/doctest.h>
 
@@ -34,15 +35,24 @@ pbr::Material grey(float base) {
   return m;
 }
 
-// A floor under a unit box standing on it at the origin, seen from straight above the point (cameraX, 0, 0).
-pbr::Scene boxScene(const glm::vec3& sunDirection, float cameraHeight, float cameraX = 0.0f) {
+// A floor under a unit box standing on it at the origin, seen from straight above the point (cameraX, 0, 0). The
+// floor is a plane, which no light's view draws while nothing visible lies below it (CasterPlane), or with
+// `slabFloor` a box 10 cm deep whose top is at y = 0, which every view draws.
+pbr::Scene boxScene(const glm::vec3& sunDirection, float cameraHeight, float cameraX = 0.0f, bool slabFloor = false) {
   pbr::Scene s;
   s.name = "shadow box";
   s.camera.position = {cameraX, cameraHeight, 0.0f};
   s.camera.target = {cameraX, 0.0f, 0.0f};
   s.camera.up = {0.0f, 0.0f, -1.0f};
   s.camera.fovYDeg = 45.0f;
-  s.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(float(kFloorSize))), grey(0.6f));
+  if (slabFloor) {
+    s.addShape(pbr::Shape::Box,
+               glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, -0.05f, 0.0f}), glm::vec3(float(kFloorSize), 0.1f,
+                                                                                          float(kFloorSize))),
+               grey(0.6f));
+  } else {
+    s.addShape(pbr::Shape::Plane, glm::scale(glm::mat4(1.0f), glm::vec3(float(kFloorSize))), grey(0.6f));
+  }
   s.addShape(pbr::Shape::Box, glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f}), grey(0.8f));
   s.directionalLights = {{glm::normalize(sunDirection), glm::vec3(1.0f), 2.0f}};
   return s;
@@ -64,18 +74,24 @@ bool rayMeetsBox(const dvec3& p, const dvec3& d, const dvec3& lo, const dvec3& h
   return t0 <= t1;
 }
 
-// The floor point a pixel sees, or nothing where it sees the box (or nothing).
-std::optional<dvec3> floorPoint(const pbr::Scene& scene, glm::ivec2 size, int x, int y) {
+// The caster over the floor: boxScene's unit box, or a flat square (a box of no height).
+struct Caster {
+  dvec3 lo, hi;
+};
+constexpr Caster kUnitBox{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}};
+
+// The floor point a pixel sees, or nothing where it sees the caster (or nothing).
+std::optional<dvec3> floorPoint(const pbr::Scene& scene, glm::ivec2 size, int x, int y, const Caster& c = kUnitBox) {
   const pbr::reference::Ray ray = pbr::reference::cameraRay(scene.camera, size.x, size.y, x, y);
-  if (rayMeetsBox(ray.origin, ray.direction, {-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5})) return std::nullopt;
+  if (rayMeetsBox(ray.origin, ray.direction, c.lo, c.hi)) return std::nullopt;
   if (ray.direction.y >= 0.0) return std::nullopt;
   const double t = -ray.origin.y / ray.direction.y;
   return ray.origin + ray.direction * t;
 }
 
-// Analytic: the unit box on the floor shadows floor point p from a sun travelling along d.
-bool inBoxShadow(const dvec3& p, const dvec3& d) {
-  return rayMeetsBox(p + dvec3(0.0, 1e-9, 0.0), -d, {-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5});
+// Analytic: the caster shadows floor point p from a sun travelling along d.
+bool inBoxShadow(const dvec3& p, const dvec3& d, const Caster& c = kUnitBox) {
+  return rayMeetsBox(p + dvec3(0.0, 1e-9, 0.0), -d, c.lo, c.hi);
 }
 
 // The world size of the coarsest cascade texel of a rendered frame's sun, as its plan reports it; a cascade of at
@@ -94,19 +110,19 @@ struct OutlineResult {
 // Compares a sun-shadowed box frame with the analytic shadow, skipping floor points within `band` (world units)
 // of the outline: there the filter's penumbra and the map's texels may decide either way.
 OutlineResult compareOutline(const pbr::Scene& scene, glm::ivec2 size, const std::vector<float>& visibility,
-                             double band) {
+                             double band, const Caster& caster = kUnitBox) {
   const dvec3 d = glm::normalize(dvec3(scene.directionalLights[0].direction));
   OutlineResult r;
   for (int y = 0; y < size.y; ++y) {
     for (int x = 0; x < size.x; ++x) {
-      const std::optional<dvec3> p = floorPoint(scene, size, x, y);
+      const std::optional<dvec3> p = floorPoint(scene, size, x, y, caster);
       const double v = visibility[size_t(y) * size.x + x];
       if (!p || v < 0.0) continue;
-      const bool shadowed = inBoxShadow(*p, d);
+      const bool shadowed = inBoxShadow(*p, d, caster);
       bool nearOutline = false;
       for (int k = 0; k < 16 && !nearOutline; ++k) {
         const double a = k * 3.14159265358979 / 8.0;
-        nearOutline = inBoxShadow(*p + band * dvec3(std::cos(a), 0.0, std::sin(a)), d) != shadowed;
+        nearOutline = inBoxShadow(*p + band * dvec3(std::cos(a), 0.0, std::sin(a)), d, caster) != shadowed;
       }
       if (nearOutline) continue;
       (shadowed ? r.shadowed : r.lit) += 1;
@@ -194,8 +210,9 @@ TEST_CASE("shadows: a low sun leaves no acne on the lit floor, and the box's sha
   // 80 degrees from the zenith: the floor's depth changes by tan(80) = 5.7 texels per texel in the map.
   const double angle = 80.0 * 3.14159265358979 / 180.0;
   const glm::vec3 sun{float(std::sin(angle)), -float(std::cos(angle)), 0.0f};
-  // Seen from above x = 2.5: the floor beside the face the light leaves is in view, not behind the box's top.
-  const pbr::Scene scene = boxScene(sun, 7.0f, 2.5f);
+  // Seen from above x = 2.5: the floor beside the face the light leaves is in view, not behind the box's top. A
+  // slab, so that the maps hold the floor's own depths, which acne would come from.
+  const pbr::Scene scene = boxScene(sun, 7.0f, 2.5f, true);
   pbr::FrameOptions plain;
   plain.shadows.mode = pbr::ShadowMode::None;
   const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
@@ -234,6 +251,76 @@ TEST_CASE("shadows: a low sun leaves no acne on the lit floor, and the box's sha
     CHECK(gapChecked > 4);
     CHECK(gapLit == 0);
   }
+}
+
+TEST_CASE("shadows: a plane casts onto what lies beyond it, and no view draws a plane with nothing visible beyond") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{192, 192};
+  // A 2 m square roof (a plane, as the floor) 1.5 m over the floor under a sun: the roof hides floor points from
+  // it, the floor hides nothing in view.
+  const glm::vec3 sun{-0.45f, -1.0f, 0.3f};
+  pbr::Scene scene = boxScene(sun, 6.0f);
+  scene.objects.pop_back();
+  scene.addShape(pbr::Shape::Plane, glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, 1.5f, 0.0f}), glm::vec3(2.0f)),
+                 grey(0.8f));
+  const Caster roof{{-1.0, 1.5, -1.0}, {1.0, 1.5, 1.0}};
+  pbr::FrameOptions shadowed, plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  const pbr::RenderedFrames lit = pbr::renderOffscreen(shaders, scene, size, shadowed, 1);
+  const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+  // Each rendered cascade leaves the floor out and draws the roof.
+  CHECK(lit.stats.shadows.viewsRendered > 0);
+  CHECK(lit.stats.shadows.planesLeftOut == lit.stats.shadows.viewsRendered);
+  const double texel = largestCascadeTexel(lit);
+  const double cosTheta = -glm::normalize(dvec3(sun)).y;
+  const OutlineResult r =
+      compareOutline(scene, size, pbr::visibilityRatio(lit.hdr, none.hdr), 1.5 * texel / cosTheta, roof);
+  MESSAGE(r.lit << " lit and " << r.shadowed << " shadowed floor pixels compared, " << r.wrong << " misclassified");
+  CHECK(r.shadowed > 1000);
+  CHECK(r.lit > 5000);
+  CHECK(r.wrong == 0);
+}
+
+TEST_CASE("shadows: a floor keeps a lamp under it from what stands on it") {
+  PBR_REQUIRE_GL();
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{128, 96};
+  // The box on the floor plane, seen from the side, and a lamp under the floor beside it, whose light would reach
+  // the box's side facing it but for the floor: visible points lie on the far side of the floor from the lamp, so
+  // the lamp's views draw the floor.
+  pbr::Scene scene = boxScene({0.0f, -1.0f, 0.0f}, 1.0f);
+  scene.directionalLights.clear();
+  scene.camera.position = {3.0f, 1.2f, 3.0f};
+  scene.camera.target = {0.0f, 0.5f, 0.0f};
+  scene.camera.up = {0.0f, 1.0f, 0.0f};
+  pbr::PointLight lamp;
+  lamp.position = {2.0f, -0.5f, 0.0f};
+  lamp.radius = 10.0f;
+  lamp.luminousPower = 400.0f;
+  lamp.castsShadows = true;
+  scene.lights = {lamp};
+  pbr::FrameOptions shadowed, plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  const pbr::RenderedFrames lit = pbr::renderOffscreen(shaders, scene, size, shadowed, 1);
+  const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+  CHECK(lit.stats.shadows.viewsRendered > 0);
+  CHECK(lit.stats.shadows.planesLeftOut == 0);
+  // Unshadowed, the lamp lights the box's +x face through the floor; the reference's shadow rays meet the floor.
+  const std::vector<float> v = pbr::visibilityRatio(lit.hdr, none.hdr);
+  pbr::reference::ReferenceOptions referenceOptions;
+  referenceOptions.shadows = pbr::ShadowMode::Auto;
+  pbr::reference::ReferenceFrame expected = pbr::reference::renderReference(scene, size.x, size.y, referenceOptions);
+  REQUIRE(expected.visibility.size() == v.size());
+  // The box's pixels (object 1), outside a band of 2 pixels around the reference's changes of state, where its
+  // face meets the floor (which the lamp does not light at all) and the filter reaches past the floor's edge.
+  for (size_t i = 0; i < expected.visibility.size(); ++i)
+    if (expected.objectIds[i] != 1) expected.visibility[i] = -1.0f;
+  const pbr::ShadowAgreement a = pbr::compareShadowState(v, expected, 2);
+  MESSAGE((a.compared - a.misclassified) << " of " << a.compared << " box pixels agree, " << a.shadowed
+                                       << " shadowed in the reference");
+  CHECK(a.shadowed > 300);
+  CHECK(a.misclassified == 0);
 }
 
 TEST_CASE("shadows: an alpha-masked caster casts its cut-out") {

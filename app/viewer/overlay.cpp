@@ -191,6 +191,7 @@ void Overlay::lightStatistics(Viewer& viewer) {
     row("  views rendered", "%.0f", double(s.shadows.viewsRendered));
     row("  kept from the frame before", "%.0f", double(s.shadows.viewsKept));
     row("  views skipped", "%.0f (no receiver in view)", double(s.shadows.viewsSkipped));
+    row("  planes left out", "%.0f (nothing visible beyond)", double(s.shadows.planesLeftOut));
     const int atlas = viewer.frameOptions().shadows.atlasSize;
     row("  atlas used", "%.1f %%", 100.0 * double(s.shadows.texelsUsed) / (double(atlas) * atlas));
     if (s.shadows.cascadeTexelMax > 0.0f) {

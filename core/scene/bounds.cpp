@@ -34,6 +34,40 @@ WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform) {
   return b;
 }
 
+glm::ivec4 coveredRect(const WorldBounds& box, const glm::mat4& viewProjection, const glm::ivec4& viewport) {
+  if (box.empty()) return glm::ivec4(viewport.x, viewport.y, 0, 0);
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+                           i & 4 ? box.max.z : box.min.z);
+    const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
+    if (!(clip.w > 0.0f)) return viewport;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  }
+  // NDC [-1, 1] onto the viewport's texels; a texel more each way for the rasterizer's rounding.
+  const glm::vec2 origin(viewport.x, viewport.y), extent(viewport.z, viewport.w);
+  const glm::vec2 first = glm::max(glm::floor(origin + (lo * 0.5f + 0.5f) * extent) - 1.0f, origin);
+  const glm::vec2 last = glm::min(glm::ceil(origin + (hi * 0.5f + 0.5f) * extent) + 1.0f, origin + extent);
+  if (!(first.x < last.x && first.y < last.y)) return glm::ivec4(viewport.x, viewport.y, 0, 0);
+  return glm::ivec4(glm::ivec2(first), glm::ivec2(last - first));
+}
+
+glm::ivec4 joinRects(const glm::ivec4& a, const glm::ivec4& b) {
+  if (emptyRect(a)) return b;
+  if (emptyRect(b)) return a;
+  const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
+  const glm::ivec2 hi = glm::max(glm::ivec2(a) + glm::ivec2(a.z, a.w), glm::ivec2(b) + glm::ivec2(b.z, b.w));
+  return glm::ivec4(lo, hi - lo);
+}
+
+glm::ivec4 intersectRects(const glm::ivec4& a, const glm::ivec4& b) {
+  const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b));
+  const glm::ivec2 hi = glm::min(glm::ivec2(a) + glm::ivec2(a.z, a.w), glm::ivec2(b) + glm::ivec2(b.z, b.w));
+  return glm::ivec4(lo, glm::max(hi - lo, glm::ivec2(0)));
+}
+
 FrustumPlanes frustumPlanes(const glm::mat4& m) {
   const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]),
       r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);

@@ -35,6 +35,16 @@ bool overlapsSphere(const WorldBounds& box, const glm::vec3& centre, float radiu
 // The world box of a mesh's vertices under `transform`.
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform);
 
+// The texels of `viewport` (x, y, width, height) that the box's projection through `viewProjection` may cover: the
+// rectangle of its corners' projections, a texel wider on each side, within the viewport; all of it where a corner
+// lies at or behind a perspective view's eye (w <= 0); width 0 where it misses the viewport.
+glm::ivec4 coveredRect(const WorldBounds& box, const glm::mat4& viewProjection, const glm::ivec4& viewport);
+// Texel rectangles (x, y, width, height; a width or height of 0 is empty): the smallest holding both, and their
+// common texels (empty where they share none).
+inline bool emptyRect(const glm::ivec4& r) { return r.z <= 0 || r.w <= 0; }
+glm::ivec4 joinRects(const glm::ivec4& a, const glm::ivec4& b);
+glm::ivec4 intersectRects(const glm::ivec4& a, const glm::ivec4& b);
+
 // The planes (a.x + b.y + c.z + d >= 0 inside) of the clip-space frustum of `m`: x and y in [-w, w], z in [0, w]
 // (glClipControl's zero-to-one range, either depth direction) (Gribb & Hartmann 2001, "Fast Extraction of Viewing
 // Frustum Planes from the World-View-Projection Matrix").

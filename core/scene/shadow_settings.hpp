@@ -2,6 +2,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -45,6 +46,16 @@ struct ShadowCasterView {
   float texelWorld = 0.0f;
   // The shadowed light it belongs to (ShadowViewPlan::light): a light's views are drawn together.
   uint32_t light = 0;
+  // Bit i: the caster of plane i (CasterPlane, in the geometry's order) is left out, hiding no visible point from
+  // this light.
+  uint32_t skipPlanes = 0;
+};
+
+// What drawing the casters into views did: the draw calls made, and per view the atlas texels its casters may have
+// written (coveredRect of each caster drawn, joined; width 0 where none was drawn).
+struct ShadowCasterDraws {
+  size_t draws = 0;
+  std::vector<glm::ivec4> rects;
 };
 
 // A point or spot light's entry in `lightViews`: 0 without shadows; else its first view + 1 in bits 0-25, log2 of
