@@ -15,13 +15,12 @@ void LightBuffer::uploadDirectional(const std::vector<DirectionalLight>& directi
                            std::to_string(kMaxDirectionalLights) + " shaded (validateScene refuses them)");
   }
   DirectionalLightBlock block{};
-  block.count.x = static_cast<unsigned>(directional.size());
   for (size_t i = 0; i < directional.size(); ++i) {
     const DirectionalLight& d = directional[i];
     block.lights[i] = {glm::vec4(-d.direction, 0.0f), glm::vec4(d.color, d.illuminance)};
   }
   directionalBlock_.update(block);
-  hasDirectional_ = !directional.empty();
+  directionalCount_ = uint32_t(directional.size());
 }
 
 void LightBuffer::uploadPoints(const std::vector<PointLight>& lights) {

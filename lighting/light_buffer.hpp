@@ -31,7 +31,7 @@ class LightBuffer {
   uint32_t sceneIndex(uint32_t bufferIndex) const { return order_[bufferIndex]; }
   const std::vector<uint32_t>& order() const { return order_; }  // per buffer index, the scene's
   bool hasSpotLights() const { return hasSpots_; }
-  LightKinds kinds() const { return {hasSpots_, hasDirectional_}; }
+  LightKinds kinds() const { return {hasSpots_, directionalCount_}; }
   size_t bytes() const { return (buffer_ ? buffer_->size() : 0) + (cones_ ? cones_->size() : 0); }
 
  private:
@@ -39,7 +39,7 @@ class LightBuffer {
   std::unique_ptr<Buffer> cones_;  // only while the frame has spot lights
   std::vector<uint32_t> order_;    // per buffer index, the scene's
   bool hasSpots_ = false;
-  bool hasDirectional_ = false;
+  uint32_t directionalCount_ = 0;
   unsigned count_ = 0;
   UniformBuffer<DirectionalLightBlock> directionalBlock_{"lights.directional", DirectionalLightBlock{}};
 };

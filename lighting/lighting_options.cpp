@@ -33,7 +33,7 @@ ShaderDefines lightingPermutation(const LightingOptions& o, bool clustered, HdrF
   defines.push_back({"IBL", flag(o.ibl())});
   defines.push_back({"LIGHT_CHUNKS", flag(chunked)});
   defines.push_back({"SPOT_LIGHTS", flag(kinds.spot)});
-  defines.push_back({"DIRECTIONAL_LIGHTS", flag(kinds.directional)});
+  defines.push_back({"DIRECTIONAL_LIGHTS", std::to_string(kinds.directional)});
   defines.push_back({"SHADOWS", flag(o.shadows != nullptr)});
   defines.push_back({"UNLIT_MATERIALS", flag(o.unlitSurfaces)});
   defines.push_back({"MATERIAL_SPECULAR", flag(o.specularMaterials && !blinnPhong)});

@@ -5,7 +5,7 @@ struct DirectionalLight {
   vec4 colorIlluminance;  // linear colour, illuminance E in lux
 };
 
+// The first DIRECTIONAL_LIGHTS are in use.
 layout(std140, binding = DIRECTIONAL_LIGHT_UBO) uniform DirectionalLightBlock {
-  uvec4 directionalCount;  // x: lights in use
   DirectionalLight directionalLights[MAX_DIRECTIONAL_LIGHTS];
 };

@@ -121,8 +121,9 @@ void visitLight(Surface s, uint k) {
 }
 
 // Light arriving from everything but the point lights: the environment (or uniform ambient light) and the
-// directional lights (shadowed where they cast), added in their order. DIRECTIONAL_LIGHTS 0: the frame has none, and
-// the loop is left out, since llvmpipe runs a loop's body once under an empty lane mask even over no light.
+// directional lights (shadowed where they cast), added in their order. DIRECTIONAL_LIGHTS is their count (0 leaves
+// the loop out, which llvmpipe would run once under an empty lane mask even over no light; a constant count unrolls
+// it, each light's entries read at a constant index, pbr::LightKinds).
 vec3 shadeEnvironment(Surface s) {
 #if IBL && (MATERIAL_CLEARCOAT || MATERIAL_SHEEN)
   vec3 color = shadeIbl(s.normal, s.V, s.baseColor, s.roughness, s.metalness, 1.0);
@@ -147,7 +148,7 @@ vec3 shadeEnvironment(Surface s) {
   vec3 color = shadeAmbient(s);
 #endif
 #if DIRECTIONAL_LIGHTS
-  for (uint i = 0u; i < directionalCount.x; ++i) {
+  for (uint i = 0u; i < uint(DIRECTIONAL_LIGHTS); ++i) {
 #if SHADOWS
     vec3 c = shadeDirectional(s, directionalLights[i]);
     if (directionalShadow[i].x != 0u && c.r + c.g + c.b > 0.0) {

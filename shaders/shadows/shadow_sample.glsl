@@ -169,8 +169,10 @@ float lightShadowVisibility(uint entry, vec4 lightPositionRadius, vec4 cone, vec
 float directionalShadowVisibility(uint light, float viewDepth, vec3 position, vec3 normal, vec3 L) {
   uvec4 entry = directionalShadow[light];
   if (entry.x == 0u) return 1.0;
-  uint cascade = 0u;
-  while (cascade + 1u < entry.y && viewDepth > cascadeEnds[cascade]) ++cascade;
+  // The cascades' ends rise, and those past the last are far away: the count of ends the depth passes, without a
+  // loop, whose index llvmpipe would read the ends at with a load per pixel.
+  uint cascade = min(uint(viewDepth > cascadeEnds.x) + uint(viewDepth > cascadeEnds.y) +
+                         uint(viewDepth > cascadeEnds.z), entry.y - 1u);
   CascadeView v = cascadeViews[entry.x - 1u + cascade];
   if (v.rect.z <= 0.0) return 1.0;
   vec4 p = vec4(position + normal * normalOffset(v.params.x, normal, L), 1.0);
