@@ -57,10 +57,6 @@ std::unique_ptr<Buffer> zeroedBuffer(const char* label, uint64_t bytes) {
   return buffer;
 }
 
-}  // namespace
-
-namespace {
-
 // The occupancy pass's defines: with CASTER_PLANES planes, each point also finds its sides of them.
 ShaderDefines casterPlaneDefines(size_t planes) {
   return {{"CASTER_PLANES", std::to_string(planes)}, {"MAX_CASTER_PLANES", std::to_string(kMaxCasterPlanes)}};

@@ -114,7 +114,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   if (!plan.lightViews.empty()) lightViews_->upload(plan.lightViews.data(), plan.lightViews.size() * sizeof(uint32_t));
 
   // Views the atlas already holds, unchanged, keep their depths: what a view draws depends on its matrix, square,
-  // reach and texel size and on the objects, not on the camera (GBufferPass::renderDepth).
+  // reach, texel size and planes left out and on the objects (GBufferPass::renderDepth).
   std::vector<ShadowCasterView> toDraw;
   const bool objectsStill = renderedFor_ && renderedFor_->poseVersion == key.poseVersion;
   std::map<std::tuple<int, int, int>, const ShadowCasterView*> held;

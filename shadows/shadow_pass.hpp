@@ -41,8 +41,9 @@ class ShadowPass {
  public:
   ShadowPass();
   // With `keepViews`, a view drawn into the same square the frame before, from the same matrix, with the same
-  // reach and texel size and with no object moved since, keeps its depths instead of being drawn again: a light
-  // that did not move keeps its maps while the camera moves, as long as its squares stay where they were.
+  // reach, texel size and planes left out and with no object moved since, keeps its depths instead of being drawn
+  // again: a light that did not move keeps its maps while the camera moves, as long as its squares stay where they
+  // were and the visible surfaces keep to the same sides of the planes.
   void render(const ShadowInputs& inputs, const DrawShadowCasters& drawCasters, const ShadowFrameKey& key,
               bool keepViews);
   // Whether the last render's maps are those of a frame of `key` (its key was equal): then they stay, and the stats
