@@ -438,12 +438,23 @@ TEST_CASE("caster rectangles: a box's texels in a view, a texel wider, whole beh
   outside.add({5.0f, 5.0f, 0.0f});
   outside.add({6.0f, 6.0f, 0.0f});
   CHECK(pbr::emptyRect(pbr::coveredRect(outside, ortho, viewport)));
-  // A perspective view with a corner behind its eye: all of the viewport.
-  const glm::mat4 perspective = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
-  pbr::WorldBounds straddling;
+  // A perspective view (a shadow view from the origin down -z, 90 degrees, its near plane at 1e-3 of a radius of
+  // 100, reversed Z) and boxes reaching behind its eye: what lies in front of the near plane.
+  const glm::mat4 perspective =
+      pbr::perspectiveView(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), 1.0f, 100.0f, 64, 0).viewProjection;
+  pbr::WorldBounds straddling;  // reaching the eye: its projection grows without bound there
   straddling.add({-1.0f, -1.0f, -5.0f});
   straddling.add({1.0f, 1.0f, 2.0f});
   CHECK(pbr::coveredRect(straddling, perspective, viewport) == viewport);
+  pbr::WorldBounds aside;  // beside the eye, reaching behind it: in front, x / -z runs from 2 / 8 past the edge
+  aside.add({2.0f, -0.5f, -8.0f});
+  aside.add({3.0f, 0.5f, 4.0f});
+  // NDC x from 0.25: texel 128 + 40 less one, to the viewport's right edge; y past both edges.
+  CHECK(pbr::coveredRect(aside, perspective, viewport) == glm::ivec4(128 + 39, 256, 64 - 39, 64));
+  pbr::WorldBounds behindEye;  // wholly behind the eye: nothing drawn
+  behindEye.add({-1.0f, -1.0f, 1.0f});
+  behindEye.add({1.0f, 1.0f, 3.0f});
+  CHECK(pbr::emptyRect(pbr::coveredRect(behindEye, perspective, viewport)));
   // Joining and intersecting; an empty rectangle joins as nothing.
   const glm::ivec4 a(0, 0, 10, 10), b(5, 8, 10, 4), none(3, 3, 0, 0);
   CHECK(pbr::joinRects(a, b) == glm::ivec4(0, 0, 15, 12));

@@ -132,6 +132,16 @@ OutlineResult compareOutline(const pbr::Scene& scene, glm::ivec2 size, const std
   return r;
 }
 
+// compareOutline for a frame with shadows (`lit`) and the same without (`none`) under the scene's sun, with a band
+// of 1.5 of the frame's coarsest cascade texels, stretched by 1 / cos(theta) from the light's image plane onto the
+// floor.
+OutlineResult sunOutline(const pbr::Scene& scene, glm::ivec2 size, const pbr::RenderedFrames& lit,
+                         const pbr::RenderedFrames& none, const Caster& caster = kUnitBox) {
+  const double texel = largestCascadeTexel(lit);
+  const double cosTheta = -glm::normalize(dvec3(scene.directionalLights[0].direction)).y;
+  return compareOutline(scene, size, pbr::visibilityRatio(lit.hdr, none.hdr), 1.5 * texel / cosTheta, caster);
+}
+
 // A floor and a sphere of radius 0.6 above it, seen from above and in front: the spot and point light scenes'.
 pbr::Scene sphereOverFloor() {
   pbr::Scene s;
@@ -190,13 +200,10 @@ TEST_CASE("shadows: a box's shadow under a sun is its analytic projection within
     const pbr::RenderedFrames lit = pbr::renderOffscreen(shaders, scene, size, shadowed, 1);
     const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
     CHECK(lit.stats.shadows.shadowedLights == 1);
-    const double texel = largestCascadeTexel(lit);
-    // 1.5 texels along the light's image plane stretch by 1 / cos(theta) on the floor.
-    const double cosTheta = -glm::normalize(dvec3(sun)).y;
-    const OutlineResult r =
-        compareOutline(scene, size, pbr::visibilityRatio(lit.hdr, none.hdr), 1.5 * texel / cosTheta);
-    MESSAGE(std::string(pbr::toString(filter)) << ": texel " << texel << " m, " << r.lit << " lit and " << r.shadowed
-                                  << " shadowed pixels compared, " << r.wrong << " misclassified");
+    const OutlineResult r = sunOutline(scene, size, lit, none);
+    MESSAGE(std::string(pbr::toString(filter)) << ": texel " << largestCascadeTexel(lit) << " m, " << r.lit
+                                               << " lit and " << r.shadowed << " shadowed pixels compared, "
+                                               << r.wrong << " misclassified");
     CHECK(r.shadowed > 500);
     CHECK(r.lit > 5000);
     CHECK(r.wrong == 0);
@@ -272,10 +279,7 @@ TEST_CASE("shadows: a plane casts onto what lies beyond it, and no view draws a 
   // Each rendered cascade leaves the floor out and draws the roof.
   CHECK(lit.stats.shadows.viewsRendered > 0);
   CHECK(lit.stats.shadows.planesLeftOut == lit.stats.shadows.viewsRendered);
-  const double texel = largestCascadeTexel(lit);
-  const double cosTheta = -glm::normalize(dvec3(sun)).y;
-  const OutlineResult r =
-      compareOutline(scene, size, pbr::visibilityRatio(lit.hdr, none.hdr), 1.5 * texel / cosTheta, roof);
+  const OutlineResult r = sunOutline(scene, size, lit, none, roof);
   MESSAGE(r.lit << " lit and " << r.shadowed << " shadowed floor pixels compared, " << r.wrong << " misclassified");
   CHECK(r.shadowed > 1000);
   CHECK(r.lit > 5000);

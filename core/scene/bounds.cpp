@@ -1,5 +1,8 @@
 #include "core/scene/bounds.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -35,22 +38,50 @@ WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform) {
 }
 
 glm::ivec4 coveredRect(const WorldBounds& box, const glm::mat4& viewProjection, const glm::ivec4& viewport) {
-  if (box.empty()) return glm::ivec4(viewport.x, viewport.y, 0, 0);
-  glm::vec2 lo(1e30f), hi(-1e30f);
+  const glm::ivec4 none(viewport.x, viewport.y, 0, 0);
+  if (box.empty()) return none;
+  std::array<glm::vec4, 8> clip;
+  bool behind = false;
   for (int i = 0; i < 8; ++i) {
     const glm::vec3 corner(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
                            i & 4 ? box.max.z : box.min.z);
-    const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
-    if (!(clip.w > 0.0f)) return viewport;
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    clip[size_t(i)] = viewProjection * glm::vec4(corner, 1.0f);
+    behind = behind || !(clip[size_t(i)].w > 0.0f);
+  }
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  const auto add = [&](const glm::vec4& c) {
+    const glm::vec2 ndc = glm::vec2(c) / c.w;
     lo = glm::min(lo, ndc);
     hi = glm::max(hi, ndc);
+  };
+  if (!behind) {
+    for (const glm::vec4& c : clip) add(c);
+  } else {
+    // A box reaching behind a perspective view's eye: the part of it the rasterizer keeps, inside the depth range
+    // 0 <= z <= w (glClipControl's zero-to-one; one of the two is the near plane): its corners there and its edges'
+    // crossings of either plane that lie within the other, where w > 0.
+    const auto kept = [](const glm::vec4& c) { return c.z >= 0.0f && c.w - c.z >= 0.0f && c.w > 0.0f; };
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec4& a = clip[size_t(i)];
+      if (kept(a)) add(a);
+      for (const int bit : {1, 2, 4}) {
+        if (i & bit) continue;
+        const glm::vec4& b = clip[size_t(i | bit)];
+        for (const glm::vec2 d : {glm::vec2(a.z, b.z), glm::vec2(a.w - a.z, b.w - b.z)}) {
+          if ((d.x >= 0.0f) == (d.y >= 0.0f)) continue;
+          glm::vec4 crossing = a + (b - a) * (d.x / (d.x - d.y));
+          crossing.z = std::clamp(crossing.z, 0.0f, crossing.w);  // on the plane, not a rounding outside it
+          if (kept(crossing)) add(crossing);
+        }
+      }
+    }
+    if (lo.x > hi.x) return none;
   }
   // NDC [-1, 1] onto the viewport's texels; a texel more each way for the rasterizer's rounding.
   const glm::vec2 origin(viewport.x, viewport.y), extent(viewport.z, viewport.w);
   const glm::vec2 first = glm::max(glm::floor(origin + (lo * 0.5f + 0.5f) * extent) - 1.0f, origin);
   const glm::vec2 last = glm::min(glm::ceil(origin + (hi * 0.5f + 0.5f) * extent) + 1.0f, origin + extent);
-  if (!(first.x < last.x && first.y < last.y)) return glm::ivec4(viewport.x, viewport.y, 0, 0);
+  if (!(first.x < last.x && first.y < last.y)) return none;
   return glm::ivec4(glm::ivec2(first), glm::ivec2(last - first));
 }
 

@@ -36,8 +36,9 @@ bool overlapsSphere(const WorldBounds& box, const glm::vec3& centre, float radiu
 WorldBounds meshBounds(const MeshData& mesh, const glm::mat4& transform);
 
 // The texels of `viewport` (x, y, width, height) that the box's projection through `viewProjection` may cover: the
-// rectangle of its corners' projections, a texel wider on each side, within the viewport; all of it where a corner
-// lies at or behind a perspective view's eye (w <= 0); width 0 where it misses the viewport.
+// rectangle of its corners' projections, a texel wider on each side, within the viewport; of a box reaching behind a
+// perspective view's eye (w <= 0), of its part within the depth range 0 <= z <= w (glClipControl's zero-to-one);
+// width 0 where it misses the viewport.
 glm::ivec4 coveredRect(const WorldBounds& box, const glm::mat4& viewProjection, const glm::ivec4& viewport);
 // Texel rectangles (x, y, width, height; a width or height of 0 is empty): the smallest holding both, and their
 // common texels (empty where they share none).
