@@ -144,6 +144,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
 }
 
 void ShadowPass::clearSquares(const std::vector<ShadowCasterView>& toDraw, bool viewsKept) {
+  if (dirty_.empty() || toDraw.empty()) return;  // every square to draw holds the far depth already
   // Which square to draw each kMinShadowView-texel cell of the atlas lies in (+ 1, 0 none): squares are powers of
   // two of at least that side on a grid of their own size.
   const int atlas = atlas_->width(), cells = atlas / kMinShadowView;
