@@ -579,8 +579,13 @@ TEST_CASE("shadows: a spot and a point light over a sphere agree with the refere
   pbr::PointLight spot = point;
   spot.position = {1.8f, 3.2f, -1.0f};
   spot.spot = pbr::SpotCone{glm::normalize(glm::vec3(-0.6f, -1.0f, 0.6f)), 0.3f, 0.7f};
-  for (const pbr::PointLight& light : {point, spot}) {
+  // A glTF light without a range reaches kilometres: its views' near plane must still lie short of the sphere, 1.6 m
+  // from it.
+  pbr::PointLight far = point;
+  far.radius = 2000.0f;
+  for (const pbr::PointLight& light : {point, spot, far}) {
     CAPTURE(light.spot.has_value());
+    CAPTURE(light.radius);
     pbr::Scene scene = base;
     scene.lights = {light};
     pbr::FrameOptions options, plain;
@@ -602,6 +607,8 @@ TEST_CASE("shadows: a spot and a point light over a sphere agree with the refere
     CHECK(a.compared > 3000);
     CHECK(a.shadowed > 100);
     CHECK(a.misclassifiedShare() <= 0.01);
+    // A near plane at 1e-3 of the radius, 2 m, clipped the sphere's side facing the light: 0.65 % of them lit.
+    if (light.radius > 1000.0f) CHECK(a.misclassifiedShare() <= 0.001);
   }
 }
 

@@ -69,7 +69,7 @@ uint32_t packShadowSquare(glm::ivec2 origin, int size) {
 
 ShaderDefines shadowViewDefines() {
   return {{"SHADOW_BORDER_TEXELS", std::to_string(kShadowBorderTexels) + ".0"},
-          {"SHADOW_NEAR_SCALE", std::to_string(kShadowNearScale)}};
+          {"SHADOW_NEAR_SCALE", std::to_string(kShadowNearScale)}};  // "0.000001": six decimals hold it
 }
 
 }  // namespace pbr

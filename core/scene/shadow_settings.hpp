@@ -74,9 +74,13 @@ uint32_t lightShadowEntry(uint32_t firstView, int size, LightShadowKind kind);
 uint32_t packShadowSquare(glm::ivec2 origin, int size);
 
 // A perspective view's border around its field of view, in texels: filter taps near an edge read rendered depth,
-// not the neighbouring square or a clamp. Its near plane: this share of the light's radius (at least 1e-4).
+// not the neighbouring square or a clamp. Its near plane: this share of the light's radius (at least 1e-4). Casters
+// nearer the light are clipped away, so it is small: a glTF light without a range gets its radius from its
+// intensity, a kilometre and more for the README's Blender export, where a share of 1e-3 put the near plane 1-2 m
+// from its point lights, inside the objects beside them. The reversed float depth n / w (far plane at infinity) keeps
+// a relative precision that does not depend on n.
 constexpr int kShadowBorderTexels = 3;
-constexpr float kShadowNearScale = 1e-3f;
+constexpr float kShadowNearScale = 1e-6f;
 
 // Where the lighting pass reads them (part of lightingBindingDefines): clear of the lighting module's, the frame
 // block's and the IBL maps' points.
