@@ -31,6 +31,16 @@ GLsizeiptr alignedStride(size_t bytes) {
 
 bool mirrors(const glm::mat4& transform) { return glm::determinant(glm::mat3(transform)) < 0.0f; }
 
+// Whether every point of a caster within `box` lies outside the solid a closed mesh bounds as a shadow view of
+// `light`'s sees it: always for a cascade, whose depth range spans every caster; for a point or spot light's view,
+// when the box keeps clear of the light by 8 near planes, since the frustum's tip before the near plane is then
+// empty: it lies within sqrt(1 + 2 t^2) near planes of the eye, t the tangent of the half field of view with the
+// border, at most 2.8 (a 60-degree spot cone in a 16-texel square, shadows/shadow_plan.cpp), so within 4.1.
+bool eyeOutside(const ShadowCasterView& light, const WorldBounds& box) {
+  return light.reach.w == 0.0f ||
+         !overlapsSphere(box, glm::vec3(light.reach), 8.0f * shadowNearPlane(light.reach.w));
+}
+
 // An affine UV map as the shader's std140 mat2x3: its two rows, each padded to a vec4.
 glm::mat2x4 std140Rows(const glm::mat3x2& uvTransform) {
   const glm::mat2x3 rows = glm::transpose(uvTransform);
@@ -208,8 +218,12 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
       d.sphereCentre = glm::vec3(o.transform[3]);
       d.sphereRadius = 0.5f * std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
       if (sphereLods_.empty()) {
-        for (const int segments : kSphereLodSegments) {
-          sphereLods_.emplace_back(makeSphereMesh(segments, segments / 2), "shadow sphere " + std::to_string(segments));
+        for (size_t k = 0; k < kSphereLodSegments.size(); ++k) {
+          const int segments = kSphereLodSegments[k];
+          const MeshData lod = makeSphereMesh(segments, segments / 2);
+          const MeshClosure closure = meshClosure(lod);
+          sphereLodClosure_ = k == 0 || closure == sphereLodClosure_ ? closure : MeshClosure::Open;
+          sphereLods_.emplace_back(lod, "shadow sphere " + std::to_string(segments));
         }
       }
     }
@@ -266,6 +280,17 @@ void GBufferPass::findCasterPlanes(const Scene& scene) {
     draws_[found[k].draw].planeSlot = int(k);
     casterPlanes_.push_back(found[k].plane);
   }
+}
+
+void GBufferPass::findClosures(const Scene& scene) {
+  std::vector<std::optional<MeshClosure>> perMesh(scene.meshes.size());
+  for (Draw& d : draws_) {
+    if (!d.castsShadow || d.castsCutOut) continue;
+    std::optional<MeshClosure>& closure = perMesh.at(static_cast<size_t>(d.mesh));
+    if (!closure) closure = meshClosure(scene.meshes[static_cast<size_t>(d.mesh)]);
+    d.closure = d.sphereRadius > 0.0f && *closure != sphereLodClosure_ ? MeshClosure::Open : *closure;
+  }
+  closuresFound_ = true;
 }
 
 void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changedMeshes) {
@@ -434,14 +459,15 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-ShadowCasterDraws GBufferPass::renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
-                                           bool viewportFromVertex) {
+ShadowCasterDraws GBufferPass::renderDepth(const Scene& scene, GLuint framebuffer,
+                                           const std::vector<ShadowCasterView>& views, bool viewportFromVertex) {
+  if (!closuresFound_) findClosures(scene);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
   // Each draw's depth program for this way of drawing, looked up once.
   std::vector<const Program*>& depthPrograms = depthPrograms_[viewportFromVertex ? 1 : 0];
   if (depthPrograms.empty()) {
@@ -523,6 +549,12 @@ ShadowCasterDraws GBufferPass::renderDepth(GLuint framebuffer, const std::vector
       }
       glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), draw.blockOffset,
                         sizeof(ObjectBlock));
+      if (draw.closure != MeshClosure::Open && eyeOutside(views[first], draw.bounds)) {
+        glEnable(GL_CULL_FACE);
+        glFrontFace((draw.closure == MeshClosure::Inward) != draw.mirrored ? GL_CW : GL_CCW);
+      } else {
+        glDisable(GL_CULL_FACE);
+      }
       // Runs of consecutive views drawing the same tessellation: one instanced draw each, or without the viewport
       // from the vertex shader one draw per view.
       for (size_t i = 0; i < count;) {
@@ -544,6 +576,8 @@ ShadowCasterDraws GBufferPass::renderDepth(GLuint framebuffer, const std::vector
     }
   }
   glBindSampler(gbuffer_binding::kBaseColorMapUnit.index, 0);
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return drawn;

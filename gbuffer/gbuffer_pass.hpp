@@ -6,6 +6,7 @@
 #include "core/gl/blended_surfaces.hpp"
 #include "core/scene/bounds.hpp"
 #include "core/scene/caster_plane.hpp"
+#include "core/scene/closed_mesh.hpp"
 #include "core/scene/frame_block.hpp"
 #include "core/gl/gpu_mesh.hpp"
 #include "core/gl/gpu_texture.hpp"
@@ -31,14 +32,16 @@ class GBufferPass {
   // (whose spheres the shadow views draw coarser) do not move.
   void updatePose(const Scene& scene, const std::vector<int>& changedMeshes);
 
-  // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z, both faces: a plane or
-  // an open mesh casts from either side), into each view's square, objects outside the view's frustum left out.
+  // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z), into each view's square,
+  // objects outside the view's frustum left out. An open mesh (a plane, a shell with holes) draws both faces; a
+  // closed one (meshClosure) only those turned toward the light, unless the light may lie inside its box or a view's
+  // near plane may cut it; `scene` is the one the pass was made from, whose meshes the first call finds closed or not.
   // A light's consecutive views are drawn together, up to kViewsPerDraw, their matrices in one block; with
   // `viewportFromVertex` (GL_ARB_shader_viewport_layer_array, ShadowDraws::PerLight) a caster takes one instanced
   // draw per run of them that sees it with one tessellation, each instance choosing its view's viewport in the
   // vertex shader; without it, a draw per view. The depth programs are compiled on first use. Returns the draws
   // made and the texels each view's casters may have written.
-  ShadowCasterDraws renderDepth(GLuint framebuffer, const std::vector<ShadowCasterView>& views,
+  ShadowCasterDraws renderDepth(const Scene& scene, GLuint framebuffer, const std::vector<ShadowCasterView>& views,
                                 bool viewportFromVertex);
   // Views one shadow draw may cover: GL's least number of viewports (shaders/gbuffer/shadow_depth.vert).
   static constexpr size_t kViewsPerDraw = 16;
@@ -101,9 +104,16 @@ class GBufferPass {
     float sphereRadius;
     size_t triangles;
     int planeSlot = -1;  // its casterPlanes_ index, -1 for none
+      // Its mesh's closure (and its coarser spheres'), Open for a cut-out, whose holes show the faces behind, and
+    // until the first shadow views are drawn.
+    MeshClosure closure = MeshClosure::Open;
   };
   // The planar casters' planes and slots, from the objects' poses (after draws_ and meshPlanar_ are made).
   void findCasterPlanes(const Scene& scene);
+  // The casters' closures, found when shadows are first drawn: a frame without shadows does not pay for them (about
+  // 0.3 s per million triangles). A mesh posed again since keeps its first pose's: a pose moves coincident positions
+  // together.
+  void findClosures(const Scene& scene);
   // The tessellation a caster is drawn with in view `v`, whose w row (the distance along a perspective view's axis,
   // 1 in an orthographic one) is `wRow`: its own mesh, or for a sphere the coarsest of sphereLods_ that stays within
   // half a texel of the sphere (the rasterizer's own rounding of a silhouette; the facets lie inside the sphere, so
@@ -121,6 +131,8 @@ class GBufferPass {
   std::vector<bool> meshPlanar_;  // per mesh: all its vertices in one plane (planarity survives any pose's affine map)
   std::vector<CasterPlane> casterPlanes_;
   std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
+  MeshClosure sphereLodClosure_ = MeshClosure::Open;  // theirs, when all have the same
+  bool closuresFound_ = false;
   std::vector<GpuTexture> textures_;
   std::vector<Draw> draws_;  // the opaque and masked first, then the blended
   size_t opaqueDraws_ = 0;

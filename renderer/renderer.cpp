@@ -103,7 +103,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   scene_.shadows.render(
       inputs,
       [this, perLight = key.drawsPerLight](GLuint framebuffer, const std::vector<ShadowCasterView>& views) {
-        return scene_.geometry.renderDepth(framebuffer, views, perLight);
+        return scene_.geometry.renderDepth(sceneData_, framebuffer, views, perLight);
       },
       key, settings.cache);
 }

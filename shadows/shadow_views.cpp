@@ -97,7 +97,7 @@ ShadowViewPlan perspectiveView(const glm::vec3& apex, const glm::vec3& axis, flo
   glm::vec3 right, up;
   frameAround(axis, right, up);
   const float t = tanHalf * float(size) / float(std::max(1, size - 2 * border));
-  const float n = std::max(radius * kShadowNearScale, 1e-4f);
+  const float n = shadowNearPlane(radius);
   ShadowViewPlan v;
   // Reversed Z with the far plane at infinity: depth = n / w, w the distance along the axis.
   v.viewProjection = fromRows(glm::vec4(right / t, -glm::dot(apex, right) / t),

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -81,6 +82,7 @@ uint32_t packShadowSquare(glm::ivec2 origin, int size);
 // a relative precision that does not depend on n.
 constexpr int kShadowBorderTexels = 3;
 constexpr float kShadowNearScale = 1e-6f;
+inline float shadowNearPlane(float radius) { return std::max(radius * kShadowNearScale, 1e-4f); }
 
 // Where the lighting pass reads them (part of lightingBindingDefines): clear of the lighting module's, the frame
 // block's and the IBL maps' points.
