@@ -97,8 +97,10 @@ void printLightStats(const LightStats& s, const Renderer& renderer, const FrameO
                   "--shadow-cache off draws them every frame)\n");
     } else {
       std::printf("shadows: CPU in the last frame: %.2f ms reading the occupied clusters back (waiting for the GPU), "
-                  "%.2f ms planning, %.2f ms recording %u draws (%s)\n",
-                  h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view");
+                  "%.2f ms planning, %.2f ms recording %u draws (%s; %u of them one-sided, closed casters "
+                  "seen from outside)\n",
+                  h.readBackMs, h.planMs, h.recordMs, h.draws, h.drawsPerLight ? "per-light" : "per-view",
+                  h.oneSidedDraws);
     }
     if (h.planesLeftOut) {
       std::printf("shadows: %u planar casters left out of views (no visible surface beyond their plane from the "

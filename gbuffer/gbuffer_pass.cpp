@@ -549,7 +549,8 @@ ShadowCasterDraws GBufferPass::renderDepth(const Scene& scene, GLuint framebuffe
       }
       glBindBufferRange(GL_UNIFORM_BUFFER, gbuffer_binding::kObjectUbo.index, objectBlocks_.id(), draw.blockOffset,
                         sizeof(ObjectBlock));
-      if (draw.closure != MeshClosure::Open && eyeOutside(views[first], draw.bounds)) {
+      const bool oneSided = draw.closure != MeshClosure::Open && eyeOutside(views[first], draw.bounds);
+      if (oneSided) {
         glEnable(GL_CULL_FACE);
         glFrontFace((draw.closure == MeshClosure::Inward) != draw.mirrored ? GL_CW : GL_CCW);
       } else {
@@ -570,6 +571,7 @@ ShadowCasterDraws GBufferPass::renderDepth(const Scene& scene, GLuint framebuffe
           glProgramUniform1ui(bound->id(), 0, GLuint(i));
           meshes[i]->drawInstanced(int(end - i));
           ++drawn.draws;
+          drawn.oneSided += oneSided ? 1 : 0;
         }
         i = end;
       }

@@ -49,7 +49,7 @@ bool ShadowPass::reuse(const ShadowFrameKey& key) {
   stats_.reused = true;
   stats_.viewsKept = stats_.viewsRendered;
   stats_.readBackMs = stats_.planMs = stats_.recordMs = 0.0;
-  stats_.draws = 0;
+  stats_.draws = stats_.oneSidedDraws = 0;
   return true;
 }
 
@@ -133,6 +133,7 @@ void ShadowPass::render(const ShadowInputs& inputs, const DrawShadowCasters& dra
   if (!toDraw.empty()) {
     const ShadowCasterDraws drawn = drawCasters(framebuffer_->id(), toDraw);
     stats_.draws = uint32_t(drawn.draws);
+    stats_.oneSidedDraws = uint32_t(drawn.oneSided);
     for (const glm::ivec4& r : drawn.rects) {
       if (!emptyRect(r)) dirty_.push_back(r);
     }

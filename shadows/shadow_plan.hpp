@@ -60,6 +60,7 @@ struct ShadowStats {
   // and building the receivers, planning, and recording the clears and draws; and the draw calls recorded.
   double readBackMs = 0.0, planMs = 0.0, recordMs = 0.0;
   uint32_t draws = 0;
+  uint32_t oneSidedDraws = 0;  // of them, closed casters drawn from their faces toward the light alone
   bool drawsPerLight = false;  // ShadowDraws::PerLight ran
   bool reused = false;         // the maps are an earlier frame's: nothing they depend on changed (ShadowFrameKey)
 };

@@ -35,9 +35,10 @@ pbr::Scene boxOnly(const pbr::MeshData& mesh, const glm::mat4& transform) {
   return s;
 }
 
-// The depths `scene`'s casters leave in one kSide-square view, cleared to the far plane (0, reversed Z).
+// The depths `scene`'s casters leave in one kSide-square view, cleared to the far plane (0, reversed Z); the
+// number of one-sided draws made, when asked.
 std::vector<float> casterDepths(const pbr::ShaderLibrary& shaders, const pbr::Scene& scene,
-                                const pbr::ShadowCasterView& view) {
+                                const pbr::ShadowCasterView& view, size_t* oneSided = nullptr) {
   pbr::ProgramCache programs(shaders);
   pbr::GBufferPass pass(programs, scene);
   const pbr::Texture depth("test.casterDepth", GL_DEPTH_COMPONENT32F, kSide, kSide);
@@ -46,7 +47,9 @@ std::vector<float> casterDepths(const pbr::ShaderLibrary& shaders, const pbr::Sc
   glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
   const float far = 0.0f;
   glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
-  pass.renderDepth(scene, framebuffer.id(), {view}, false);
+  const pbr::ShadowCasterDraws drawn = pass.renderDepth(scene, framebuffer.id(), {view}, false);
+  CHECK(drawn.draws == 1);
+  if (oneSided) *oneSided = drawn.oneSided;
   std::vector<float> texels(size_t(kSide) * kSide);
   glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
                     texels.data());
@@ -98,7 +101,9 @@ TEST_CASE("shadow casters: a closed caster drawn with its faces toward the light
       CAPTURE(name);
       CAPTURE(mirrored);
       const glm::mat4 pose = mirrored ? mirror : glm::mat4(1.0f);
-      const std::vector<float> expected = casterDepths(shaders, boxOnly(open, pose), view);
+      size_t openOneSided = 1, boxOneSided = 0;
+      const std::vector<float> expected = casterDepths(shaders, boxOnly(open, pose), view, &openOneSided);
+      CHECK(openOneSided == 0);
       // The box covers part of the view; from inside, all of it.
       CHECK(covered(expected) > size_t(kSide));
       if (name == "lamp inside") {
@@ -106,7 +111,8 @@ TEST_CASE("shadow casters: a closed caster drawn with its faces toward the light
       } else {
         CHECK(covered(expected) < expected.size());
       }
-      CHECK(casterDepths(shaders, boxOnly(box, pose), view) == expected);
+      CHECK(casterDepths(shaders, boxOnly(box, pose), view, &boxOneSided) == expected);
+      CHECK(boxOneSided == (name == "lamp inside" ? 0u : 1u));
       CHECK(casterDepths(shaders, boxOnly(inward, pose), view) == expected);
     }
   }

@@ -192,6 +192,7 @@ void Overlay::lightStatistics(Viewer& viewer) {
     row("  kept from the frame before", "%.0f", double(s.shadows.viewsKept));
     row("  views skipped", "%.0f (no receiver in view)", double(s.shadows.viewsSkipped));
     row("  planes left out", "%.0f (nothing visible beyond)", double(s.shadows.planesLeftOut));
+    row("  one-sided draws", "%.0f (closed casters)", double(s.shadows.oneSidedDraws));
     const int atlas = viewer.frameOptions().shadows.atlasSize;
     row("  atlas used", "%.1f %%", 100.0 * double(s.shadows.texelsUsed) / (double(atlas) * atlas));
     if (s.shadows.cascadeTexelMax > 0.0f) {

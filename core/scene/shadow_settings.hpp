@@ -52,10 +52,11 @@ struct ShadowCasterView {
   uint32_t skipPlanes = 0;
 };
 
-// What drawing the casters into views did: the draw calls made, and per view the atlas texels its casters may have
+// What drawing the casters into views did: the draw calls made (and how many were one-sided), and per view the atlas texels its casters may have
 // written (coveredRect of each caster drawn, joined; width 0 where none was drawn).
 struct ShadowCasterDraws {
   size_t draws = 0;
+  size_t oneSided = 0;  // of them, closed casters drawn from their faces toward the light alone
   std::vector<glm::ivec4> rects;
 };
 
