@@ -104,7 +104,7 @@ class GBufferPass {
     float sphereRadius;
     size_t triangles;
     int planeSlot = -1;  // its casterPlanes_ index, -1 for none
-      // Its mesh's closure (and its coarser spheres'), Open for a cut-out, whose holes show the faces behind, and
+    // Its mesh's closure (and its coarser spheres'), Open for a cut-out, whose holes show the faces behind, and
     // until the first shadow views are drawn.
     MeshClosure closure = MeshClosure::Open;
   };

@@ -1,10 +1,11 @@
 #include "core/scene/closed_mesh.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 

@@ -52,8 +52,8 @@ struct ShadowCasterView {
   uint32_t skipPlanes = 0;
 };
 
-// What drawing the casters into views did: the draw calls made (and how many were one-sided), and per view the atlas texels its casters may have
-// written (coveredRect of each caster drawn, joined; width 0 where none was drawn).
+// What drawing the casters into views did: the draw calls made (and how many were one-sided), and per view the
+// atlas texels its casters may have written (coveredRect of each caster drawn, joined; width 0 where none was drawn).
 struct ShadowCasterDraws {
   size_t draws = 0;
   size_t oneSided = 0;  // of them, closed casters drawn from their faces toward the light alone
@@ -83,6 +83,7 @@ uint32_t packShadowSquare(glm::ivec2 origin, int size);
 // a relative precision that does not depend on n.
 constexpr int kShadowBorderTexels = 3;
 constexpr float kShadowNearScale = 1e-6f;
+// The near plane of the views of a point or spot light of that radius.
 inline float shadowNearPlane(float radius) { return std::max(radius * kShadowNearScale, 1e-4f); }
 
 // Where the lighting pass reads them (part of lightingBindingDefines): clear of the lighting module's, the frame
