@@ -1,9 +1,11 @@
 // The casters' depths in a shadow view (GBufferPass::renderDepth): a closed caster (core/scene/closed_mesh.hpp)
 // drawn with only its faces turned toward the light leaves the same depths as the same box drawn from both faces,
 // whether it is mirrored by its pose or wound to look inward, from a sun's orthographic view and a lamp's
-// perspective one; and a lamp inside a closed box still has the box's walls in its view.
+// perspective one (the sun's against the box top's depth computed here); and a lamp inside a closed box still has
+// the box's walls in its view.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -110,6 +112,13 @@ TEST_CASE("shadow casters: a closed caster drawn with its faces toward the light
         CHECK(covered(expected) == expected.size());
       } else {
         CHECK(covered(expected) < expected.size());
+      }
+      // Straight down, the sun meets the box's top (y = 1, depth 0.25 y + 0.25) before its bottom (0.25): every
+      // texel the box covers holds the top's depth.
+      if (name == "sun") {
+        size_t other = 0;
+        for (const float d : expected) other += d == 0.0f || std::abs(d - 0.5f) < 1e-6f ? 0 : 1;
+        CHECK(other == 0);
       }
       CHECK(casterDepths(shaders, boxOnly(box, pose), view, &boxOneSided) == expected);
       CHECK(boxOneSided == (name == "lamp inside" ? 0u : 1u));
