@@ -253,11 +253,17 @@ GBufferPass::GBufferPass(ProgramCache& programs, const Scene& scene)
   unlit_ = hasUnlitSurface(scene);
   opaqueDraws_ = size_t(std::count_if(draws_.begin(), draws_.end(), [](const Draw& d) { return !d.blended; }));
   transmissive_ = std::any_of(draws_.begin(), draws_.end(), [](const Draw& d) { return d.transmissive; });
-  for (const MeshData& mesh : scene.meshes) meshPlanar_.push_back(casterPlane(mesh, glm::mat4(1.0f)).has_value());
-  findCasterPlanes(scene);
+}
+
+const std::vector<CasterPlane>& GBufferPass::casterPlanes(const Scene& scene) {
+  if (!planesFound_) findCasterPlanes(scene);
+  return casterPlanes_;
 }
 
 void GBufferPass::findCasterPlanes(const Scene& scene) {
+  if (meshPlanar_.empty()) {
+    for (const MeshData& mesh : scene.meshes) meshPlanar_.push_back(casterPlane(mesh, glm::mat4(1.0f)).has_value());
+  }
   struct Found {
     size_t draw;
     CasterPlane plane;
@@ -280,6 +286,7 @@ void GBufferPass::findCasterPlanes(const Scene& scene) {
     draws_[found[k].draw].planeSlot = int(k);
     casterPlanes_.push_back(found[k].plane);
   }
+  planesFound_ = true;
 }
 
 void GBufferPass::findClosures(const Scene& scene) {
@@ -307,10 +314,12 @@ void GBufferPass::updatePose(const Scene& scene, const std::vector<int>& changed
     d.bounds = meshBounds(scene.meshes.at(static_cast<size_t>(o.mesh)), o.transform);
     bounds_.add(d.bounds);
   }
-  for (const int m : changedMeshes) {
-    meshPlanar_.at(size_t(m)) = casterPlane(scene.meshes.at(size_t(m)), glm::mat4(1.0f)).has_value();
+  if (!meshPlanar_.empty()) {
+    for (const int m : changedMeshes) {
+      meshPlanar_.at(size_t(m)) = casterPlane(scene.meshes.at(size_t(m)), glm::mat4(1.0f)).has_value();
+    }
   }
-  findCasterPlanes(scene);
+  planesFound_ = false;
 }
 
 void GBufferPass::render(const GBuffer& target, const UniformBuffer<FrameBlock>& frame) const {
@@ -462,6 +471,7 @@ void GBufferPass::drawBlended(GLuint framebuffer, const Camera& camera, const Bl
 ShadowCasterDraws GBufferPass::renderDepth(const Scene& scene, GLuint framebuffer,
                                            const std::vector<ShadowCasterView>& views, bool viewportFromVertex) {
   if (!closuresFound_) findClosures(scene);
+  if (!planesFound_) findCasterPlanes(scene);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);

@@ -65,8 +65,9 @@ class GBufferPass {
   // Every object's world box together.
   const WorldBounds& bounds() const { return bounds_; }
   // The planes of the planar casters (casterPlane), the kMaxCasterPlanes largest by their boxes' area: a view whose
-  // ShadowCasterView::skipPlanes has bit i set leaves plane i's caster out.
-  const std::vector<CasterPlane>& casterPlanes() const { return casterPlanes_; }
+  // ShadowCasterView::skipPlanes has bit i set leaves plane i's caster out. Found on the first call after the scene
+  // is made or posed (a pass over every mesh's vertices), so that a frame without shadows does not pay for them.
+  const std::vector<CasterPlane>& casterPlanes(const Scene& scene);
 
   // The defines of the permutation a material draws with: BASE_COLOR_MAP, METALLIC_ROUGHNESS_MAP, NORMAL_MAP,
   // OCCLUSION_MAP, EMISSIVE_MAP, ALPHA_MASK and UNLIT, each 0 or 1.
@@ -108,7 +109,7 @@ class GBufferPass {
     // until the first shadow views are drawn.
     MeshClosure closure = MeshClosure::Open;
   };
-  // The planar casters' planes and slots, from the objects' poses (after draws_ and meshPlanar_ are made).
+  // The planar casters' planes and slots, from the objects' poses, and meshPlanar_ where it is not known yet.
   void findCasterPlanes(const Scene& scene);
   // The casters' closures, found when shadows are first drawn: a frame without shadows does not pay for them (about
   // 0.3 s per million triangles). A mesh posed again since keeps its first pose's: a pose moves coincident positions
@@ -128,8 +129,10 @@ class GBufferPass {
   std::array<std::vector<const Program*>, 2> depthPrograms_;
   std::unique_ptr<Buffer> shadowViews_;  // renderDepth's blocks of view-projections
   std::vector<GpuMesh> meshes_;
-  std::vector<bool> meshPlanar_;  // per mesh: all its vertices in one plane (planarity survives any pose's affine map)
+  // Per mesh: all its vertices in one plane (planarity survives any pose's affine map); empty until casterPlanes.
+  std::vector<bool> meshPlanar_;
   std::vector<CasterPlane> casterPlanes_;
+  bool planesFound_ = false;  // casterPlanes_ and the draws' planeSlot are the current poses'
   std::vector<GpuMesh> sphereLods_;  // spheres of kSphereLodSegments segments, made when the scene has a sphere
   MeshClosure sphereLodClosure_ = MeshClosure::Open;  // theirs, when all have the same
   bool closuresFound_ = false;

@@ -80,7 +80,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
   // Where the visible surfaces are: the cluster pass measured it, or, shading without it, the occupancy pass alone.
   if (!clustered) {
     const BlendedSurfaces blended = blendedSurfaces(t.blendTarget.id());
-    t.clusters.setCasterPlanes(scene_.geometry.casterPlanes(), frameData_.inverseView);
+    t.clusters.setCasterPlanes(scene_.geometry.casterPlanes(sceneData_), frameData_.inverseView);
     t.clusters.measureOccupancy(frameData_, frame_, t.gbuffer.depth,
                                 scene_.geometry.hasBlended() ? &blended : nullptr);
   }
@@ -98,7 +98,7 @@ void Renderer::renderShadows(const ShadowSettings& settings, bool clustered) {
                             receivers,
                             settings.mode,
                             settings.atlasSize,
-                            scene_.geometry.casterPlanes(),
+                            scene_.geometry.casterPlanes(sceneData_),
                             planeSides};
   scene_.shadows.render(
       inputs,
@@ -186,7 +186,7 @@ PassList Renderer::passList(const FrameOptions& options, const FrameCapture& cap
                         // lie on: one that keeps them skips the test's cost.
                         const bool drawsMaps = drawsShadows && !(settings.cache && scene_.shadows.holds(
                                                                      shadowFrameKey(settings, clustered)));
-                        t.clusters.setCasterPlanes(drawsMaps ? scene_.geometry.casterPlanes()
+                        t.clusters.setCasterPlanes(drawsMaps ? scene_.geometry.casterPlanes(sceneData_)
                                                              : std::vector<CasterPlane>{},
                                                    frameData_.inverseView);
                         markCulling(CullingChoice::ClusterBegin);

@@ -286,6 +286,38 @@ TEST_CASE("shadows: a plane casts onto what lies beyond it, and no view draws a 
   CHECK(r.wrong == 0);
 }
 
+TEST_CASE("shadows: a plane posed elsewhere is planned from where it now lies") {
+  PBR_REQUIRE_GL();
+  // A roof starts under the floor, where it hides nothing in view from the sun and is left out; posed 1.5 m over
+  // the floor and the box it must be drawn, as a renderer that never saw the first pose draws it.
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{96, 96};
+  pbr::Scene scene = boxScene({-0.45f, -1.0f, 0.3f}, 6.0f);
+  const auto roofAt = [](float y) {
+    return glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, y, 0.0f}), glm::vec3(2.0f));
+  };
+  scene.addShape(pbr::Shape::Plane, roofAt(-1.0f), grey(0.8f));
+  pbr::Renderer renderer(shaders, scene, size.x, size.y);
+  pbr::Profiler profiler(pbr::TimingMode::Serializing);
+  pbr::FrameOptions options;
+  options.shadows.cache = false;
+  const auto frame = [&] {
+    pbr::ImageRgbaF hdr;
+    renderer.renderFrame(options, profiler, {nullptr, &hdr});
+    return hdr.pixels;
+  };
+  const auto under = frame();
+  const pbr::ShadowStats s = renderer.lightStats().shadows;
+  REQUIRE(s.viewsRendered > 0);
+  CHECK(s.planesLeftOut == 2 * s.viewsRendered);  // the floor and the roof
+  scene.objects.back().transform = roofAt(1.5f);
+  renderer.scenePosed({});
+  const auto over = frame();
+  CHECK(renderer.lightStats().shadows.planesLeftOut == renderer.lightStats().shadows.viewsRendered);  // the floor
+  CHECK(over != under);
+  CHECK(over == pbr::renderOffscreen(shaders, scene, size, options, 1).hdr.pixels);
+}
+
 TEST_CASE("shadows: a floor keeps a lamp under it from what stands on it") {
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
