@@ -36,8 +36,11 @@ void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up) {
 
 CascadeSplits cascadeSplits(const Camera& camera, float nearDepth, float farDepth, int count) {
   CascadeSplits s;
-  const float n = std::max(camera.nearPlane, nearDepth), f = std::min(camera.farPlane, farDepth);
-  if (!(f > n)) return s;
+  const float n = std::max(camera.nearPlane, nearDepth);
+  if (!(std::min(camera.farPlane, farDepth) >= n)) return s;
+  // Receivers at one depth (a plane seen head-on) still take shadows, from casters out of view: the cascades then
+  // cover a thousandth of that depth.
+  const float f = std::max(std::min(camera.farPlane, farDepth), n + std::max(n * 1e-3f, 1e-4f));
   constexpr float kLambda = 0.75f;
   s.count = count;
   s.begin = n;

@@ -15,7 +15,8 @@ void frameAround(const glm::vec3& axis, glm::vec3& right, glm::vec3& up);
 bool frameAroundX(const glm::vec3& axis);  // whether frameAround's helper is x
 
 // The view depths (distance along the camera's axis) the cascades of a directional light cover: from where the
-// receivers begin in view, or the near plane, to where they end, or the far plane.
+// receivers begin in view, or the near plane, to where they end, or the far plane, and at least a thousandth of
+// the depth they begin at.
 struct CascadeSplits {
   int count = 0;  // 0 when the scene lies outside the camera's depth range
   float begin = 0.0f;

@@ -184,6 +184,22 @@ TEST_CASE("shadow plan: a sun gets texel-snapped cascades over the receivers' de
   }
 }
 
+TEST_CASE("shadow views: receivers at one depth get cascades, receivers out of the depth range none") {
+  // A floor seen head-on lies at one view depth; casters out of view still shadow it, so its cascades must exist,
+  // ascending and ending past it.
+  const pbr::Camera cam = camera();
+  const pbr::CascadeSplits flat = pbr::cascadeSplits(cam, 6.0f, 6.0f, pbr::kCascades);
+  REQUIRE(flat.count == pbr::kCascades);
+  CHECK(flat.begin == 6.0f);
+  float previous = flat.begin;
+  for (const float end : flat.ends) {
+    CHECK(end > previous);
+    previous = end;
+  }
+  CHECK(flat.ends.back() == doctest::Approx(6.006f).epsilon(1e-6));
+  CHECK(pbr::cascadeSplits(cam, cam.farPlane * 2.0f, cam.farPlane * 3.0f, pbr::kCascades).count == 0);
+}
+
 TEST_CASE("shadow views: each cascade's square holds its slice of the view, perspective or orthographic") {
   const glm::vec3 sun = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.2f));
   const float aspect = 16.0f / 9.0f;

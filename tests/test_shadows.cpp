@@ -210,6 +210,31 @@ TEST_CASE("shadows: a box's shadow under a sun is its analytic projection within
   }
 }
 
+TEST_CASE("shadows: a floor seen head-on takes the shadow of a box out of view, in both projections") {
+  PBR_REQUIRE_GL();
+  // Seen from straight above, every visible point lies at one view depth; the box stands left of the view and the
+  // sun throws its shadow into it.
+  const pbr::ShaderLibrary shaders;
+  const glm::ivec2 size{192, 192};
+  pbr::Scene perspective = boxScene({0.9f, -1.0f, 0.2f}, 6.0f, 3.2f);
+  pbr::Scene orthographic = perspective;
+  orthographic.camera.orthographic = true;
+  orthographic.camera.orthoHalfHeight = 2.5f;
+  pbr::FrameOptions shadowed, plain;
+  plain.shadows.mode = pbr::ShadowMode::None;
+  for (const pbr::Scene& scene : {perspective, orthographic}) {
+    CAPTURE(scene.camera.orthographic);
+    const pbr::RenderedFrames lit = pbr::renderOffscreen(shaders, scene, size, shadowed, 1);
+    const pbr::RenderedFrames none = pbr::renderOffscreen(shaders, scene, size, plain, 1);
+    CHECK(lit.stats.shadows.shadowedLights == 1);
+    const OutlineResult r = sunOutline(scene, size, lit, none);
+    MESSAGE(r.lit << " lit and " << r.shadowed << " shadowed pixels compared, " << r.wrong << " misclassified");
+    CHECK(r.shadowed > 500);
+    CHECK(r.lit > 5000);
+    CHECK(r.wrong == 0);
+  }
+}
+
 TEST_CASE("shadows: a low sun leaves no acne on the lit floor, and the box's shadow starts at its base") {
   PBR_REQUIRE_GL();
   const pbr::ShaderLibrary shaders;
