@@ -35,7 +35,8 @@ class GBufferPass {
   // Shadow casters: every object's depth into `framebuffer`'s depth attachment (reversed Z), into each view's square,
   // objects outside the view's frustum left out. An open mesh (a plane, a shell with holes) draws both faces; a
   // closed one (meshClosure) only those turned toward the light, unless the light may lie inside its box or a view's
-  // near plane may cut it; `scene` is the one the pass was made from, whose meshes the first call finds closed or not.
+  // near plane may cut it; `scene` is the one the pass was made from, whose meshes the first call finds closed or not
+  // (and planar, where casterPlanes has not found them since the last pose: the views' skipPlanes name its slots).
   // A light's consecutive views are drawn together, up to kViewsPerDraw, their matrices in one block; with
   // `viewportFromVertex` (GL_ARB_shader_viewport_layer_array, ShadowDraws::PerLight) a caster takes one instanced
   // draw per run of them that sees it with one tessellation, each instance choosing its view's viewport in the
